@@ -1,0 +1,55 @@
+// scene.h - glTF scene loading shared by ssao-host and ssao-reference.
+// The scene is flattened: every triangle of the default scene in world space,
+// so the rasteriser (host) and the ray tracer (reference) see the same geometry.
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace scene {
+
+// One flattened triangle list in world space (node transforms applied).
+struct Mesh {
+    std::vector<glm::vec3> positions;   // world space
+    std::vector<glm::vec3> normals;     // world space, unit; computed where the primitive has none
+    std::vector<uint32_t> indices;      // 3 per triangle
+    size_t triangle_count() const { return indices.size() / 3; }
+};
+
+// A camera found in the glTF (the first one reachable from the default scene).
+struct GltfCamera {
+    glm::mat4 world_from_camera{1.0f};  // node transform; camera looks down its -Z
+    bool orthographic = false;
+    float yfov = 0.0f;                  // radians (perspective)
+    float xmag = 0.0f, ymag = 0.0f;     // half extents (orthographic)
+    float znear = 0.0f;
+    float zfar = 0.0f;                  // 0 = infinite (perspective)
+    float aspect = 0.0f;                // 0 = not given
+};
+
+// AO settings a scene may carry in the extras of its scene or of its root
+// glTF object: {"ssao": {"radius": 0.3, "samples": 32, "blur": "depth-aware", ...}}.
+struct AoHints {
+    std::optional<float> radius;        // scene units
+    std::optional<int> samples;
+    std::optional<std::string> blur;    // names as the host's --blur flag takes
+    std::optional<float> bias;
+    std::optional<float> power;
+};
+
+struct Scene {
+    Mesh mesh;
+    glm::vec3 bounds_min{0.0f}, bounds_max{0.0f};
+    std::optional<GltfCamera> camera;
+    AoHints hints;
+};
+
+// Loads .gltf or .glb. On failure returns false and sets `error` to one
+// sentence naming the problem (missing file, malformed JSON, truncated glb,
+// accessor past its buffer, non-triangle primitive, nothing to draw, ...).
+bool load(const std::string& path, Scene& out, std::string& error);
+
+}  // namespace scene

@@ -1,0 +1,386 @@
+/*
+ * ssao.h - the whole public C ABI of the SSAO plugin (libssao.so).
+ *
+ * Compiles as C99 and as C++. A host that dlopens the library needs exactly one
+ * dlsym: "ssao_get_api" negotiates the interface version and fills a table of
+ * function pointers. Nothing else is exported.
+ *
+ *   void* lib = dlopen("libssao.so", RTLD_NOW | RTLD_LOCAL);
+ *   PFN_ssao_get_api get_api = (PFN_ssao_get_api)dlsym(lib, "ssao_get_api");
+ *   ssao_api api = { sizeof(ssao_api) };
+ *   if (get_api(SSAO_API_VERSION, &api) != SSAO_OK) { ... }
+ *   ssao_context_desc desc = { sizeof(desc) };
+ *   desc.get_proc_address = my_get_proc;   // eglGetProcAddress, glfwGetProcAddress, ...
+ *   ssao_context* ctx = NULL;
+ *   api.create_context(&desc, &ctx);        // GL context current on this thread
+ *   ...each frame: api.execute(ctx, &inputs, &output);
+ *   api.destroy_context(ctx);               // same GL context current
+ *
+ * Conventions
+ * - Every struct begins with `uint32_t size`, which the caller sets to
+ *   sizeof(the struct) as compiled against this header. Future versions only
+ *   append fields; the library accepts the sizes of every version it knows and
+ *   rejects any other with SSAO_ERROR_STRUCT_SIZE.
+ * - A zero field means "the default" (see each field); resolve_settings and
+ *   get_settings return the resolved values, never a zero that means default.
+ * - Matrices are column-major float[16], the layout glUniformMatrix4fv takes
+ *   with transpose = GL_FALSE (element [col*4 + row]).
+ * - Functions return an ssao_status. No function aborts, throws or prints;
+ *   when a context is given, ssao_api.last_error(ctx) holds a sentence on the
+ *   most recent failure of that context. A failing call changes nothing (no
+ *   settings applied, no GL state changed, no output written).
+ *
+ * Threading and lifetime
+ * - A context belongs to the GL context (or share group) that was current at
+ *   create_context. Every call that takes a context must be made on a thread
+ *   where that GL context is current. A context is not thread-safe; distinct
+ *   contexts may be used from distinct threads with their own GL contexts.
+ * - Textures passed to execute are only read (depth, normal) or rendered into
+ *   (output) during that call; the library keeps no reference to them.
+ * - The texture returned for plugin-owned output stays valid until the next
+ *   execute that changes the viewport size or output format, or destroy_context.
+ * - destroy_context deletes every GL object the library made; call it while
+ *   the GL context is still current. ssao_get_api, status_string,
+ *   resolve_settings and preset_settings need no GL context.
+ *
+ * GL state
+ * - execute saves and restores, in one guard, every piece of GL state it
+ *   changes: draw and read framebuffer bindings, current program, vertex array
+ *   binding, active texture unit and the 2D texture and sampler bindings of
+ *   every unit it uses (units 0..SSAO_TEXTURE_UNITS_USED-1), array, uniform and
+ *   pixel-unpack buffer bindings (and the indexed uniform binding it uses),
+ *   viewport, scissor box, enables (scissor, depth, stencil, blend per draw
+ *   buffer, cull face, rasterizer discard, polygon offset, colour logic op,
+ *   sample mask, dither, framebuffer sRGB, multisample, clip distances),
+ *   polygon mode, colour/depth/stencil write masks, clip control (where
+ *   supported), the depth-stencil texture mode of a D24S8/D32FS8 input
+ *   (GL 4.3+) and the unpack pixel-store parameters.
+ * - It assumes, and does not save: the texture parameters of the host's
+ *   textures other than the depth-stencil mode (it reads them with texelFetch
+ *   through its own sampler objects, so filters, wrap and compare modes do not
+ *   matter; base level 0 and no swizzle are assumed), and it never calls
+ *   glGetError (so the host's pending errors stay the host's).
+ * - Requirements: a GL 3.3 core context or newer. Clip control (4.5 or
+ *   ARB_clip_control), timer queries and GL_TEXTURE_TARGET queries (4.5) are
+ *   used when present.
+ */
+#ifndef SSAO_SSAO_H
+#define SSAO_SSAO_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#if defined(_WIN32)
+#  define SSAO_CALL __cdecl
+#else
+#  define SSAO_CALL
+#endif
+
+/* Interface version: major in the high 16 bits, minor in the low 16 bits.
+ * A host asking for major M gets any library of major M with minor >= its
+ * own minor; the table's `version` field says which one it got. */
+#define SSAO_MAKE_VERSION(major, minor) ((uint32_t)(((major) << 16) | (minor)))
+#define SSAO_API_VERSION SSAO_MAKE_VERSION(1, 0)
+#define SSAO_VERSION_MAJOR(v) ((uint32_t)(v) >> 16)
+#define SSAO_VERSION_MINOR(v) ((uint32_t)(v) & 0xffffu)
+
+/* Limits, also read by the shaders (see shaders/ssao_constants.h). */
+#define SSAO_MAX_SAMPLES 64
+#define SSAO_MAX_BLUR_RADIUS 16
+#define SSAO_MAX_DIMENSION 16384
+#define SSAO_TEXTURE_UNITS_USED 4
+
+/* ---------------------------------------------------------------- status */
+typedef enum ssao_status {
+    SSAO_OK = 0,
+    /* A required pointer argument was NULL. Remedy: pass a valid pointer. */
+    SSAO_ERROR_NULL_POINTER = 1,
+    /* A struct's `size` field matches no version of that struct this library
+     * knows. Remedy: set size = sizeof(struct) from the header you compile with. */
+    SSAO_ERROR_STRUCT_SIZE = 2,
+    /* ssao_get_api: the requested major version is not this library's, or its
+     * minor is newer than this library's. Remedy: use a matching library. */
+    SSAO_ERROR_VERSION_MISMATCH = 3,
+    /* An enum field holds a value outside its documented list. */
+    SSAO_ERROR_INVALID_ENUM = 4,
+    /* A number is non-finite (NaN, inf) or outside its documented range. */
+    SSAO_ERROR_INVALID_VALUE = 5,
+    /* A size is zero, negative, larger than SSAO_MAX_DIMENSION, or the
+     * viewport does not lie inside the input textures. */
+    SSAO_ERROR_INVALID_SIZE = 6,
+    /* A texture name is 0 where one is required, is not a texture, is not a
+     * GL_TEXTURE_2D, or the depth and normal textures differ in size. */
+    SSAO_ERROR_INVALID_TEXTURE = 7,
+    /* The depth texture's internal format is not D16, D24, D24S8, D32F or
+     * D32FS8, or the output texture is not colour-renderable. */
+    SSAO_ERROR_UNSUPPORTED_FORMAT = 8,
+    /* The projection matrix is singular or not a projection (for example all
+     * zeros, or w does not depend on view z the way a perspective or an
+     * orthographic projection does). */
+    SSAO_ERROR_INVALID_PROJECTION = 9,
+    /* create_context: the current GL context is older than 3.3 core, or no
+     * GL context is current (glGetString returned NULL). */
+    SSAO_ERROR_GL_VERSION = 10,
+    /* create_context: get_proc_address returned NULL for a GL 3.3 function. */
+    SSAO_ERROR_GL_LOAD = 11,
+    /* A shader failed to compile or link on this driver; last_error holds
+     * the driver's log. Should not happen on a conformant driver: report it. */
+    SSAO_ERROR_SHADER = 12,
+    /* An internal framebuffer is incomplete (for example the output texture's
+     * format cannot be rendered to on this driver). */
+    SSAO_ERROR_FRAMEBUFFER = 13,
+    /* Memory could not be allocated. */
+    SSAO_ERROR_OUT_OF_MEMORY = 14,
+    /* A bug in the library; last_error says where. */
+    SSAO_ERROR_INTERNAL = 15
+} ssao_status;
+
+/* --------------------------------------------------------------- settings */
+typedef enum ssao_kernel_shape {
+    SSAO_KERNEL_DEFAULT = 0,      /* = SSAO_KERNEL_HEMISPHERE */
+    SSAO_KERNEL_HEMISPHERE = 1,   /* normal-oriented hemisphere (the chapter's) */
+    SSAO_KERNEL_SPHERE = 2,       /* full sphere, normals only rotate it (Crytek look: flat = 0.5) */
+    SSAO_KERNEL_SEPARABLE = 3     /* two tangent planes (x-z and y-z), half the samples each (student report) */
+} ssao_kernel_shape;
+
+typedef enum ssao_kernel_distribution {
+    SSAO_DISTRIBUTION_DEFAULT = 0,      /* = SSAO_DISTRIBUTION_ACCELERATING */
+    SSAO_DISTRIBUTION_ACCELERATING = 1, /* length scaled by lerp(0.1, 1, (i/N)^2): denser near the centre */
+    SSAO_DISTRIBUTION_UNIFORM = 2       /* uniform in the (hemi)sphere's volume */
+} ssao_kernel_distribution;
+
+typedef enum ssao_rotation {
+    SSAO_ROTATION_DEFAULT = 0,  /* = SSAO_ROTATION_NOISE_4X4 */
+    SSAO_ROTATION_NOISE_4X4 = 1,/* 4x4 tiled noise texture, tiled per viewport pixel */
+    SSAO_ROTATION_HASH = 2,     /* per-pixel hash of the pixel position and seed */
+    SSAO_ROTATION_NONE = 3      /* no rotation: every pixel uses the same kernel (banding) */
+} ssao_rotation;
+
+typedef enum ssao_blur {
+    SSAO_BLUR_DEFAULT = 0,      /* = SSAO_BLUR_DEPTH_AWARE */
+    SSAO_BLUR_DEPTH_AWARE = 1,  /* separable gaussian whose taps beyond blur_depth_tolerance are dropped */
+    SSAO_BLUR_BOX_4X4 = 2,      /* the chapter's 4x4 box (offsets -2..1), ignores depth */
+    SSAO_BLUR_GAUSSIAN = 3,     /* separable gaussian of blur_sigma over blur_radius, ignores depth */
+    SSAO_BLUR_NONE = 4          /* no blur pass runs */
+} ssao_blur;
+
+typedef enum ssao_output_format {
+    SSAO_OUTPUT_DEFAULT = 0,    /* = SSAO_OUTPUT_R8 */
+    SSAO_OUTPUT_R8 = 1,
+    SSAO_OUTPUT_R16F = 2
+} ssao_output_format;
+
+/* strength is a multiplier in which 0 is meaningful (no AO at all). Because a
+ * zero field means "default", ask for strength 0 with this value. */
+#define SSAO_STRENGTH_OFF (-1.0f)
+
+typedef struct ssao_settings {
+    uint32_t size;               /* sizeof(ssao_settings) */
+    uint32_t sample_count;       /* kernel samples, 1..64; default 16 */
+    float radius;                /* sampling radius, view-space units, > 0; default 0.5 */
+    float bias;                  /* depth bias, view-space units, >= 0; default 0.025 * radius.
+                                    A bias proportional to the depth buffer's step at each
+                                    pixel (depth_step_bias) is always added. */
+    float depth_step_bias;       /* multiple of the depth format's step at the pixel's depth,
+                                    >= 0; default 2 */
+    float power;                 /* exponent applied to the result, (0, 16]; default 1 */
+    float strength;              /* occlusion multiplier, [0, 8]; default 1.
+                                    ao = pow(1 - strength * occlusion, power), clamped to [0,1].
+                                    SSAO_STRENGTH_OFF: strength 0, output is 1 and no pass samples. */
+    ssao_kernel_shape kernel_shape;             /* default hemisphere */
+    ssao_kernel_distribution distribution;      /* default accelerating */
+    ssao_rotation rotation;                     /* default 4x4 noise */
+    uint32_t seed;               /* seed of kernel, noise and hash; 0 = default seed 1 (deterministic) */
+    ssao_blur blur;                             /* default depth-aware */
+    uint32_t blur_radius;        /* taps either side, pixels, 1..16; default 2 (box 4x4 ignores it) */
+    float blur_sigma;            /* gaussian sigma, pixels, (0, 64]; default blur_radius (gaussian and depth-aware) */
+    float blur_depth_tolerance;  /* depth-aware blur: a tap counts when |z_tap - z_centre| <=
+                                    tolerance * |z_centre| (relative view depth), (0, 1]; default 0.05 */
+    ssao_output_format output_format;           /* plugin-owned output format; default R8 */
+} ssao_settings;
+
+/* Named quality presets (accuracy against time; see the README's benchmark). */
+typedef enum ssao_preset {
+    SSAO_PRESET_DEFAULT = 0,    /* = SSAO_PRESET_MEDIUM; the same as a zeroed ssao_settings */
+    SSAO_PRESET_LOW = 1,
+    SSAO_PRESET_MEDIUM = 2,
+    SSAO_PRESET_HIGH = 3,
+    SSAO_PRESET_ULTRA = 4
+} ssao_preset;
+
+/* ----------------------------------------------------------------- inputs */
+typedef enum ssao_clip_range {
+    SSAO_CLIP_DEFAULT = 0,            /* = SSAO_CLIP_NEGATIVE_ONE_TO_ONE */
+    SSAO_CLIP_NEGATIVE_ONE_TO_ONE = 1,/* GL's default: depth = ndc_z * 0.5 + 0.5 */
+    SSAO_CLIP_ZERO_TO_ONE = 2         /* glClipControl(..., GL_ZERO_TO_ONE): depth = ndc_z */
+} ssao_clip_range;
+
+typedef enum ssao_normal_space {
+    SSAO_NORMAL_SPACE_DEFAULT = 0,    /* = SSAO_NORMAL_SPACE_VIEW */
+    SSAO_NORMAL_SPACE_VIEW = 1,
+    SSAO_NORMAL_SPACE_WORLD = 2       /* rotated into view space with ssao_inputs.view_matrix */
+} ssao_normal_space;
+
+typedef enum ssao_normal_packing {
+    SSAO_NORMAL_PACKING_DEFAULT = 0,  /* = SSAO_NORMAL_PACKING_UNORM */
+    SSAO_NORMAL_PACKING_UNORM = 1,    /* stored as n * 0.5 + 0.5 in [0,1] (RGB8, RGBA8, RGB10A2, ...) */
+    SSAO_NORMAL_PACKING_SIGNED = 2    /* stored as is (RGB16F, RGBA16F, RGB32F, RGB8_SNORM, ...) */
+} ssao_normal_packing;
+
+typedef struct ssao_inputs {
+    uint32_t size;               /* sizeof(ssao_inputs) */
+    uint32_t depth_texture;      /* GL_TEXTURE_2D, D16/D24/D24S8/D32F/D32FS8; required */
+    uint32_t normal_texture;     /* GL_TEXTURE_2D of the same size, xyz = normal; required */
+    ssao_normal_space normal_space;
+    ssao_normal_packing normal_packing;
+    float projection[16];        /* the projection that rendered the depth, column-major.
+                                    Perspective (any near/far, infinite far, reverse-Z,
+                                    off-centre, jittered) or orthographic; which one, and
+                                    whether depth is reversed, is read from the matrix. */
+    float view_matrix[16];       /* world -> view, column-major; read only for world-space
+                                    normals (its upper 3x3 must be a rotation) */
+    ssao_clip_range clip_range;  /* the clip-control depth mode the depth was rendered with */
+    int32_t viewport[4];         /* x, y, width, height in pixels of the input textures; all
+                                    zero = the whole depth texture. The projection maps this
+                                    rectangle to NDC [-1,1]^2, as glViewport does. */
+    uint32_t output_texture;     /* 0: the library renders into its own texture (format from
+                                    settings.output_format, viewport-sized, texel (0,0) =
+                                    viewport pixel (x,y)) and returns it in ssao_output.
+                                    Otherwise a colour-renderable GL_TEXTURE_2D of the host's,
+                                    written at the same viewport rectangle (red channel = AO). */
+} ssao_inputs;
+
+typedef struct ssao_output {
+    uint32_t size;               /* sizeof(ssao_output) */
+    uint32_t texture;            /* the texture holding AO: output_texture or the library's */
+    int32_t origin[2];           /* where the viewport's AO starts in `texture` (pixels) */
+    uint32_t passes_run;         /* bit mask of ssao_pass: what this execute actually ran */
+} ssao_output;
+
+typedef enum ssao_pass {
+    SSAO_PASS_AO = 1,            /* the sampling pass */
+    SSAO_PASS_BLUR_X = 2,        /* horizontal blur (or the box blur's single pass) */
+    SSAO_PASS_BLUR_Y = 4,        /* vertical blur */
+    SSAO_PASS_CLEAR = 8          /* strength 0: output cleared to 1, nothing sampled */
+} ssao_pass;
+
+/* GPU times of one earlier frame, from timestamp queries read without
+ * stalling: results arrive a few frames late. Needs timer queries (GL 3.3
+ * core has them). */
+typedef struct ssao_timings {
+    uint32_t size;               /* sizeof(ssao_timings) */
+    uint32_t available;          /* 1 when the fields below hold a measured frame */
+    uint64_t frame;              /* which execute (1 = first) they were measured on */
+    double ao_ms;                /* sampling pass (or clear) */
+    double blur_ms;              /* all blur passes */
+    double total_ms;             /* whole execute on the GPU */
+} ssao_timings;
+
+/* What the library read from the last execute's inputs (for tests and tools). */
+typedef struct ssao_frame_info {
+    uint32_t size;               /* sizeof(ssao_frame_info) */
+    uint32_t orthographic;       /* 1 for an orthographic projection */
+    uint32_t reverse_z;          /* 1 when depth decreases with distance */
+    uint32_t infinite_far;       /* 1 when the far plane is at infinity */
+    uint32_t depth_bits;         /* 16, 24 or 32 (32 = float) */
+    float near_distance;         /* view-space distance of the near plane */
+    float far_distance;          /* of the far plane; +inf for an infinite far plane */
+} ssao_frame_info;
+
+/* ---------------------------------------------------------------- context */
+typedef void (*ssao_gl_proc)(void);
+typedef ssao_gl_proc (SSAO_CALL *ssao_get_proc_address_fn)(void* user, const char* name);
+
+typedef enum ssao_log_level {
+    SSAO_LOG_INFO = 0,
+    SSAO_LOG_WARNING = 1,
+    SSAO_LOG_ERROR = 2
+} ssao_log_level;
+typedef void (SSAO_CALL *ssao_log_fn)(void* user, ssao_log_level level, const char* message);
+
+typedef struct ssao_context_desc {
+    uint32_t size;                           /* sizeof(ssao_context_desc) */
+    ssao_get_proc_address_fn get_proc_address; /* required: e.g. a wrapper of eglGetProcAddress */
+    void* get_proc_address_user;             /* passed back to get_proc_address */
+    ssao_log_fn log;                         /* optional: receives every error message too */
+    void* log_user;
+    const ssao_settings* settings;           /* optional initial settings; NULL = defaults */
+} ssao_context_desc;
+
+typedef struct ssao_context ssao_context;
+
+/* ------------------------------------------------------------- the table */
+typedef struct ssao_api {
+    uint32_t size;               /* sizeof(ssao_api), set by the caller */
+    uint32_t version;            /* set by the library: the version it implements */
+
+    /* A static English sentence for a status; never NULL ("unknown status" for others). */
+    const char* (SSAO_CALL *status_string)(ssao_status status);
+
+    /* Resolves every zero (default) field of `in` and validates the rest.
+     * Needs no GL. Returns OK, NULL_POINTER, STRUCT_SIZE, INVALID_ENUM,
+     * INVALID_VALUE. */
+    ssao_status (SSAO_CALL *resolve_settings)(const ssao_settings* in, ssao_settings* out);
+
+    /* Fills `out` (whose size the caller set) with a preset, resolved.
+     * Returns OK, NULL_POINTER, STRUCT_SIZE, INVALID_ENUM. */
+    ssao_status (SSAO_CALL *preset_settings)(ssao_preset preset, ssao_settings* out);
+
+    /* Loads GL through desc->get_proc_address, compiles the shaders and makes
+     * the GL objects. A GL context must be current. *out is NULL on failure.
+     * Returns OK, NULL_POINTER, STRUCT_SIZE, INVALID_ENUM, INVALID_VALUE,
+     * GL_VERSION, GL_LOAD, SHADER, OUT_OF_MEMORY. The reason is also sent to
+     * desc->log, since there is no context to ask. */
+    ssao_status (SSAO_CALL *create_context)(const ssao_context_desc* desc, ssao_context** out);
+
+    /* Deletes the context and its GL objects; NULL is allowed (returns OK).
+     * The GL context it was created on must be current. */
+    ssao_status (SSAO_CALL *destroy_context)(ssao_context* ctx);
+
+    /* Validates and applies settings (takes effect at the next execute).
+     * Returns OK, NULL_POINTER, STRUCT_SIZE, INVALID_ENUM, INVALID_VALUE. */
+    ssao_status (SSAO_CALL *set_settings)(ssao_context* ctx, const ssao_settings* settings);
+
+    /* The context's resolved settings. Returns OK, NULL_POINTER, STRUCT_SIZE. */
+    ssao_status (SSAO_CALL *get_settings)(const ssao_context* ctx, ssao_settings* out);
+
+    /* Renders AO for inputs->viewport. `out` may be NULL. Returns OK,
+     * NULL_POINTER, STRUCT_SIZE, INVALID_ENUM, INVALID_VALUE, INVALID_SIZE,
+     * INVALID_TEXTURE, UNSUPPORTED_FORMAT, INVALID_PROJECTION, FRAMEBUFFER,
+     * OUT_OF_MEMORY. */
+    ssao_status (SSAO_CALL *execute)(ssao_context* ctx, const ssao_inputs* inputs, ssao_output* out);
+
+    /* GPU times of the newest frame whose queries have completed, without
+     * waiting. available = 0 until one has. Returns OK, NULL_POINTER, STRUCT_SIZE. */
+    ssao_status (SSAO_CALL *get_timings)(ssao_context* ctx, ssao_timings* out);
+
+    /* What the last successful execute read from its inputs. Returns OK,
+     * NULL_POINTER, STRUCT_SIZE. */
+    ssao_status (SSAO_CALL *get_frame_info)(const ssao_context* ctx, ssao_frame_info* out);
+
+    /* The context's last error message ("" when none); valid until the next
+     * call on the context. NULL ctx gives a static message. */
+    const char* (SSAO_CALL *last_error)(const ssao_context* ctx);
+} ssao_api;
+
+/* The one exported function. Fills api (api->size set by the caller; a
+ * smaller, older table gets its prefix). Returns OK, NULL_POINTER,
+ * STRUCT_SIZE (size smaller than the version-1.0 table), VERSION_MISMATCH. */
+typedef ssao_status (SSAO_CALL *PFN_ssao_get_api)(uint32_t requested_version, ssao_api* api);
+
+#if defined(_WIN32)
+#  define SSAO_EXPORT __declspec(dllexport)
+#else
+#  define SSAO_EXPORT __attribute__((visibility("default")))
+#endif
+SSAO_EXPORT ssao_status SSAO_CALL ssao_get_api(uint32_t requested_version, ssao_api* api);
+
+#ifdef __cplusplus
+} /* extern "C" */
+#endif
+
+#endif /* SSAO_SSAO_H */
