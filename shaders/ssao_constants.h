@@ -57,12 +57,12 @@ SSAO_BLOCK(SsaoFrame) {
     SSAO_MAT4 u_inv_proj;      /* clip -> view (computed in double, stored as float) */
     SSAO_MAT4 u_normal_to_view;/* world -> view rotation for world-space normals (identity else) */
     SSAO_IVEC4 u_viewport;     /* x, y, w, h of the inputs */
-    SSAO_IVEC4 u_out_origin;   /* where viewport pixel (0,0) lands in the render target, 0, 0 */
+    SSAO_IVEC4 u_reserved;     /* keeps the layout std140-aligned; unused */
     SSAO_IVEC4 u_modes;        /* kernel shape, rotation, normal space, normal packing */
     SSAO_IVEC4 u_counts;       /* sample count, seed, blur radius, blur kind */
     SSAO_VEC4 u_ao;            /* radius, bias, depth-step bias, strength */
     SSAO_VEC4 u_ao2;           /* power, blur sigma, blur depth tolerance, ndc-per-depth (1 or 2) */
-    SSAO_VEC4 u_depth;         /* depth value of the far plane (sky), depth ulp (0 = float), float depth, reverse */
+    SSAO_VEC4 u_depth;         /* far-plane depth value (sky), depth step of a unorm format (0 = float), reverse-Z, orthographic */
 }
 SSAO_BLOCK_END
 

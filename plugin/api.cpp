@@ -1,0 +1,196 @@
+// api.cpp - the C ABI: ssao_get_api and the functions of its table. Every
+// entry point checks its pointers and struct sizes, and no C++ exception
+// crosses the boundary.
+#include "context.h"
+#include "settings.h"
+
+#include <new>
+#include <string>
+
+namespace {
+
+using ssao_impl::resolve_settings;
+
+const char* const kNoContext = "no context (NULL)";
+
+template <typename F>
+ssao_status guarded(ssao_context* ctx, F&& body) {
+    try {
+        return body();
+    } catch (const std::bad_alloc&) {
+        return ctx ? ctx->fail(SSAO_ERROR_OUT_OF_MEMORY, "out of memory") : SSAO_ERROR_OUT_OF_MEMORY;
+    } catch (...) {
+        return ctx ? ctx->fail(SSAO_ERROR_INTERNAL, "internal error (exception)") : SSAO_ERROR_INTERNAL;
+    }
+}
+
+const char* SSAO_CALL status_string(ssao_status status) {
+    switch (status) {
+        case SSAO_OK: return "success";
+        case SSAO_ERROR_NULL_POINTER: return "a required pointer argument was NULL";
+        case SSAO_ERROR_STRUCT_SIZE: return "a struct's size field matches no known version of that struct";
+        case SSAO_ERROR_VERSION_MISMATCH: return "the requested interface version is not provided by this library";
+        case SSAO_ERROR_INVALID_ENUM: return "an enum field holds a value outside its documented list";
+        case SSAO_ERROR_INVALID_VALUE: return "a number is non-finite or outside its documented range";
+        case SSAO_ERROR_INVALID_SIZE: return "a size or viewport is zero, too large, or outside the textures";
+        case SSAO_ERROR_INVALID_TEXTURE: return "a texture name is missing, not a 2D texture, or of the wrong size";
+        case SSAO_ERROR_UNSUPPORTED_FORMAT: return "a texture's format is not supported";
+        case SSAO_ERROR_INVALID_PROJECTION: return "the projection matrix is not a supported projection";
+        case SSAO_ERROR_GL_VERSION: return "no GL context is current, or it is older than 3.3 core";
+        case SSAO_ERROR_GL_LOAD: return "a required GL function could not be loaded";
+        case SSAO_ERROR_SHADER: return "a shader failed to compile or link";
+        case SSAO_ERROR_FRAMEBUFFER: return "an internal framebuffer is incomplete";
+        case SSAO_ERROR_OUT_OF_MEMORY: return "out of memory";
+        case SSAO_ERROR_INTERNAL: return "internal error";
+    }
+    return "unknown status";
+}
+
+ssao_status SSAO_CALL api_resolve_settings(const ssao_settings* in, ssao_settings* out) {
+    if (!in || !out) return SSAO_ERROR_NULL_POINTER;
+    if (out->size != sizeof(ssao_settings)) return SSAO_ERROR_STRUCT_SIZE;
+    return guarded(nullptr, [&] {
+        std::string why;
+        return resolve_settings(*in, *out, why);
+    });
+}
+
+ssao_status SSAO_CALL api_preset_settings(ssao_preset preset, ssao_settings* out) {
+    if (!out) return SSAO_ERROR_NULL_POINTER;
+    if (out->size != sizeof(ssao_settings)) return SSAO_ERROR_STRUCT_SIZE;
+    return guarded(nullptr, [&] {
+        std::string why;
+        return ssao_impl::preset_settings(preset, *out, why);
+    });
+}
+
+ssao_status SSAO_CALL api_destroy_context(ssao_context* ctx) {
+    if (!ctx) return SSAO_OK;
+    return guarded(nullptr, [&] {
+        ssao_impl::release(*ctx);
+        delete ctx;
+        return SSAO_OK;
+    });
+}
+
+ssao_status SSAO_CALL api_create_context(const ssao_context_desc* desc, ssao_context** out) {
+    if (!out) return SSAO_ERROR_NULL_POINTER;
+    *out = nullptr;
+    if (!desc) return SSAO_ERROR_NULL_POINTER;
+    auto report = [&](ssao_status st, const char* message) {
+        if (desc->size == sizeof(ssao_context_desc) && desc->log) desc->log(desc->log_user, SSAO_LOG_ERROR, message);
+        return st;
+    };
+    if (desc->size != sizeof(ssao_context_desc))
+        return report(SSAO_ERROR_STRUCT_SIZE, "ssao_context_desc.size does not match this library");
+    if (!desc->get_proc_address)
+        return report(SSAO_ERROR_NULL_POINTER, "ssao_context_desc.get_proc_address is NULL");
+    return guarded(nullptr, [&]() -> ssao_status {
+        ssao_settings settings{};
+        settings.size = sizeof settings;
+        std::string why;
+        if (desc->settings) {
+            const ssao_status st = resolve_settings(*desc->settings, settings, why);
+            if (st != SSAO_OK) return report(st, ("ssao_context_desc.settings: " + why).c_str());
+        } else {
+            resolve_settings(settings, settings, why);
+        }
+        ssao_context* ctx = new (std::nothrow) ssao_context();
+        if (!ctx) return report(SSAO_ERROR_OUT_OF_MEMORY, "out of memory");
+        ctx->log = desc->log;
+        ctx->log_user = desc->log_user;
+        ctx->settings = settings;
+        const ssao_status st = ssao_impl::initialise(*ctx, *desc);
+        if (st != SSAO_OK) {
+            ssao_impl::release(*ctx);
+            delete ctx;
+            return st;  // initialise already sent the message to the log
+        }
+        *out = ctx;
+        return SSAO_OK;
+    });
+}
+
+ssao_status SSAO_CALL api_set_settings(ssao_context* ctx, const ssao_settings* settings) {
+    if (!ctx || !settings) return ctx ? ctx->fail(SSAO_ERROR_NULL_POINTER, "settings is NULL") : SSAO_ERROR_NULL_POINTER;
+    return guarded(ctx, [&] {
+        ssao_settings resolved{};
+        std::string why;
+        const ssao_status st = resolve_settings(*settings, resolved, why);
+        if (st != SSAO_OK) return ctx->fail(st, "settings: " + why);
+        const ssao_settings& old = ctx->settings;
+        if (resolved.sample_count != old.sample_count || resolved.kernel_shape != old.kernel_shape ||
+            resolved.distribution != old.distribution || resolved.seed != old.seed)
+            ctx->kernel_dirty = true;
+        ctx->settings = resolved;
+        ctx->last_error.clear();
+        return SSAO_OK;
+    });
+}
+
+ssao_status SSAO_CALL api_get_settings(const ssao_context* ctx, ssao_settings* out) {
+    if (!ctx || !out) return SSAO_ERROR_NULL_POINTER;
+    if (out->size != sizeof(ssao_settings)) return SSAO_ERROR_STRUCT_SIZE;
+    *out = ctx->settings;
+    return SSAO_OK;
+}
+
+ssao_status SSAO_CALL api_execute(ssao_context* ctx, const ssao_inputs* inputs, ssao_output* out) {
+    if (!ctx) return SSAO_ERROR_NULL_POINTER;
+    if (!inputs) return ctx->fail(SSAO_ERROR_NULL_POINTER, "inputs is NULL");
+    if (inputs->size != sizeof(ssao_inputs))
+        return ctx->fail(SSAO_ERROR_STRUCT_SIZE, "ssao_inputs.size does not match this library");
+    if (out && out->size != sizeof(ssao_output))
+        return ctx->fail(SSAO_ERROR_STRUCT_SIZE, "ssao_output.size does not match this library");
+    return guarded(ctx, [&] { return ssao_impl::execute(*ctx, *inputs, out); });
+}
+
+ssao_status SSAO_CALL api_get_timings(ssao_context* ctx, ssao_timings* out) {
+    if (!ctx || !out) return ctx ? ctx->fail(SSAO_ERROR_NULL_POINTER, "timings is NULL") : SSAO_ERROR_NULL_POINTER;
+    if (out->size != sizeof(ssao_timings))
+        return ctx->fail(SSAO_ERROR_STRUCT_SIZE, "ssao_timings.size does not match this library");
+    return guarded(ctx, [&] {
+        ssao_impl::collect_timings(*ctx);
+        *out = ctx->timings;
+        out->size = sizeof(ssao_timings);
+        return SSAO_OK;
+    });
+}
+
+ssao_status SSAO_CALL api_get_frame_info(const ssao_context* ctx, ssao_frame_info* out) {
+    if (!ctx || !out) return SSAO_ERROR_NULL_POINTER;
+    if (out->size != sizeof(ssao_frame_info)) return SSAO_ERROR_STRUCT_SIZE;
+    *out = ctx->info;
+    out->size = sizeof(ssao_frame_info);
+    return SSAO_OK;
+}
+
+const char* SSAO_CALL api_last_error(const ssao_context* ctx) {
+    return ctx ? ctx->last_error.c_str() : kNoContext;
+}
+
+}  // namespace
+
+extern "C" SSAO_EXPORT ssao_status SSAO_CALL ssao_get_api(uint32_t requested_version, ssao_api* api) {
+    if (!api) return SSAO_ERROR_NULL_POINTER;
+    if (api->size < sizeof(ssao_api)) return SSAO_ERROR_STRUCT_SIZE;  // 1.0 is the first version
+    if (SSAO_VERSION_MAJOR(requested_version) != SSAO_VERSION_MAJOR(SSAO_API_VERSION) ||
+        SSAO_VERSION_MINOR(requested_version) > SSAO_VERSION_MINOR(SSAO_API_VERSION))
+        return SSAO_ERROR_VERSION_MISMATCH;
+    ssao_api table{};
+    table.size = sizeof(ssao_api);
+    table.version = SSAO_API_VERSION;
+    table.status_string = status_string;
+    table.resolve_settings = api_resolve_settings;
+    table.preset_settings = api_preset_settings;
+    table.create_context = api_create_context;
+    table.destroy_context = api_destroy_context;
+    table.set_settings = api_set_settings;
+    table.get_settings = api_get_settings;
+    table.execute = api_execute;
+    table.get_timings = api_get_timings;
+    table.get_frame_info = api_get_frame_info;
+    table.last_error = api_last_error;
+    *api = table;  // a larger (newer) caller table keeps its tail untouched
+    return SSAO_OK;
+}

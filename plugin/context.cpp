@@ -1,0 +1,190 @@
+// context.cpp - creation and destruction of a context: GL loading, capability
+// checks, shader compilation, and every GL object made once up front.
+#include "context.h"
+
+#include "kernel.h"
+
+#include "uniforms.h"
+#include <ssao_shaders_embedded.h>
+
+#include <cstdio>
+#include <cstring>
+#include <string>
+
+ssao_status ssao_context::fail(ssao_status status, const std::string& message) {
+    last_error = message;
+    if (log) log(log_user, SSAO_LOG_ERROR, message.c_str());
+    return status;
+}
+
+namespace ssao_impl {
+
+namespace {
+
+struct LoaderUser {
+    ssao_get_proc_address_fn fn;
+    void* user;
+};
+
+GLADapiproc load_with_user(void* userptr, const char* name) {
+    auto* u = static_cast<LoaderUser*>(userptr);
+    return reinterpret_cast<GLADapiproc>(u->fn(u->user, name));
+}
+
+// #version first, then the shared constants, then the pass's own code.
+std::string assemble(const char* body, bool with_common) {
+    std::string s = "#version 330 core\n";
+    s += k_ssao_constants_h;
+    s += "\n";
+    if (with_common) s += k_common_glsl;
+    s += "\n#line 1\n";
+    s += body;
+    return s;
+}
+
+bool compile(ssao_context& ctx, GLenum type, const std::string& source, const char* name, GLuint& out) {
+    const GladGLContext& gl = ctx.gl;
+    GLuint sh = gl.CreateShader(type);
+    const char* src = source.c_str();
+    gl.ShaderSource(sh, 1, &src, nullptr);
+    gl.CompileShader(sh);
+    GLint ok = 0;
+    gl.GetShaderiv(sh, GL_COMPILE_STATUS, &ok);
+    if (!ok) {
+        char log[4096] = {};
+        gl.GetShaderInfoLog(sh, sizeof log, nullptr, log);
+        gl.DeleteShader(sh);
+        ctx.fail(SSAO_ERROR_SHADER, std::string("shader ") + name + " failed to compile: " + log);
+        return false;
+    }
+    out = sh;
+    return true;
+}
+
+ssao_status link(ssao_context& ctx, const char* fragment_body, const char* name, GLuint& program) {
+    const GladGLContext& gl = ctx.gl;
+    GLuint vs = 0, fs = 0;
+    if (!compile(ctx, GL_VERTEX_SHADER, assemble(k_fullscreen_vert, false), "fullscreen.vert", vs))
+        return SSAO_ERROR_SHADER;
+    if (!compile(ctx, GL_FRAGMENT_SHADER, assemble(fragment_body, true), name, fs)) {
+        gl.DeleteShader(vs);
+        return SSAO_ERROR_SHADER;
+    }
+    program = gl.CreateProgram();
+    gl.AttachShader(program, vs);
+    gl.AttachShader(program, fs);
+    gl.LinkProgram(program);
+    gl.DeleteShader(vs);
+    gl.DeleteShader(fs);
+    GLint ok = 0;
+    gl.GetProgramiv(program, GL_LINK_STATUS, &ok);
+    if (!ok) {
+        char log[4096] = {};
+        gl.GetProgramInfoLog(program, sizeof log, nullptr, log);
+        return ctx.fail(SSAO_ERROR_SHADER, std::string("program ") + name + " failed to link: " + log);
+    }
+    // GLSL 3.30 has no layout(binding): bind blocks and samplers here, once.
+    const GLuint frame_block = gl.GetUniformBlockIndex(program, "SsaoFrame");
+    if (frame_block != GL_INVALID_INDEX) gl.UniformBlockBinding(program, frame_block, SSAO_UBO_FRAME);
+    const GLuint kernel_block = gl.GetUniformBlockIndex(program, "SsaoKernel");
+    if (kernel_block != GL_INVALID_INDEX) gl.UniformBlockBinding(program, kernel_block, SSAO_UBO_KERNEL);
+    GLint previous = 0;
+    gl.GetIntegerv(GL_CURRENT_PROGRAM, &previous);
+    gl.UseProgram(program);
+    const struct { const char* name; int unit; } samplers[] = {
+        {"u_depth_tex", SSAO_UNIT_DEPTH}, {"u_normal_tex", SSAO_UNIT_NORMAL},
+        {"u_noise_tex", SSAO_UNIT_NOISE}, {"u_ao_tex", SSAO_UNIT_AO}};
+    for (const auto& s : samplers) {
+        const GLint loc = gl.GetUniformLocation(program, s.name);
+        if (loc >= 0) gl.Uniform1i(loc, s.unit);
+    }
+    gl.UseProgram(static_cast<GLuint>(previous));
+    return SSAO_OK;
+}
+
+bool has_gl_extension(const GladGLContext& gl, const char* name) {
+    GLint count = 0;
+    gl.GetIntegerv(GL_NUM_EXTENSIONS, &count);
+    for (GLint i = 0; i < count; ++i) {
+        const char* e = reinterpret_cast<const char*>(gl.GetStringi(GL_EXTENSIONS, static_cast<GLuint>(i)));
+        if (e && std::strcmp(e, name) == 0) return true;
+    }
+    return false;
+}
+
+}  // namespace
+
+ssao_status initialise(ssao_context& ctx, const ssao_context_desc& desc) {
+    // Before loading everything: is a context current, and is it new enough?
+    auto get_string = reinterpret_cast<PFNGLGETSTRINGPROC>(
+        desc.get_proc_address(desc.get_proc_address_user, "glGetString"));
+    if (!get_string)
+        return ctx.fail(SSAO_ERROR_GL_LOAD, "get_proc_address returned NULL for glGetString");
+    const char* version = reinterpret_cast<const char*>(get_string(GL_VERSION));
+    if (!version)
+        return ctx.fail(SSAO_ERROR_GL_VERSION, "no GL context is current (glGetString(GL_VERSION) returned NULL)");
+    int major = 0, minor = 0;
+    if (std::sscanf(version, "%d.%d", &major, &minor) != 2 || major * 10 + minor < 33)
+        return ctx.fail(SSAO_ERROR_GL_VERSION,
+                        std::string("GL 3.3 core or newer is required; the current context is ") + version);
+
+    LoaderUser user{desc.get_proc_address, desc.get_proc_address_user};
+    const int loaded = gladLoadGLContextUserPtr(&ctx.gl, load_with_user, &user);
+    if (loaded == 0 || !ctx.gl.CreateShader || !ctx.gl.BindSampler || !ctx.gl.GetUniformBlockIndex)
+        return ctx.fail(SSAO_ERROR_GL_LOAD, "get_proc_address returned NULL for GL 3.3 core functions");
+    GladGLContext& gl = ctx.gl;
+    ctx.caps.major = major;
+    ctx.caps.minor = minor;
+    const int v = major * 10 + minor;
+    ctx.caps.clip_control = gl.ClipControl != nullptr && (v >= 45 || has_gl_extension(gl, "GL_ARB_clip_control"));
+    ctx.caps.depth_stencil_mode = v >= 43;
+    ctx.caps.texture_target_query = v >= 45 && gl.GetTextureParameteriv != nullptr;
+    gl.GetIntegerv(GL_MAX_DRAW_BUFFERS, &ctx.caps.max_draw_buffers);
+    gl.GetIntegerv(GL_MAX_CLIP_DISTANCES, &ctx.caps.max_clip_distances);
+
+    ssao_status st = link(ctx, k_ao_frag, "ao.frag", ctx.program_ao);
+    if (st != SSAO_OK) return st;
+    st = link(ctx, k_blur_frag, "blur.frag", ctx.program_blur);
+    if (st != SSAO_OK) return st;
+    ctx.blur_dir_location = gl.GetUniformLocation(ctx.program_blur, "u_blur_dir");
+    ctx.blur_target_origin_location = gl.GetUniformLocation(ctx.program_blur, "u_target_origin");
+    ctx.ao_target_origin_location = gl.GetUniformLocation(ctx.program_ao, "u_target_origin");
+
+    // Object creation binds nothing here: buffers and textures are first bound
+    // inside execute, under the state guard.
+    gl.GenVertexArrays(1, &ctx.vao);
+    gl.GenFramebuffers(1, &ctx.fbo);
+    gl.GenBuffers(1, &ctx.ubo_frame);
+    gl.GenBuffers(1, &ctx.ubo_kernel);
+    gl.GenTextures(1, &ctx.noise_texture);
+    gl.GenSamplers(1, &ctx.sampler);
+    // texelFetch ignores filtering and wrapping, but a depth texture with a
+    // compare mode would read as a shadow test: the sampler turns that off.
+    gl.SamplerParameteri(ctx.sampler, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    gl.SamplerParameteri(ctx.sampler, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    gl.SamplerParameteri(ctx.sampler, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    gl.SamplerParameteri(ctx.sampler, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    gl.SamplerParameteri(ctx.sampler, GL_TEXTURE_COMPARE_MODE, GL_NONE);
+
+    ctx.timers = gl.QueryCounter != nullptr && gl.GetQueryObjectui64v != nullptr;
+    if (ctx.timers) gl.GenQueries(ssao_context::kFrames * ssao_context::kStamps, &ctx.queries[0][0]);
+    return SSAO_OK;
+}
+
+void release(ssao_context& ctx) {
+    GladGLContext& gl = ctx.gl;
+    if (!gl.DeleteProgram) return;  // GL never loaded
+    if (ctx.program_ao) gl.DeleteProgram(ctx.program_ao);
+    if (ctx.program_blur) gl.DeleteProgram(ctx.program_blur);
+    if (ctx.vao) gl.DeleteVertexArrays(1, &ctx.vao);
+    if (ctx.fbo) gl.DeleteFramebuffers(1, &ctx.fbo);
+    if (ctx.ubo_frame) gl.DeleteBuffers(1, &ctx.ubo_frame);
+    if (ctx.ubo_kernel) gl.DeleteBuffers(1, &ctx.ubo_kernel);
+    if (ctx.noise_texture) gl.DeleteTextures(1, &ctx.noise_texture);
+    if (ctx.sampler) gl.DeleteSamplers(1, &ctx.sampler);
+    gl.DeleteTextures(2, ctx.temp);
+    if (ctx.output) gl.DeleteTextures(1, &ctx.output);
+    if (ctx.timers) gl.DeleteQueries(ssao_context::kFrames * ssao_context::kStamps, &ctx.queries[0][0]);
+}
+
+}  // namespace ssao_impl

@@ -1,0 +1,161 @@
+#include "gl_state_guard.h"
+
+#include <algorithm>
+
+namespace ssao_impl {
+
+namespace {
+
+const GLenum kUnpackParams[8] = {GL_UNPACK_SWAP_BYTES, GL_UNPACK_LSB_FIRST, GL_UNPACK_ROW_LENGTH,
+                                 GL_UNPACK_IMAGE_HEIGHT, GL_UNPACK_SKIP_ROWS, GL_UNPACK_SKIP_PIXELS,
+                                 GL_UNPACK_SKIP_IMAGES, GL_UNPACK_ALIGNMENT};
+
+void set_enabled(const GladGLContext& gl, GLenum cap, GLboolean on) {
+    if (on) gl.Enable(cap); else gl.Disable(cap);
+}
+
+}  // namespace
+
+GlStateGuard::GlStateGuard(const GladGLContext& gl, const GlCaps& caps, GLuint uniform_binding_a,
+                           GLuint uniform_binding_b)
+    : gl_(gl), caps_(caps) {
+    gl.GetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &draw_fbo_);
+    gl.GetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &read_fbo_);
+    gl.GetIntegerv(GL_CURRENT_PROGRAM, &program_);
+    gl.GetIntegerv(GL_VERTEX_ARRAY_BINDING, &vao_);
+    gl.GetIntegerv(GL_ACTIVE_TEXTURE, &active_texture_);
+    for (int u = 0; u < kUnits; ++u) {
+        gl.ActiveTexture(GL_TEXTURE0 + u);
+        gl.GetIntegerv(GL_TEXTURE_BINDING_2D, &texture_2d_[u]);
+        gl.GetIntegerv(GL_SAMPLER_BINDING, &sampler_[u]);
+    }
+    gl.ActiveTexture(static_cast<GLenum>(active_texture_));
+    gl.GetIntegerv(GL_ARRAY_BUFFER_BINDING, &array_buffer_);
+    gl.GetIntegerv(GL_UNIFORM_BUFFER_BINDING, &uniform_buffer_);
+    gl.GetIntegerv(GL_PIXEL_UNPACK_BUFFER_BINDING, &unpack_buffer_);
+    ubo_index_[0] = uniform_binding_a;
+    ubo_index_[1] = uniform_binding_b;
+    for (int i = 0; i < 2; ++i) {
+        gl.GetIntegeri_v(GL_UNIFORM_BUFFER_BINDING, ubo_index_[i], &ubo_binding_[i]);
+        gl.GetInteger64i_v(GL_UNIFORM_BUFFER_START, ubo_index_[i], &ubo_start_[i]);
+        gl.GetInteger64i_v(GL_UNIFORM_BUFFER_SIZE, ubo_index_[i], &ubo_size_[i]);
+    }
+    gl.GetIntegerv(GL_VIEWPORT, viewport_);
+    gl.GetIntegerv(GL_SCISSOR_BOX, scissor_);
+    scissor_test_ = gl.IsEnabled(GL_SCISSOR_TEST);
+    depth_test_ = gl.IsEnabled(GL_DEPTH_TEST);
+    stencil_test_ = gl.IsEnabled(GL_STENCIL_TEST);
+    cull_face_ = gl.IsEnabled(GL_CULL_FACE);
+    rasterizer_discard_ = gl.IsEnabled(GL_RASTERIZER_DISCARD);
+    polygon_offset_fill_ = gl.IsEnabled(GL_POLYGON_OFFSET_FILL);
+    color_logic_op_ = gl.IsEnabled(GL_COLOR_LOGIC_OP);
+    sample_mask_ = gl.IsEnabled(GL_SAMPLE_MASK);
+    dither_ = gl.IsEnabled(GL_DITHER);
+    framebuffer_srgb_ = gl.IsEnabled(GL_FRAMEBUFFER_SRGB);
+    multisample_ = gl.IsEnabled(GL_MULTISAMPLE);
+    sample_alpha_to_coverage_ = gl.IsEnabled(GL_SAMPLE_ALPHA_TO_COVERAGE);
+    const int buffers = std::min(caps.max_draw_buffers, kMaxBuffers);
+    for (int i = 0; i < buffers; ++i) {
+        blend_[i] = gl.IsEnabledi(GL_BLEND, static_cast<GLuint>(i));
+        gl.GetBooleani_v(GL_COLOR_WRITEMASK, static_cast<GLuint>(i), color_mask_[i]);
+    }
+    for (int i = 0; i < std::min(caps.max_clip_distances, 8); ++i)
+        clip_distance_[i] = gl.IsEnabled(GL_CLIP_DISTANCE0 + static_cast<GLenum>(i));
+    gl.GetIntegerv(GL_POLYGON_MODE, polygon_mode_);
+    gl.GetBooleanv(GL_DEPTH_WRITEMASK, &depth_mask_);
+    gl.GetIntegerv(GL_STENCIL_WRITEMASK, &stencil_mask_front_);
+    gl.GetIntegerv(GL_STENCIL_BACK_WRITEMASK, &stencil_mask_back_);
+    if (caps.clip_control) {
+        gl.GetIntegerv(GL_CLIP_ORIGIN, &clip_origin_);
+        gl.GetIntegerv(GL_CLIP_DEPTH_MODE, &clip_depth_mode_);
+    }
+    for (int i = 0; i < 8; ++i) gl.GetIntegerv(kUnpackParams[i], &unpack_[i]);
+}
+
+void GlStateGuard::save_depth_stencil_mode(GLuint texture) {
+    if (!caps_.depth_stencil_mode) return;
+    ds_texture_ = texture;
+    gl_.GetTexParameteriv(GL_TEXTURE_2D, GL_DEPTH_STENCIL_TEXTURE_MODE, &ds_mode_);
+}
+
+GlStateGuard::~GlStateGuard() {
+    const GladGLContext& gl = gl_;
+    if (ds_texture_ != 0) {
+        gl.ActiveTexture(GL_TEXTURE0);
+        gl.BindTexture(GL_TEXTURE_2D, ds_texture_);
+        gl.TexParameteri(GL_TEXTURE_2D, GL_DEPTH_STENCIL_TEXTURE_MODE, ds_mode_);
+    }
+    for (int u = 0; u < kUnits; ++u) {
+        gl.ActiveTexture(GL_TEXTURE0 + u);
+        gl.BindTexture(GL_TEXTURE_2D, static_cast<GLuint>(texture_2d_[u]));
+        gl.BindSampler(static_cast<GLuint>(u), static_cast<GLuint>(sampler_[u]));
+    }
+    gl.ActiveTexture(static_cast<GLenum>(active_texture_));
+    gl.BindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(draw_fbo_));
+    gl.BindFramebuffer(GL_READ_FRAMEBUFFER, static_cast<GLuint>(read_fbo_));
+    gl.UseProgram(static_cast<GLuint>(program_));
+    gl.BindVertexArray(static_cast<GLuint>(vao_));
+    // Indexed uniform bindings first: glBindBufferRange/Base also set the
+    // generic binding, which is restored after them.
+    for (int i = 0; i < 2; ++i) {
+        if (ubo_binding_[i] != 0 && ubo_size_[i] > 0)
+            gl.BindBufferRange(GL_UNIFORM_BUFFER, ubo_index_[i], static_cast<GLuint>(ubo_binding_[i]),
+                               static_cast<GLintptr>(ubo_start_[i]), static_cast<GLsizeiptr>(ubo_size_[i]));
+        else
+            gl.BindBufferBase(GL_UNIFORM_BUFFER, ubo_index_[i], static_cast<GLuint>(ubo_binding_[i]));
+    }
+    gl.BindBuffer(GL_UNIFORM_BUFFER, static_cast<GLuint>(uniform_buffer_));
+    gl.BindBuffer(GL_ARRAY_BUFFER, static_cast<GLuint>(array_buffer_));
+    gl.BindBuffer(GL_PIXEL_UNPACK_BUFFER, static_cast<GLuint>(unpack_buffer_));
+    gl.Viewport(viewport_[0], viewport_[1], viewport_[2], viewport_[3]);
+    gl.Scissor(scissor_[0], scissor_[1], scissor_[2], scissor_[3]);
+    set_enabled(gl, GL_SCISSOR_TEST, scissor_test_);
+    set_enabled(gl, GL_DEPTH_TEST, depth_test_);
+    set_enabled(gl, GL_STENCIL_TEST, stencil_test_);
+    set_enabled(gl, GL_CULL_FACE, cull_face_);
+    set_enabled(gl, GL_RASTERIZER_DISCARD, rasterizer_discard_);
+    set_enabled(gl, GL_POLYGON_OFFSET_FILL, polygon_offset_fill_);
+    set_enabled(gl, GL_COLOR_LOGIC_OP, color_logic_op_);
+    set_enabled(gl, GL_SAMPLE_MASK, sample_mask_);
+    set_enabled(gl, GL_DITHER, dither_);
+    set_enabled(gl, GL_FRAMEBUFFER_SRGB, framebuffer_srgb_);
+    set_enabled(gl, GL_MULTISAMPLE, multisample_);
+    set_enabled(gl, GL_SAMPLE_ALPHA_TO_COVERAGE, sample_alpha_to_coverage_);
+    const int buffers = std::min(caps_.max_draw_buffers, kMaxBuffers);
+    for (int i = 0; i < buffers; ++i) {
+        const GLuint b = static_cast<GLuint>(i);
+        if (blend_[i]) gl.Enablei(GL_BLEND, b); else gl.Disablei(GL_BLEND, b);
+        gl.ColorMaski(b, color_mask_[i][0], color_mask_[i][1], color_mask_[i][2], color_mask_[i][3]);
+    }
+    for (int i = 0; i < std::min(caps_.max_clip_distances, 8); ++i)
+        set_enabled(gl, GL_CLIP_DISTANCE0 + static_cast<GLenum>(i), clip_distance_[i]);
+    // Core profile: front and back polygon modes are always set together.
+    gl.PolygonMode(GL_FRONT_AND_BACK, static_cast<GLenum>(polygon_mode_[0]));
+    gl.DepthMask(depth_mask_);
+    gl.StencilMaskSeparate(GL_FRONT, static_cast<GLuint>(stencil_mask_front_));
+    gl.StencilMaskSeparate(GL_BACK, static_cast<GLuint>(stencil_mask_back_));
+    if (caps_.clip_control)
+        gl.ClipControl(static_cast<GLenum>(clip_origin_), static_cast<GLenum>(clip_depth_mode_));
+    for (int i = 0; i < 8; ++i) gl.PixelStorei(kUnpackParams[i], unpack_[i]);
+}
+
+void set_pass_state(const GladGLContext& gl, const GlCaps& caps) {
+    gl.Disable(GL_SCISSOR_TEST);
+    gl.Disable(GL_DEPTH_TEST);
+    gl.Disable(GL_STENCIL_TEST);
+    gl.Disable(GL_CULL_FACE);
+    gl.Disable(GL_RASTERIZER_DISCARD);
+    gl.Disable(GL_POLYGON_OFFSET_FILL);
+    gl.Disable(GL_COLOR_LOGIC_OP);
+    gl.Disable(GL_SAMPLE_MASK);
+    gl.Disable(GL_DITHER);
+    gl.Disable(GL_FRAMEBUFFER_SRGB);
+    gl.Disable(GL_SAMPLE_ALPHA_TO_COVERAGE);
+    gl.Disable(GL_BLEND);  // every draw buffer
+    for (int i = 0; i < std::min(caps.max_clip_distances, 8); ++i) gl.Disable(GL_CLIP_DISTANCE0 + static_cast<GLenum>(i));
+    gl.ColorMaski(0, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    gl.PolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+    if (caps.clip_control) gl.ClipControl(GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE);
+}
+
+}  // namespace ssao_impl

@@ -1,0 +1,79 @@
+#include "kernel.h"
+
+#include <cmath>
+
+namespace ssao_impl {
+
+uint64_t Random::next_u64() {
+    uint64_t z = (state_ += 0x9e3779b97f4a7c15ull);
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+    return z ^ (z >> 31);
+}
+
+float Random::next_float() {
+    return static_cast<float>(next_u64() >> 40) * (1.0f / 16777216.0f);
+}
+
+namespace {
+
+float lerp(float a, float b, float t) { return a + (b - a) * t; }
+
+// A random direction in the set the shape allows, never (near) zero length.
+glm::vec3 direction(Random& rng, ssao_kernel_shape shape, int plane) {
+    for (;;) {
+        glm::vec3 v(rng.next_float() * 2.0f - 1.0f, rng.next_float() * 2.0f - 1.0f, rng.next_float());
+        if (shape == SSAO_KERNEL_SPHERE) v.z = v.z * 2.0f - 1.0f;
+        if (shape == SSAO_KERNEL_SEPARABLE) (plane == 0 ? v.y : v.x) = 0.0f;
+        const float len = glm::length(v);
+        if (len > 1e-3f && len <= 1.0f) return v / len;  // rejection keeps directions uniform
+    }
+}
+
+}  // namespace
+
+std::vector<glm::vec3> make_kernel(const ssao_settings& s) {
+    Random rng(0x5ea0u ^ (static_cast<uint64_t>(s.seed) << 32));
+    const int total = static_cast<int>(s.sample_count);
+    const bool separable = s.kernel_shape == SSAO_KERNEL_SEPARABLE;
+    const int first = separable ? (total + 1) / 2 : total;
+    std::vector<glm::vec3> kernel;
+    kernel.reserve(total);
+    for (int i = 0; i < total; ++i) {
+        const int plane = i < first ? 0 : 1;
+        const int index = plane == 0 ? i : i - first;
+        const int count = plane == 0 ? first : total - first;
+        const glm::vec3 dir = direction(rng, s.kernel_shape, plane);
+        const float u = rng.next_float();
+        float length;
+        if (s.distribution == SSAO_DISTRIBUTION_ACCELERATING) {
+            const float t = static_cast<float>(index) / static_cast<float>(count);
+            length = u * lerp(0.1f, 1.0f, t * t);
+        } else {
+            length = separable ? std::sqrt(u) : std::cbrt(u);
+        }
+        kernel.push_back(dir * length);
+    }
+    return kernel;
+}
+
+std::vector<glm::vec2> make_noise(uint32_t seed) {
+    Random rng(0x4015eull ^ (static_cast<uint64_t>(seed) << 32));
+    std::vector<glm::vec2> noise;
+    for (int i = 0; i < 16; ++i) {
+        const float a = rng.next_float() * 6.28318530718f;
+        noise.emplace_back(std::cos(a), std::sin(a));
+    }
+    return noise;
+}
+
+float pixel_hash(uint32_t x, uint32_t y, uint32_t seed) {
+    // PCG-style integer hash; shaders/ao.frag computes exactly this.
+    uint32_t v = x * 1973u + y * 9277u + seed * 26699u;
+    v = v * 747796405u + 2891336453u;
+    uint32_t w = ((v >> ((v >> 28u) + 4u)) ^ v) * 277803737u;
+    w = (w >> 22u) ^ w;
+    return static_cast<float>(w >> 8) * (1.0f / 16777216.0f);
+}
+
+}  // namespace ssao_impl

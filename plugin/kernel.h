@@ -1,0 +1,38 @@
+// kernel.h - the sample kernel, the rotation noise and the per-pixel hash,
+// all from a deterministic seed (our own generator: std::uniform_*_distribution
+// differs between standard libraries, and kernels must be reproducible).
+#pragma once
+
+#include <ssao/ssao.h>
+
+#include <glm/glm.hpp>
+
+#include <vector>
+
+namespace ssao_impl {
+
+// A small, well-mixed generator (splitmix64) giving floats in [0, 1).
+class Random {
+public:
+    explicit Random(uint64_t seed) : state_(seed) {}
+    uint64_t next_u64();
+    float next_float();  // [0, 1)
+
+private:
+    uint64_t state_;
+};
+
+// resolved.sample_count samples in tangent space (z along the normal), |k| <= 1.
+// Hemisphere: z >= 0. Sphere: any z. Separable: the first ceil(N/2) samples in
+// the x-z plane (y = 0), the rest in the y-z plane (x = 0), z >= 0.
+// Accelerating: length u * lerp(0.1, 1, (i/n)^2) (u uniform, i the index
+// within its set of n); uniform: uniform in the volume (area for the planes).
+std::vector<glm::vec3> make_kernel(const ssao_settings& resolved);
+
+// The 4x4 rotation noise: unit vectors (cos a, sin a) by row, y-major (index y*4+x).
+std::vector<glm::vec2> make_noise(uint32_t seed);
+
+// The per-pixel hash the shader uses (same integer arithmetic), in [0, 1).
+float pixel_hash(uint32_t x, uint32_t y, uint32_t seed);
+
+}  // namespace ssao_impl

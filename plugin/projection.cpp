@@ -1,0 +1,97 @@
+#include "projection.h"
+
+#include <cmath>
+#include <limits>
+
+namespace ssao_impl {
+
+ssao_status analyse_projection(const float m[16], ssao_clip_range clip, ProjectionInfo& out,
+                               std::string& why) {
+    for (int i = 0; i < 16; ++i) {
+        if (!std::isfinite(m[i])) {
+            why = "projection element " + std::to_string(i) + " is not finite";
+            return SSAO_ERROR_INVALID_VALUE;
+        }
+    }
+    ProjectionInfo p;
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r) p.proj[c][r] = m[c * 4 + r];
+    p.ndc_per_depth = clip == SSAO_CLIP_ZERO_TO_ONE ? 1.0 : 2.0;
+    const double ndc_lo = clip == SSAO_CLIP_ZERO_TO_ONE ? 0.0 : -1.0;
+
+    // Row 3 (clip w) decides the kind: -z for perspective, constant for ortho.
+    const double w_x = p.proj[0][3], w_y = p.proj[1][3], w_z = p.proj[2][3], w_1 = p.proj[3][3];
+    const double z_z = p.proj[2][2], z_1 = p.proj[3][2];  // clip z = z_z * z + z_1 (x, y terms unused)
+    if (w_x != 0.0 || w_y != 0.0) {
+        why = "the projection's w row depends on view x or y; only perspective and orthographic projections are supported";
+        return SSAO_ERROR_INVALID_PROJECTION;
+    }
+    if (w_z != 0.0 && w_1 == 0.0) {
+        if (w_z > 0.0) {
+            why = "the projection looks down +z (left-handed); view space must be right-handed, camera looking down -z";
+            return SSAO_ERROR_INVALID_PROJECTION;
+        }
+        p.orthographic = false;
+    } else if (w_z == 0.0 && w_1 != 0.0) {
+        p.orthographic = true;
+    } else {
+        why = "the projection is neither perspective (w = -z) nor orthographic (w constant)";
+        return SSAO_ERROR_INVALID_PROJECTION;
+    }
+    if (p.proj[0][0] == 0.0 || p.proj[1][1] == 0.0 || (z_z == 0.0 && p.orthographic) || (z_1 == 0.0 && !p.orthographic)) {
+        why = "the projection is singular (a zero scale on x, y or depth)";
+        return SSAO_ERROR_INVALID_PROJECTION;
+    }
+    const double det = glm::determinant(p.proj);
+    if (!(std::abs(det) > 0.0) || !std::isfinite(det)) {
+        why = "the projection matrix is singular";
+        return SSAO_ERROR_INVALID_PROJECTION;
+    }
+    p.inverse = glm::inverse(p.proj);
+
+    // ndc_z as a function of the view distance t (z = -t).
+    if (!p.orthographic) {
+        const double s = -w_z;                      // w = s * t
+        // ndc(t) = (-z_z * t + z_1) / (s * t) = -z_z / s + z_1 / (s * t)
+        p.reverse_z = z_1 / s > 0.0;                // ndc falls with distance
+        const double a = -z_z / s, b = z_1 / s;     // ndc = a + b / t
+        const double ndc_near = p.reverse_z ? 1.0 : ndc_lo;
+        const double ndc_far = p.reverse_z ? ndc_lo : 1.0;
+        p.near_distance = b / (ndc_near - a);
+        const double denom = ndc_far - a;
+        const double far_t = denom != 0.0 ? b / denom : std::numeric_limits<double>::infinity();
+        // A far plane at or past ~1e7 * near behaves as infinite in float depth.
+        p.infinite_far = !(far_t > 0.0) || far_t > p.near_distance * 1e12 || std::isinf(far_t);
+        p.far_distance = p.infinite_far ? std::numeric_limits<double>::infinity() : far_t;
+        if (!(p.near_distance > 0.0) || !std::isfinite(p.near_distance)) {
+            why = "the projection's near plane is not in front of the camera";
+            return SSAO_ERROR_INVALID_PROJECTION;
+        }
+    } else {
+        // ndc(t) = (-z_z * t + z_1) / w_1
+        const double a = z_1 / w_1, b = -z_z / w_1;  // ndc = a + b t
+        p.reverse_z = b < 0.0;
+        const double ndc_near = p.reverse_z ? 1.0 : ndc_lo;
+        const double ndc_far = p.reverse_z ? ndc_lo : 1.0;
+        p.near_distance = (ndc_near - a) / b;
+        p.far_distance = (ndc_far - a) / b;
+        p.infinite_far = false;
+    }
+    p.sky_depth = p.reverse_z ? 0.0f : 1.0f;
+    out = p;
+    return SSAO_OK;
+}
+
+glm::dvec3 view_position(const ProjectionInfo& p, double ndc_x, double ndc_y, double depth) {
+    const double ndc_z = p.ndc_per_depth == 2.0 ? depth * 2.0 - 1.0 : depth;
+    const glm::dvec4 v = p.inverse * glm::dvec4(ndc_x, ndc_y, ndc_z, 1.0);
+    return glm::dvec3(v) / v.w;
+}
+
+double depth_of(const ProjectionInfo& p, const glm::dvec3& view) {
+    const glm::dvec4 c = p.proj * glm::dvec4(view, 1.0);
+    const double ndc_z = c.z / c.w;
+    return p.ndc_per_depth == 2.0 ? ndc_z * 0.5 + 0.5 : ndc_z;
+}
+
+}  // namespace ssao_impl

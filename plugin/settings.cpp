@@ -1,0 +1,122 @@
+#include "settings.h"
+
+#include <cmath>
+
+namespace ssao_impl {
+
+namespace {
+
+bool finite(float v) { return std::isfinite(v); }
+
+template <typename E>
+bool enum_in(E value, int first, int last) {
+    const int v = static_cast<int>(value);
+    return v >= first && v <= last;
+}
+
+ssao_status fail(std::string& why, ssao_status status, const std::string& what) {
+    why = what;
+    return status;
+}
+
+}  // namespace
+
+ssao_status resolve_settings(const ssao_settings& in, ssao_settings& out, std::string& why) {
+    if (in.size != sizeof(ssao_settings))
+        return fail(why, SSAO_ERROR_STRUCT_SIZE,
+                    "ssao_settings.size is " + std::to_string(in.size) + ", expected " +
+                        std::to_string(sizeof(ssao_settings)));
+    ssao_settings r = in;
+
+    if (r.sample_count == 0) r.sample_count = kDefaultSamples;
+    if (r.sample_count > SSAO_MAX_SAMPLES)
+        return fail(why, SSAO_ERROR_INVALID_VALUE,
+                    "sample_count " + std::to_string(r.sample_count) + " is outside 1..64");
+
+    if (!finite(r.radius) || r.radius < 0.0f)
+        return fail(why, SSAO_ERROR_INVALID_VALUE, "radius must be a finite number > 0");
+    if (r.radius == 0.0f) r.radius = kDefaultRadius;
+
+    if (!finite(r.bias) || r.bias < 0.0f)
+        return fail(why, SSAO_ERROR_INVALID_VALUE, "bias must be a finite number >= 0");
+    if (r.bias == 0.0f) r.bias = kDefaultBiasFraction * r.radius;
+
+    if (!finite(r.depth_step_bias) || r.depth_step_bias < 0.0f || r.depth_step_bias > 1e6f)
+        return fail(why, SSAO_ERROR_INVALID_VALUE, "depth_step_bias must be finite and in [0, 1e6]");
+    if (r.depth_step_bias == 0.0f) r.depth_step_bias = kDefaultDepthStepBias;
+
+    if (!finite(r.power) || r.power < 0.0f || r.power > kMaxPower)
+        return fail(why, SSAO_ERROR_INVALID_VALUE, "power must be finite and in (0, 16]");
+    if (r.power == 0.0f) r.power = kDefaultPower;
+
+    if (!finite(r.strength) || (r.strength != SSAO_STRENGTH_OFF && (r.strength < 0.0f || r.strength > kMaxStrength)))
+        return fail(why, SSAO_ERROR_INVALID_VALUE,
+                    "strength must be in [0, 8] (0 = default 1) or SSAO_STRENGTH_OFF");
+    if (r.strength == 0.0f) r.strength = kDefaultStrength;
+
+    if (!enum_in(r.kernel_shape, 0, SSAO_KERNEL_SEPARABLE))
+        return fail(why, SSAO_ERROR_INVALID_ENUM, "kernel_shape is not an ssao_kernel_shape");
+    if (r.kernel_shape == SSAO_KERNEL_DEFAULT) r.kernel_shape = SSAO_KERNEL_HEMISPHERE;
+
+    if (!enum_in(r.distribution, 0, SSAO_DISTRIBUTION_UNIFORM))
+        return fail(why, SSAO_ERROR_INVALID_ENUM, "distribution is not an ssao_kernel_distribution");
+    if (r.distribution == SSAO_DISTRIBUTION_DEFAULT) r.distribution = SSAO_DISTRIBUTION_ACCELERATING;
+
+    if (!enum_in(r.rotation, 0, SSAO_ROTATION_NONE))
+        return fail(why, SSAO_ERROR_INVALID_ENUM, "rotation is not an ssao_rotation");
+    if (r.rotation == SSAO_ROTATION_DEFAULT) r.rotation = SSAO_ROTATION_NOISE_4X4;
+
+    if (r.seed == 0) r.seed = kDefaultSeed;
+
+    if (!enum_in(r.blur, 0, SSAO_BLUR_NONE))
+        return fail(why, SSAO_ERROR_INVALID_ENUM, "blur is not an ssao_blur");
+    if (r.blur == SSAO_BLUR_DEFAULT) r.blur = SSAO_BLUR_DEPTH_AWARE;
+
+    if (r.blur_radius == 0) r.blur_radius = kDefaultBlurRadius;
+    if (r.blur_radius > SSAO_MAX_BLUR_RADIUS)
+        return fail(why, SSAO_ERROR_INVALID_VALUE,
+                    "blur_radius " + std::to_string(r.blur_radius) + " is outside 1..16");
+
+    if (!finite(r.blur_sigma) || r.blur_sigma < 0.0f || r.blur_sigma > kMaxBlurSigma)
+        return fail(why, SSAO_ERROR_INVALID_VALUE, "blur_sigma must be finite and in (0, 64]");
+    if (r.blur_sigma == 0.0f) r.blur_sigma = static_cast<float>(r.blur_radius);
+
+    if (!finite(r.blur_depth_tolerance) || r.blur_depth_tolerance < 0.0f || r.blur_depth_tolerance > 1.0f)
+        return fail(why, SSAO_ERROR_INVALID_VALUE, "blur_depth_tolerance must be finite and in (0, 1]");
+    if (r.blur_depth_tolerance == 0.0f) r.blur_depth_tolerance = kDefaultBlurTolerance;
+
+    if (!enum_in(r.output_format, 0, SSAO_OUTPUT_R16F))
+        return fail(why, SSAO_ERROR_INVALID_ENUM, "output_format is not an ssao_output_format");
+    if (r.output_format == SSAO_OUTPUT_DEFAULT) r.output_format = SSAO_OUTPUT_R8;
+
+    out = r;
+    return SSAO_OK;
+}
+
+ssao_status preset_settings(ssao_preset preset, ssao_settings& out, std::string& why) {
+    ssao_settings s{};
+    s.size = sizeof(ssao_settings);
+    // Chosen from the Pareto front of error against GPU time (bench/, README).
+    switch (preset) {
+        case SSAO_PRESET_LOW:
+            s.sample_count = 8;
+            s.rotation = SSAO_ROTATION_NOISE_4X4;
+            s.blur = SSAO_BLUR_DEPTH_AWARE;
+            break;
+        case SSAO_PRESET_DEFAULT:
+        case SSAO_PRESET_MEDIUM:
+            break;  // the zeroed struct's defaults
+        case SSAO_PRESET_HIGH:
+            s.sample_count = 32;
+            break;
+        case SSAO_PRESET_ULTRA:
+            s.sample_count = 64;
+            s.blur_radius = 3;
+            break;
+        default:
+            return fail(why, SSAO_ERROR_INVALID_ENUM, "preset is not an ssao_preset");
+    }
+    return resolve_settings(s, out, why);
+}
+
+}  // namespace ssao_impl

@@ -1,0 +1,111 @@
+// The sampling pass: normal-oriented hemisphere (or sphere, or two-plane)
+// SSAO with a range check, a bias that follows the depth format's step, and
+// samples snapped to the texel they read so flat surfaces at grazing angles do
+// not occlude themselves.
+
+uniform sampler2D u_normal_tex;
+uniform sampler2D u_noise_tex;
+
+out vec4 o_ao;
+
+bool finite3(vec3 v) { return all(lessThan(abs(v), vec3(3.0e38))) && !any(isnan(v)); }
+
+// The normal in view space, unit length and facing the camera; a broken normal
+// (zero, NaN, inf) falls back to the direction towards the camera.
+vec3 load_normal(ivec2 px, vec3 to_eye) {
+    vec3 n = texelFetch(u_normal_tex, px, 0).xyz;
+    if (u_modes.w == SSAO_SHADER_PACKING_UNORM) n = n * 2.0 - 1.0;
+    if (u_modes.z == SSAO_SHADER_NORMAL_WORLD) n = mat3(u_normal_to_view) * n;
+    float len2 = dot(n, n);
+    if (!(len2 > 1e-12 && len2 < 1e30)) return to_eye;
+    n *= inversesqrt(len2);
+    // Facing away (back faces, interpolation at silhouettes): remove the part
+    // pointing away, continuously, instead of flipping.
+    float away = dot(n, to_eye);
+    if (away < 0.0) {
+        n -= to_eye * (away * 1.01);
+        n = normalize(n);
+    }
+    return n;
+}
+
+// Orthonormal basis around n (Duff et al. 2017): no degenerate case, unlike
+// Gram-Schmidt against a random vector.
+void basis(vec3 n, out vec3 b1, out vec3 b2) {
+    float s = n.z >= 0.0 ? 1.0 : -1.0;
+    float a = -1.0 / (s + n.z);
+    float b = n.x * n.y * a;
+    b1 = vec3(1.0 + s * n.x * n.x * a, s * b, -s * n.x);
+    b2 = vec3(b, s + n.y * n.y * a, -n.y);
+}
+
+// Same integer arithmetic as plugin/kernel.cpp pixel_hash().
+float pixel_hash(uvec2 p, uint seed) {
+    uint v = p.x * 1973u + p.y * 9277u + seed * 26699u;
+    v = v * 747796405u + 2891336453u;
+    uint w = ((v >> ((v >> 28u) + 4u)) ^ v) * 277803737u;
+    w = (w >> 22u) ^ w;
+    return float(w >> 8) * (1.0 / 16777216.0);
+}
+
+vec2 rotation(ivec2 vpx) {
+    if (u_modes.y == SSAO_SHADER_ROTATION_NOISE)
+        return texelFetch(u_noise_tex, vpx & (SSAO_NOISE_SIZE - 1), 0).xy;  // tiles from the viewport's corner
+    if (u_modes.y == SSAO_SHADER_ROTATION_HASH) {
+        float a = pixel_hash(uvec2(vpx), uint(u_counts.y)) * 6.28318530718;
+        return vec2(cos(a), sin(a));
+    }
+    return vec2(1.0, 0.0);
+}
+
+void main() {
+    ivec2 vpx = ivec2(gl_FragCoord.xy) - u_target_origin;   // viewport-relative pixel
+    ivec2 px = vpx + u_viewport.xy;                          // input texel
+    float d = fetch_depth(px);
+    vec3 P = view_position(px, d);
+    if (is_sky(d) || !finite3(P)) { o_ao = vec4(1.0); return; }
+
+    bool ortho = u_depth.w > 0.5;
+    vec3 to_eye = ortho ? vec3(0.0, 0.0, 1.0) : normalize(-P);
+    vec3 n = load_normal(px, to_eye);
+    vec3 b1, b2;
+    basis(n, b1, b2);
+    vec2 r = rotation(vpx);
+    vec3 T = r.x * b1 + r.y * b2;
+    mat3 TBN = mat3(T, cross(n, T), n);
+
+    float radius = u_ao.x;
+    float step_p = depth_step(px, d);
+    float occlusion = 0.0;
+    float valid = 0.0;
+    int count = u_counts.x;
+    for (int i = 0; i < count; ++i) {
+        vec3 s = P + TBN * u_kernel[i].xyz * radius;
+        vec4 c = u_proj * vec4(s, 1.0);
+        if (!(c.w > 0.0)) continue;                       // behind the eye
+        vec2 spf = (c.xy / c.w * 0.5 + 0.5) * vec2(u_viewport.zw);
+        if (any(lessThan(spf, vec2(0.0))) || any(greaterThanEqual(spf, vec2(u_viewport.zw)))) continue;  // off screen: unknown, not counted
+        ivec2 spx = ivec2(spf) + u_viewport.xy;
+        valid += 1.0;
+        float sd = fetch_depth(spx);
+        if (is_sky(sd)) continue;                         // the sky occludes nothing
+        vec3 Q = view_position(spx, sd);
+        // Snap: the point on the ray through the fetched texel's centre that
+        // lies on the plane through s parallel to the surface at P.
+        float plane = dot(s, n);
+        vec3 sn = s;
+        if (ortho) {
+            if (abs(n.z) > 1e-3) sn = vec3(Q.xy, (plane - n.x * Q.x - n.y * Q.y) / n.z);
+        } else {
+            float qn = dot(Q, n);
+            if (abs(qn) > 1e-3 * length(Q)) sn = Q * (plane / qn);
+        }
+        if (distance(sn, s) > 0.5 * radius) sn = s;
+        float bias = u_ao.y + u_ao.z * (step_p + depth_step(spx, sd));
+        float range = smoothstep(0.0, 1.0, radius / abs(P.z - Q.z));
+        occlusion += (Q.z >= sn.z + bias ? 1.0 : 0.0) * range;
+    }
+    float o = valid > 0.0 ? occlusion / valid : 0.0;
+    float ao = pow(clamp(1.0 - u_ao.w * o, 0.0, 1.0), u_ao2.x);
+    o_ao = vec4(ao, ao, ao, 1.0);
+}

@@ -1,0 +1,39 @@
+// Shared by the AO and blur passes: depth fetch, sky test, view-position
+// reconstruction with the inverse projection, and the depth step used for the
+// format-aware bias.
+
+uniform sampler2D u_depth_tex;
+
+// Where viewport pixel (0,0) lands in the pass's render target.
+uniform ivec2 u_target_origin;
+
+float fetch_depth(ivec2 px) { return texelFetch(u_depth_tex, px, 0).r; }
+
+// The far plane (cleared depth) in either convention: exact comparison, since
+// a cleared buffer holds exactly the clear value.
+bool is_sky(float d) { return d == u_depth.x; }
+
+float ndc_z_of(float d) { return u_ao2.w == 2.0 ? d * 2.0 - 1.0 : d; }
+
+vec2 ndc_xy_of(vec2 viewport_px) { return viewport_px / vec2(u_viewport.zw) * 2.0 - 1.0; }
+
+// View-space position of the centre of input pixel px holding depth d.
+vec3 view_position(ivec2 px, float d) {
+    vec2 ndc = ndc_xy_of(vec2(px - u_viewport.xy) + 0.5);
+    vec4 v = u_inv_proj * vec4(ndc, ndc_z_of(d), 1.0);
+    return v.xyz / v.w;
+}
+
+// View-space z change for one step of the depth format at depth d:
+// |dz/d(ndc)| * d(ndc)/d(depth) * step(depth). Analytic (no difference of two
+// nearly equal reconstructions, which would cancel to 0 in float).
+float depth_step(ivec2 px, float d) {
+    vec2 ndc = ndc_xy_of(vec2(px - u_viewport.xy) + 0.5);
+    vec4 v = u_inv_proj * vec4(ndc, ndc_z_of(d), 1.0);
+    float dA = u_inv_proj[2][2], dB = u_inv_proj[2][3];
+    float dz_dndc = (dA * v.w - v.z * dB) / (v.w * v.w);
+    // unorm formats: a fixed step; float: one ulp of d (2^-23 relative), floored
+    // at the smallest normal so reverse-Z's tiny far values stay meaningful.
+    float ulp = u_depth.y > 0.0 ? u_depth.y : max(abs(d) * 1.1920929e-7, 1.1754944e-38);
+    return abs(dz_dndc) * u_ao2.w * ulp;
+}
