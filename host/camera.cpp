@@ -1,0 +1,150 @@
+// camera.cpp - camera choice and GL matrices shared by ssao-host and ssao-reference.
+#include "camera.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace camera {
+namespace {
+
+bool finite3(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+Camera framed(const scene::Scene& s, float aspect) {
+    Camera c;
+    const glm::vec3 centre = 0.5f * (s.bounds_min + s.bounds_max);
+    float radius = 0.5f * glm::length(s.bounds_max - s.bounds_min);
+    if (!(radius > 0.0f) || !std::isfinite(radius)) radius = 1.0f;
+    const float half_v = 0.5f * c.yfov;
+    const float half_h = std::atan(std::tan(half_v) * std::max(aspect, 1e-3f));
+    const float half = std::min(half_v, half_h);
+    const float dist = radius / std::sin(half) * 1.1f;
+    const glm::vec3 dir = glm::normalize(glm::vec3(0.0f, 0.55f, 1.0f));
+    c.target = centre;
+    c.eye = centre + dir * dist;
+    c.znear = std::max(dist - radius * 1.5f, dist * 0.01f);
+    c.zfar = dist + radius * 2.0f;
+    c.ortho_half_height = radius * 1.1f;
+    return c;
+}
+
+}  // namespace
+
+Camera choose(const scene::Scene& s, float aspect) {
+    if (!(aspect > 0.0f) || !std::isfinite(aspect)) aspect = 1.0f;
+    Camera auto_cam = framed(s, aspect);
+    if (!s.camera) return auto_cam;
+
+    const scene::GltfCamera& g = *s.camera;
+    Camera c = auto_cam;
+    const glm::mat4& m = g.world_from_camera;
+    const glm::vec3 eye(m[3]);
+    glm::vec3 fwd = -glm::vec3(m[2]);
+    glm::vec3 up = glm::vec3(m[1]);
+    if (!finite3(eye) || !finite3(fwd) || !finite3(up) || glm::length(fwd) < 1e-12f || glm::length(up) < 1e-12f)
+        return auto_cam;
+    fwd = glm::normalize(fwd);
+    up = glm::normalize(up);
+    // Target at the distance of the bounds centre along the view direction (any
+    // point on the axis gives the same view matrix).
+    const float along = std::max(glm::dot(0.5f * (s.bounds_min + s.bounds_max) - eye, fwd), 1.0f);
+    c.eye = eye;
+    c.target = eye + fwd * along;
+    c.up = up;
+    c.orthographic = g.orthographic;
+    if (g.orthographic) {
+        if (g.ymag > 0.0f && std::isfinite(g.ymag)) c.ortho_half_height = g.ymag;
+        if (g.znear >= 0.0f && std::isfinite(g.znear)) c.znear = g.znear;
+        if (g.zfar > c.znear && std::isfinite(g.zfar)) c.zfar = g.zfar;
+        else c.zfar = c.znear + 2.0f * (auto_cam.zfar);
+    } else {
+        if (g.yfov > 0.0f && g.yfov < 3.1f) c.yfov = g.yfov;
+        if (g.znear > 0.0f && std::isfinite(g.znear)) c.znear = g.znear;
+        if (g.zfar == 0.0f || std::isinf(g.zfar)) c.zfar = std::numeric_limits<float>::infinity();
+        else if (g.zfar > c.znear && std::isfinite(g.zfar)) c.zfar = g.zfar;
+        else c.zfar = std::numeric_limits<float>::infinity();
+    }
+    return c;
+}
+
+glm::mat4 view_matrix(const Camera& c) {
+    glm::vec3 f = c.target - c.eye;
+    if (!(glm::length(f) > 0.0f)) f = glm::vec3(0.0f, 0.0f, -1.0f);
+    f = glm::normalize(f);
+    glm::vec3 up = c.up;
+    if (!(glm::length(up) > 0.0f)) up = glm::vec3(0.0f, 1.0f, 0.0f);
+    up = glm::normalize(up);
+    if (std::fabs(glm::dot(f, up)) > 0.9999f)  // looking straight along up: pick another up
+        up = std::fabs(f.z) < 0.9f ? glm::vec3(0.0f, 0.0f, 1.0f) : glm::vec3(1.0f, 0.0f, 0.0f);
+    const glm::vec3 s = glm::normalize(glm::cross(f, up));
+    const glm::vec3 u = glm::cross(s, f);
+    glm::mat4 v(1.0f);
+    v[0][0] = s.x; v[1][0] = s.y; v[2][0] = s.z;
+    v[0][1] = u.x; v[1][1] = u.y; v[2][1] = u.z;
+    v[0][2] = -f.x; v[1][2] = -f.y; v[2][2] = -f.z;
+    v[3][0] = -glm::dot(s, c.eye);
+    v[3][1] = -glm::dot(u, c.eye);
+    v[3][2] = glm::dot(f, c.eye);
+    return v;
+}
+
+glm::mat4 projection_matrix(const Camera& c, float aspect) {
+    if (!(aspect > 0.0f) || !std::isfinite(aspect)) aspect = 1.0f;
+    const double n = c.znear > 0.0f ? double(c.znear) : 1e-3;
+    double f = double(c.zfar);
+    const bool infinite = std::isinf(f) || f <= 0.0;
+    glm::mat4 p(0.0f);  // p[col][row]
+    if (c.orthographic) {
+        if (infinite || !(f > n)) f = std::max(n * 1e4, n + 1000.0);
+        const double h = c.ortho_half_height > 0.0f ? double(c.ortho_half_height) : 1.0;
+        const double w = h * double(aspect);
+        p[0][0] = float(1.0 / w);
+        p[1][1] = float(1.0 / h);
+        p[3][3] = 1.0f;
+        const double d = f - n;
+        if (c.reverse_z) {            // [0,1], near -> 1, far -> 0
+            p[2][2] = float(1.0 / d);
+            p[3][2] = float(f / d);
+        } else if (c.zero_to_one) {   // [0,1], near -> 0, far -> 1
+            p[2][2] = float(-1.0 / d);
+            p[3][2] = float(-n / d);
+        } else {                      // [-1,1]
+            p[2][2] = float(-2.0 / d);
+            p[3][2] = float(-(f + n) / d);
+        }
+        return p;
+    }
+    const double t = 1.0 / std::tan(0.5 * double(c.yfov));
+    p[0][0] = float(t / double(aspect));
+    p[1][1] = float(t);
+    p[2][3] = -1.0f;
+    if (!infinite && !(f > n)) f = n * 1e4;
+    if (c.reverse_z) {                // [0,1], near -> 1, far -> 0 (infinite: depth = n / z)
+        if (infinite) {
+            p[2][2] = 0.0f;
+            p[3][2] = float(n);
+        } else {
+            p[2][2] = float(n / (f - n));
+            p[3][2] = float(f * n / (f - n));
+        }
+    } else if (c.zero_to_one) {       // [0,1], near -> 0, far -> 1
+        if (infinite) {
+            p[2][2] = -1.0f;
+            p[3][2] = float(-n);
+        } else {
+            p[2][2] = float(f / (n - f));
+            p[3][2] = float(f * n / (n - f));
+        }
+    } else {                          // [-1,1]
+        if (infinite) {
+            p[2][2] = -1.0f;
+            p[3][2] = float(-2.0 * n);
+        } else {
+            p[2][2] = float((f + n) / (n - f));
+            p[3][2] = float(2.0 * f * n / (n - f));
+        }
+    }
+    return p;
+}
+
+}  // namespace camera

@@ -1,0 +1,518 @@
+// scene.cpp - glTF 2.0 loading (.gltf and .glb) through tinygltf, flattened to
+// one world-space triangle list. See scene.h.
+//
+// Every accessor is bounds-checked here before it is read (tinygltf does not
+// check accessors against their buffers), so a malformed file gives an error
+// sentence, never a crash.
+
+#include "scene.h"
+
+#if defined(__GNUC__)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wshadow"
+#pragma GCC diagnostic ignored "-Wunused-parameter"
+#pragma GCC diagnostic ignored "-Wpedantic"
+#endif
+#include <tiny_gltf.h>
+#if defined(__GNUC__)
+#pragma GCC diagnostic pop
+#endif
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <functional>
+#include <limits>
+#include <sstream>
+
+namespace scene {
+namespace {
+
+// Images are never needed: accept anything so scenes with missing or
+// undecodable textures still load.
+bool ignore_image(tinygltf::Image*, const int, std::string*, std::string*, int, int,
+                  const unsigned char*, int, void*) {
+    return true;
+}
+
+std::string trim_tinygltf_message(std::string s) {
+    while (!s.empty() && (s.back() == '\n' || s.back() == '\r' || s.back() == ' ')) s.pop_back();
+    for (char& c : s)
+        if (c == '\n' || c == '\r') c = ' ';
+    return s;
+}
+
+bool ends_with_ci(const std::string& s, const std::string& suffix) {
+    if (s.size() < suffix.size()) return false;
+    for (size_t i = 0; i < suffix.size(); ++i) {
+        char a = s[s.size() - suffix.size() + i];
+        if (a >= 'A' && a <= 'Z') a = char(a - 'A' + 'a');
+        if (a != suffix[i]) return false;
+    }
+    return true;
+}
+
+uint32_t read_u32le(const unsigned char* p) {
+    return uint32_t(p[0]) | (uint32_t(p[1]) << 8) | (uint32_t(p[2]) << 16) | (uint32_t(p[3]) << 24);
+}
+
+// Checks the GLB container (header and chunk table) against the file size.
+// Returns an empty string when it is sound.
+std::string check_glb(const std::vector<unsigned char>& bytes) {
+    if (bytes.size() < 12) return "is too short to be a glTF binary (" + std::to_string(bytes.size()) + " bytes)";
+    if (std::memcmp(bytes.data(), "glTF", 4) != 0) return "does not start with the glTF binary magic";
+    const uint32_t version = read_u32le(bytes.data() + 4);
+    if (version != 2) return "is a glTF binary of version " + std::to_string(version) + ", not 2";
+    const uint64_t length = read_u32le(bytes.data() + 8);
+    if (length > bytes.size())
+        return "is truncated: its header says " + std::to_string(length) + " bytes but the file has " +
+               std::to_string(bytes.size());
+    uint64_t pos = 12;
+    int chunk = 0;
+    while (pos < length) {
+        if (pos + 8 > length) return "is truncated inside a chunk header";
+        const uint64_t chunk_len = read_u32le(bytes.data() + pos);
+        const uint32_t type = read_u32le(bytes.data() + pos + 4);
+        if (pos + 8 + chunk_len > length) return "is truncated: a chunk runs past the end of the file";
+        if (chunk == 0 && type != 0x4E4F534Au) return "does not begin with a JSON chunk";
+        pos += 8 + chunk_len;
+        ++chunk;
+    }
+    if (chunk == 0) return "has no JSON chunk";
+    return {};
+}
+
+size_t component_size(int component_type) {
+    switch (component_type) {
+        case TINYGLTF_COMPONENT_TYPE_BYTE:
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return 1;
+        case TINYGLTF_COMPONENT_TYPE_SHORT:
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return 2;
+        case TINYGLTF_COMPONENT_TYPE_INT:
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
+        case TINYGLTF_COMPONENT_TYPE_FLOAT: return 4;
+        case TINYGLTF_COMPONENT_TYPE_DOUBLE: return 8;
+        default: return 0;
+    }
+}
+
+int component_count(int type) {
+    switch (type) {
+        case TINYGLTF_TYPE_SCALAR: return 1;
+        case TINYGLTF_TYPE_VEC2: return 2;
+        case TINYGLTF_TYPE_VEC3: return 3;
+        case TINYGLTF_TYPE_VEC4: return 4;
+        default: return 0;
+    }
+}
+
+template <typename T>
+T load_unaligned(const unsigned char* p) {
+    T v;
+    std::memcpy(&v, p, sizeof(T));
+    return v;
+}
+
+double read_component(const unsigned char* p, int component_type, bool normalized) {
+    switch (component_type) {
+        case TINYGLTF_COMPONENT_TYPE_BYTE: {
+            const double v = load_unaligned<int8_t>(p);
+            return normalized ? std::max(v / 127.0, -1.0) : v;
+        }
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: {
+            const double v = load_unaligned<uint8_t>(p);
+            return normalized ? v / 255.0 : v;
+        }
+        case TINYGLTF_COMPONENT_TYPE_SHORT: {
+            const double v = load_unaligned<int16_t>(p);
+            return normalized ? std::max(v / 32767.0, -1.0) : v;
+        }
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
+            const double v = load_unaligned<uint16_t>(p);
+            return normalized ? v / 65535.0 : v;
+        }
+        case TINYGLTF_COMPONENT_TYPE_INT: return load_unaligned<int32_t>(p);
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: return load_unaligned<uint32_t>(p);
+        case TINYGLTF_COMPONENT_TYPE_FLOAT: return load_unaligned<float>(p);
+        case TINYGLTF_COMPONENT_TYPE_DOUBLE: return load_unaligned<double>(p);
+        default: return 0.0;
+    }
+}
+
+class Loader {
+public:
+    Loader(const tinygltf::Model& m, const std::string& path) : model_(m), path_(path) {}
+
+    std::string error;
+
+    bool fail(const std::string& what) {
+        if (error.empty()) error = path_ + ": " + what + ".";
+        return false;
+    }
+
+    // Locates accessor `index`: base pointer, stride and element size, after
+    // checking that every element lies inside its buffer.
+    bool locate(int index, const char* what, const unsigned char*& base, size_t& stride, size_t& elem,
+                const tinygltf::Accessor*& out) {
+        const std::string name = std::string(what) + " accessor " + std::to_string(index);
+        if (index < 0 || size_t(index) >= model_.accessors.size())
+            return fail("refers to " + name + ", which does not exist");
+        const tinygltf::Accessor& a = model_.accessors[size_t(index)];
+        out = &a;
+        if (a.sparse.isSparse) return fail(name + " is sparse, which this loader does not support");
+        const size_t csize = component_size(a.componentType);
+        const int ccount = component_count(a.type);
+        if (csize == 0 || ccount == 0) return fail(name + " has an unsupported component type or element type");
+        elem = csize * size_t(ccount);
+        if (a.count == 0) {
+            base = nullptr;
+            stride = elem;
+            return true;
+        }
+        if (a.bufferView < 0 || size_t(a.bufferView) >= model_.bufferViews.size())
+            return fail(name + " has no valid bufferView (index " + std::to_string(a.bufferView) + ")");
+        const tinygltf::BufferView& bv = model_.bufferViews[size_t(a.bufferView)];
+        if (bv.buffer < 0 || size_t(bv.buffer) >= model_.buffers.size())
+            return fail("bufferView " + std::to_string(a.bufferView) + " refers to buffer " +
+                        std::to_string(bv.buffer) + ", which does not exist");
+        const tinygltf::Buffer& buf = model_.buffers[size_t(bv.buffer)];
+        const uint64_t buf_size = buf.data.size();
+        if (uint64_t(bv.byteOffset) > buf_size || uint64_t(bv.byteLength) > buf_size - bv.byteOffset)
+            return fail("bufferView " + std::to_string(a.bufferView) + " (offset " + std::to_string(bv.byteOffset) +
+                        ", length " + std::to_string(bv.byteLength) + ") points past the end of buffer " +
+                        std::to_string(bv.buffer) + " (" + std::to_string(buf_size) + " bytes)");
+        stride = bv.byteStride != 0 ? bv.byteStride : elem;
+        if (stride < elem) return fail("bufferView " + std::to_string(a.bufferView) + " has a byteStride smaller than its elements");
+        // Last byte read: byteOffset + stride * (count - 1) + elem, in 64-bit without overflow.
+        const uint64_t count = a.count;
+        if (count > (uint64_t(1) << 40) / stride) return fail(name + " has an absurd count");
+        const uint64_t end = uint64_t(a.byteOffset) + uint64_t(stride) * (count - 1) + elem;
+        if (end > bv.byteLength)
+            return fail(name + " (" + std::to_string(a.count) + " elements from offset " +
+                        std::to_string(a.byteOffset) + ") points past the end of its bufferView " +
+                        std::to_string(a.bufferView) + " (" + std::to_string(bv.byteLength) + " bytes)");
+        base = buf.data.data() + bv.byteOffset + a.byteOffset;
+        return true;
+    }
+
+    bool read_vec3(int index, const char* what, std::vector<glm::dvec3>& out) {
+        const unsigned char* base = nullptr;
+        size_t stride = 0, elem = 0;
+        const tinygltf::Accessor* a = nullptr;
+        if (!locate(index, what, base, stride, elem, a)) return false;
+        if (a->type != TINYGLTF_TYPE_VEC3)
+            return fail(std::string(what) + " accessor " + std::to_string(index) + " is not of type VEC3");
+        const size_t csize = component_size(a->componentType);
+        out.resize(a->count);
+        for (size_t i = 0; i < a->count; ++i) {
+            const unsigned char* p = base + i * stride;
+            for (int c = 0; c < 3; ++c) out[i][c] = read_component(p + size_t(c) * csize, a->componentType, a->normalized);
+        }
+        return true;
+    }
+
+    bool read_indices(int index, std::vector<uint32_t>& out) {
+        const unsigned char* base = nullptr;
+        size_t stride = 0, elem = 0;
+        const tinygltf::Accessor* a = nullptr;
+        if (!locate(index, "index", base, stride, elem, a)) return false;
+        if (a->type != TINYGLTF_TYPE_SCALAR)
+            return fail("index accessor " + std::to_string(index) + " is not of type SCALAR");
+        if (a->componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
+            a->componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
+            a->componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)
+            return fail("index accessor " + std::to_string(index) + " is not of an unsigned integer type");
+        out.resize(a->count);
+        for (size_t i = 0; i < a->count; ++i) out[i] = uint32_t(read_component(base + i * stride, a->componentType, false));
+        return true;
+    }
+
+    bool add_primitive(const tinygltf::Primitive& prim, int mesh_index, size_t prim_index, const glm::dmat4& world) {
+        const std::string where = "mesh " + std::to_string(mesh_index) + " primitive " + std::to_string(prim_index);
+        const int mode = prim.mode < 0 ? TINYGLTF_MODE_TRIANGLES : prim.mode;
+        if (mode == TINYGLTF_MODE_POINTS) return fail(where + " draws points, but only triangles can be shaded");
+        if (mode == TINYGLTF_MODE_LINE || mode == TINYGLTF_MODE_LINE_LOOP || mode == TINYGLTF_MODE_LINE_STRIP)
+            return fail(where + " draws lines, but only triangles can be shaded");
+        if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP && mode != TINYGLTF_MODE_TRIANGLE_FAN)
+            return fail(where + " has an unknown mode " + std::to_string(mode));
+        if (prim.extensions.count("KHR_draco_mesh_compression"))
+            return fail(where + " is Draco-compressed, which this loader does not support");
+        auto pos_it = prim.attributes.find("POSITION");
+        if (pos_it == prim.attributes.end()) return fail(where + " has no POSITION attribute");
+
+        std::vector<glm::dvec3> pos;
+        if (!read_vec3(pos_it->second, "POSITION", pos)) return false;
+        std::vector<glm::dvec3> nrm;
+        auto nrm_it = prim.attributes.find("NORMAL");
+        if (nrm_it != prim.attributes.end()) {
+            if (!read_vec3(nrm_it->second, "NORMAL", nrm)) return false;
+            if (nrm.size() != pos.size())
+                return fail(where + " has " + std::to_string(nrm.size()) + " normals for " + std::to_string(pos.size()) + " positions");
+        }
+        std::vector<uint32_t> idx;
+        if (prim.indices >= 0) {
+            if (!read_indices(prim.indices, idx)) return false;
+            for (size_t i = 0; i < idx.size(); ++i)
+                if (idx[i] >= pos.size())
+                    return fail(where + " has index " + std::to_string(idx[i]) + " out of range (" +
+                                std::to_string(pos.size()) + " vertices)");
+        } else {
+            idx.resize(pos.size());
+            for (size_t i = 0; i < idx.size(); ++i) idx[i] = uint32_t(i);
+        }
+
+        // To a triangle list.
+        std::vector<uint32_t> tri;
+        if (mode == TINYGLTF_MODE_TRIANGLES) {
+            tri.assign(idx.begin(), idx.begin() + std::ptrdiff_t(idx.size() - idx.size() % 3));
+        } else if (mode == TINYGLTF_MODE_TRIANGLE_STRIP) {
+            for (size_t i = 2; i < idx.size(); ++i) {
+                if (i % 2 == 0) tri.insert(tri.end(), {idx[i - 2], idx[i - 1], idx[i]});
+                else tri.insert(tri.end(), {idx[i - 1], idx[i - 2], idx[i]});
+            }
+        } else {
+            for (size_t i = 2; i < idx.size(); ++i) tri.insert(tri.end(), {idx[0], idx[i - 1], idx[i]});
+        }
+        if (tri.empty()) return true;
+
+        // Transform.
+        const glm::dmat3 normal_matrix = glm::transpose(glm::inverse(glm::dmat3(world)));
+        const bool mirrored = glm::determinant(glm::dmat3(world)) < 0.0;
+        const uint32_t base = uint32_t(out_.positions.size());
+        if (pos.size() > size_t(std::numeric_limits<uint32_t>::max()) - base) return fail("has too many vertices");
+        std::vector<glm::vec3> wpos(pos.size());
+        for (size_t i = 0; i < pos.size(); ++i) {
+            const glm::dvec4 w = world * glm::dvec4(pos[i], 1.0);
+            const glm::dvec3 p = glm::dvec3(w) / w.w;
+            if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z) ||
+                std::fabs(p.x) > 1e30 || std::fabs(p.y) > 1e30 || std::fabs(p.z) > 1e30)
+                return fail(where + " has a non-finite vertex position (vertex " + std::to_string(i) + ")");
+            wpos[i] = glm::vec3(p);
+        }
+        if (mirrored)
+            for (size_t t = 0; t + 2 < tri.size(); t += 3) std::swap(tri[t + 1], tri[t + 2]);
+
+        // Area-weighted normals from the (world-space, winding-corrected) triangles.
+        std::vector<glm::dvec3> computed(pos.size(), glm::dvec3(0.0));
+        for (size_t t = 0; t + 2 < tri.size(); t += 3) {
+            const glm::dvec3 a = wpos[tri[t]], b = wpos[tri[t + 1]], c = wpos[tri[t + 2]];
+            const glm::dvec3 n = glm::cross(b - a, c - a);  // length = 2 * area
+            computed[tri[t]] += n;
+            computed[tri[t + 1]] += n;
+            computed[tri[t + 2]] += n;
+        }
+        std::vector<glm::vec3> wnrm(pos.size());
+        for (size_t i = 0; i < pos.size(); ++i) {
+            glm::dvec3 n(0.0);
+            if (!nrm.empty()) n = normal_matrix * nrm[i];
+            double len = glm::length(n);
+            if (!(len > 1e-20) || !std::isfinite(len)) {
+                n = computed[i];
+                len = glm::length(n);
+            }
+            wnrm[i] = (len > 1e-30 && std::isfinite(len)) ? glm::vec3(n / len) : glm::vec3(0.0f, 1.0f, 0.0f);
+        }
+
+        out_.positions.insert(out_.positions.end(), wpos.begin(), wpos.end());
+        out_.normals.insert(out_.normals.end(), wnrm.begin(), wnrm.end());
+        out_.indices.reserve(out_.indices.size() + tri.size());
+        for (uint32_t i : tri) out_.indices.push_back(base + i);
+        return true;
+    }
+
+    static glm::dmat4 local_matrix(const tinygltf::Node& n) {
+        if (n.matrix.size() == 16) {
+            glm::dmat4 m;
+            for (int c = 0; c < 4; ++c)
+                for (int r = 0; r < 4; ++r) m[c][r] = n.matrix[size_t(c * 4 + r)];
+            return m;
+        }
+        glm::dmat4 t(1.0), r(1.0), s(1.0);
+        if (n.translation.size() == 3) t = glm::translate(glm::dmat4(1.0), glm::dvec3(n.translation[0], n.translation[1], n.translation[2]));
+        if (n.rotation.size() == 4) {
+            glm::dquat q(n.rotation[3], n.rotation[0], n.rotation[1], n.rotation[2]);  // w, x, y, z
+            const double len = glm::length(q);
+            if (len > 0.0 && std::isfinite(len)) r = glm::mat4_cast(q / len);
+        }
+        if (n.scale.size() == 3) s = glm::scale(glm::dmat4(1.0), glm::dvec3(n.scale[0], n.scale[1], n.scale[2]));
+        return t * r * s;
+    }
+
+    bool visit(int node_index, const glm::dmat4& parent, int depth) {
+        if (node_index < 0 || size_t(node_index) >= model_.nodes.size())
+            return fail("refers to node " + std::to_string(node_index) + ", which does not exist");
+        if (depth > 256) return fail("has a node hierarchy deeper than 256 levels (a cycle?)");
+        const tinygltf::Node& node = model_.nodes[size_t(node_index)];
+        const glm::dmat4 world = parent * local_matrix(node);
+        if (node.mesh >= 0) {
+            if (size_t(node.mesh) >= model_.meshes.size())
+                return fail("node " + std::to_string(node_index) + " refers to mesh " + std::to_string(node.mesh) + ", which does not exist");
+            const tinygltf::Mesh& mesh = model_.meshes[size_t(node.mesh)];
+            for (size_t p = 0; p < mesh.primitives.size(); ++p)
+                if (!add_primitive(mesh.primitives[p], node.mesh, p, world)) return false;
+        }
+        if (node.camera >= 0 && !camera_) {
+            if (size_t(node.camera) >= model_.cameras.size())
+                return fail("node " + std::to_string(node_index) + " refers to camera " + std::to_string(node.camera) + ", which does not exist");
+            const tinygltf::Camera& c = model_.cameras[size_t(node.camera)];
+            GltfCamera gc;
+            gc.world_from_camera = glm::mat4(world);
+            if (c.type == "orthographic") {
+                gc.orthographic = true;
+                gc.xmag = float(c.orthographic.xmag);
+                gc.ymag = float(c.orthographic.ymag);
+                gc.znear = float(c.orthographic.znear);
+                gc.zfar = float(c.orthographic.zfar);
+            } else {
+                gc.yfov = float(c.perspective.yfov);
+                gc.znear = float(c.perspective.znear);
+                gc.zfar = float(c.perspective.zfar);
+                gc.aspect = float(c.perspective.aspectRatio);
+            }
+            camera_ = gc;
+        }
+        for (int child : node.children)
+            if (!visit(child, world, depth + 1)) return false;
+        return true;
+    }
+
+    const tinygltf::Model& model_;
+    std::string path_;
+    Mesh out_;
+    std::optional<GltfCamera> camera_;
+};
+
+void read_hints(const tinygltf::Value& extras, AoHints& h) {
+    if (!extras.IsObject() || !extras.Has("ssao")) return;
+    const tinygltf::Value& s = extras.Get("ssao");
+    if (!s.IsObject()) return;
+    auto number = [&](const char* key) -> std::optional<double> {
+        if (!s.Has(key)) return std::nullopt;
+        const tinygltf::Value& v = s.Get(key);
+        if (!v.IsNumber()) return std::nullopt;
+        const double d = v.GetNumberAsDouble();
+        if (!std::isfinite(d)) return std::nullopt;
+        return d;
+    };
+    if (auto v = number("radius"); v && !h.radius) h.radius = float(*v);
+    if (auto v = number("samples"); v && !h.samples && *v >= 0 && *v <= 1e6) h.samples = int(*v);
+    if (auto v = number("bias"); v && !h.bias) h.bias = float(*v);
+    if (auto v = number("power"); v && !h.power) h.power = float(*v);
+    if (!h.blur && s.Has("blur") && s.Get("blur").IsString()) h.blur = s.Get("blur").Get<std::string>();
+}
+
+}  // namespace
+
+bool load(const std::string& path, Scene& out, std::string& error) {
+    error.clear();
+    std::ifstream f(path, std::ios::binary);
+    if (!f) {
+        error = path + ": cannot open the file (missing or unreadable).";
+        return false;
+    }
+    std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+    if (f.bad()) {
+        error = path + ": cannot read the file.";
+        return false;
+    }
+    if (bytes.empty()) {
+        error = path + ": the file is empty.";
+        return false;
+    }
+    if (bytes.size() > (size_t(1) << 31)) {
+        error = path + ": the file is larger than 2 GiB.";
+        return false;
+    }
+    // Binary when it says so, by magic or by extension; JSON otherwise.
+    const bool binary = (bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0) || ends_with_ci(path, ".glb");
+    if (binary) {
+        const std::string why = check_glb(bytes);
+        if (!why.empty()) {
+            error = path + ": the file " + why + ".";
+            return false;
+        }
+    }
+
+    std::string base_dir;
+    const size_t slash = path.find_last_of("/\\");
+    if (slash != std::string::npos) base_dir = path.substr(0, slash);
+
+    tinygltf::TinyGLTF gltf;
+    gltf.SetImageLoader(ignore_image, nullptr);
+    tinygltf::Model model;
+    std::string err, warn;
+    bool ok = false;
+    try {
+        if (binary)
+            ok = gltf.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(), unsigned(bytes.size()), base_dir);
+        else
+            ok = gltf.LoadASCIIFromString(&model, &err, &warn, reinterpret_cast<const char*>(bytes.data()),
+                                          unsigned(bytes.size()), base_dir);
+    } catch (const std::exception& e) {
+        ok = false;
+        err = e.what();
+    }
+    if (!ok) {
+        err = trim_tinygltf_message(err);
+        error = path + ": tinygltf could not parse it" + (err.empty() ? std::string() : " (" + err + ")") + ".";
+        return false;
+    }
+
+    Loader loader(model, path);
+    try {
+        std::vector<int> roots;
+        int scene_index = model.defaultScene >= 0 ? model.defaultScene : 0;
+        if (!model.scenes.empty()) {
+            if (size_t(scene_index) >= model.scenes.size()) {
+                error = path + ": the default scene " + std::to_string(scene_index) + " does not exist.";
+                return false;
+            }
+            roots = model.scenes[size_t(scene_index)].nodes;
+        } else {
+            // No scene at all: draw every root node (those that are nobody's child).
+            std::vector<bool> is_child(model.nodes.size(), false);
+            for (const auto& n : model.nodes)
+                for (int c : n.children)
+                    if (c >= 0 && size_t(c) < is_child.size()) is_child[size_t(c)] = true;
+            for (size_t i = 0; i < model.nodes.size(); ++i)
+                if (!is_child[i]) roots.push_back(int(i));
+        }
+        for (int r : roots)
+            if (!loader.visit(r, glm::dmat4(1.0), 0)) {
+                error = loader.error;
+                return false;
+            }
+        Scene s;
+        s.mesh = std::move(loader.out_);
+        if (s.mesh.indices.empty()) {
+            error = path + ": the scene has nothing to draw (no triangles reachable from the default scene).";
+            return false;
+        }
+        glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
+        for (uint32_t i : s.mesh.indices) {
+            lo = glm::min(lo, s.mesh.positions[i]);
+            hi = glm::max(hi, s.mesh.positions[i]);
+        }
+        s.bounds_min = lo;
+        s.bounds_max = hi;
+        s.camera = loader.camera_;
+        if (!model.scenes.empty()) read_hints(model.scenes[size_t(scene_index)].extras, s.hints);
+        read_hints(model.extras, s.hints);
+        read_hints(model.asset.extras, s.hints);
+        out = std::move(s);
+    } catch (const std::bad_alloc&) {
+        error = path + ": out of memory while flattening the scene.";
+        return false;
+    } catch (const std::exception& e) {
+        error = path + ": unexpected failure while flattening the scene (" + std::string(e.what()) + ").";
+        return false;
+    }
+    return true;
+}
+
+}  // namespace scene
