@@ -67,6 +67,42 @@ Camera choose(const scene::Scene& s, float aspect) {
     return c;
 }
 
+Camera apply(const scene::Scene& s, Camera c, const Overrides& o) {
+    if (o.eye) c.eye = *o.eye;
+    if (o.target) c.target = *o.target;
+    if (o.fov_deg && *o.fov_deg > 0.0f && *o.fov_deg < 180.0f) {
+        c.yfov = glm::radians(*o.fov_deg);
+        c.orthographic = false;
+    }
+    if (o.ortho_half_height && *o.ortho_half_height > 0.0f) {
+        c.ortho_half_height = *o.ortho_half_height;
+        c.orthographic = true;
+    }
+    if ((o.eye || o.target) && !(o.znear && o.zfar)) {
+        // Refit to the bounding sphere as seen along the new view direction.
+        const glm::vec3 centre = 0.5f * (s.bounds_min + s.bounds_max);
+        float radius = 0.5f * glm::length(s.bounds_max - s.bounds_min);
+        if (!(radius > 0.0f) || !std::isfinite(radius)) radius = 1.0f;
+        glm::vec3 f = c.target - c.eye;
+        f = glm::length(f) > 0.0f ? glm::normalize(f) : glm::vec3(0.0f, 0.0f, -1.0f);
+        const float d = glm::dot(centre - c.eye, f);
+        const float far_fit = std::max(d + radius * 1.5f, radius * 0.01f);
+        const float near_fit = std::max(d - radius * 1.5f, far_fit * 0.001f);
+        if (!o.znear) c.znear = c.orthographic ? std::max(d - radius * 1.5f, 0.0f) : near_fit;
+        if (!o.zfar) c.zfar = far_fit;
+        if (c.orthographic && !o.znear && c.znear <= 0.0f) c.znear = 0.0f;
+    }
+    if (o.znear) c.znear = *o.znear;
+    if (o.zfar) c.zfar = *o.zfar;
+    if (c.orthographic && std::isinf(c.zfar)) c.zfar = c.znear + 1e4f;
+    if (!(c.zfar > c.znear)) c.zfar = c.znear * 2.0f + 1.0f;
+    if (o.reverse_z) {
+        c.reverse_z = true;
+        c.zero_to_one = true;
+    }
+    return c;
+}
+
 glm::mat4 view_matrix(const Camera& c) {
     glm::vec3 f = c.target - c.eye;
     if (!(glm::length(f) > 0.0f)) f = glm::vec3(0.0f, 0.0f, -1.0f);
@@ -90,12 +126,12 @@ glm::mat4 view_matrix(const Camera& c) {
 
 glm::mat4 projection_matrix(const Camera& c, float aspect) {
     if (!(aspect > 0.0f) || !std::isfinite(aspect)) aspect = 1.0f;
-    const double n = c.znear > 0.0f ? double(c.znear) : 1e-3;
+    const double n = c.orthographic ? double(c.znear) : (c.znear > 0.0f ? double(c.znear) : 1e-3);
     double f = double(c.zfar);
     const bool infinite = std::isinf(f) || f <= 0.0;
     glm::mat4 p(0.0f);  // p[col][row]
     if (c.orthographic) {
-        if (infinite || !(f > n)) f = std::max(n * 1e4, n + 1000.0);
+        if (infinite || !(f > n)) f = n + std::max(std::fabs(n) * 1e4, 1000.0);
         const double h = c.ortho_half_height > 0.0f ? double(c.ortho_half_height) : 1.0;
         const double w = h * double(aspect);
         p[0][0] = float(1.0 / w);

@@ -5,6 +5,8 @@
 
 #include <glm/glm.hpp>
 
+#include <optional>
+
 namespace camera {
 
 struct Camera {
@@ -23,6 +25,20 @@ struct Camera {
 // The scene's own camera if it has one, otherwise one framed from the bounds
 // (looking at the centre from above and in front, near/far fitted to them).
 Camera choose(const scene::Scene& s, float aspect);
+
+// Command-line overrides (--eye, --target, --fov, --near, --far, --ortho,
+// --reverse-z), applied the same way by ssao-host and ssao-reference.
+struct Overrides {
+    std::optional<glm::vec3> eye, target;
+    std::optional<float> fov_deg;            // perspective vertical fov, degrees
+    std::optional<float> znear, zfar;        // zfar may be +infinity (perspective)
+    std::optional<float> ortho_half_height;  // switches to orthographic
+    bool reverse_z = false;                  // sets reverse_z and zero_to_one
+};
+
+// `c` with the overrides applied. When the eye or the target moved and near/far
+// were not given, near and far are refitted to the scene's bounds (as choose does).
+Camera apply(const scene::Scene& s, Camera c, const Overrides& o);
 
 glm::mat4 view_matrix(const Camera& c);
 // Column-major GL projection honouring orthographic, reverse_z, zero_to_one and
