@@ -1,0 +1,325 @@
+// EGL integration tests of the plugin on Mesa llvmpipe, loaded with dlopen as
+// a host would: analytic oracles, a CPU implementation of the same formula,
+// GL state restoration, a GL 3.3 core context, and KHR_debug error capture.
+#define DOCTEST_CONFIG_IMPLEMENT_WITH_MAIN
+#include <doctest/doctest.h>
+
+#include "cpu_ssao.h"
+#include "gl_fixture.h"
+#include "gl_state_snapshot.h"
+#include "test_scenes.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+using analytic::GBuffer;
+using analytic::Scene;
+
+using testscenes::crease_scene;
+using testscenes::kCreaseView;
+using testscenes::kFov;
+using testscenes::make;
+
+TEST_CASE("a plane facing the camera stays unoccluded") {
+    testgl::Fixture fx;
+    Scene scene;
+    scene.add_quad({-100, -100, -5}, {200, 0, 0}, {0, 200, 0});
+    const auto proj = analytic::perspective(kFov, 1.0, 0.1, 100.0);
+    const GBuffer g = analytic::render(scene, proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, 64, 64);
+    for (ssao_kernel_shape shape : {SSAO_KERNEL_HEMISPHERE, SSAO_KERNEL_SEPARABLE}) {
+        ssao_settings s = make(32, SSAO_BLUR_DEFAULT);
+        s.kernel_shape = shape;
+        fx.settings(s);
+        const auto r = fx.run(g, proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE);
+        REQUIRE(r.status == SSAO_OK);
+        CHECK(*std::min_element(r.ao.begin(), r.ao.end()) >= 0.98f);
+    }
+    CHECK(fx.gl_errors().empty());
+}
+
+TEST_CASE("the sphere kernel gives the Crytek look: a flat plane reads about one half") {
+    testgl::Fixture fx;
+    Scene scene;
+    scene.add_quad({-100, -100, -5}, {200, 0, 0}, {0, 200, 0});
+    const auto proj = analytic::perspective(kFov, 1.0, 0.1, 100.0);
+    const GBuffer g = analytic::render(scene, proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, 48, 48);
+    ssao_settings s = make(64, SSAO_BLUR_NONE);
+    s.kernel_shape = SSAO_KERNEL_SPHERE;
+    s.distribution = SSAO_DISTRIBUTION_UNIFORM;
+    s.bias = 1e-5f;  // count every sample below the surface
+    fx.settings(s);
+    const auto r = fx.run(g, proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE);
+    REQUIRE(r.status == SSAO_OK);
+    double mean = 0;
+    for (float v : r.ao) mean += v;
+    mean /= r.ao.size();
+    CHECK(mean == doctest::Approx(0.5).epsilon(0.1));
+    CHECK(fx.gl_errors().empty());
+}
+
+TEST_CASE("a 90-degree crease darkens towards the edge, monotonically") {
+    testgl::Fixture fx;
+    const Scene scene = crease_scene();
+    // Camera at the origin looking down the -z axis a little downwards.
+    const auto proj = analytic::perspective(kFov, 1.0, 0.1, 100.0);
+    const GBuffer g = analytic::render(scene, proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, 96, 96);
+    const double radius = 1.5;
+    ssao_settings s = make(32, SSAO_BLUR_DEFAULT);
+    s.radius = static_cast<float>(radius);
+    fx.settings(s);
+    const auto r = fx.run(g, proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE);
+    REQUIRE(r.status == SSAO_OK);
+    // Floor pixels, binned by their distance to the crease (the wall at z=-6),
+    // out to a little beyond the radius.
+    const int bins = 10;
+    std::vector<double> sum(bins, 0.0), count(bins, 0.0);
+    for (int y = 0; y < g.height; ++y)
+        for (int x = 8; x < g.width - 8; ++x) {
+            if (g.sky(x, y)) continue;
+            const glm::dvec3 p = glm::dvec3(glm::inverse(kCreaseView) *
+                                             glm::dvec4(g.position[static_cast<size_t>(y) * g.width + x], 1.0));
+            if (std::abs(p.y) > 1e-6) continue;  // floor only
+            const double dist = p.z + 6.0;
+            const int b = static_cast<int>(dist / (radius / 8));
+            if (b < 0 || b >= bins) continue;
+            sum[b] += r.ao[static_cast<size_t>(y) * g.width + x];
+            count[b] += 1;
+        }
+    std::vector<double> mean(bins);
+    for (int b = 0; b < bins; ++b) {
+        CAPTURE(b);
+        REQUIRE(count[b] > 10);
+        mean[b] = sum[b] / count[b];
+        MESSAGE("distance bin " << b << ": AO " << mean[b]);
+    }
+    for (int b = 1; b < bins; ++b) CHECK(mean[b] >= mean[b - 1] - 0.01);
+    CHECK(mean[0] < mean[bins - 1] - 0.15);  // clearly darker at the edge
+    CHECK(mean[bins - 1] > 0.9);             // beyond the radius: open floor
+    CHECK(fx.gl_errors().empty());
+}
+
+TEST_CASE("the GPU output matches a CPU implementation of the same formula") {
+    testgl::Fixture fx;
+    Scene scene = crease_scene();
+    scene.add_box({-1.5, -1, -4.5}, {-0.5, 0.2, -3.5});
+    scene.add_box({0.8, -1, -5.2}, {1.6, 1.0, -4.4});
+    const auto proj = analytic::perspective(kFov, 4.0 / 3.0, 0.1, 100.0);
+    const GBuffer g = analytic::render(scene, proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, 80, 60);
+    cpu::Input in;
+    in.gbuffer = &g;
+    analytic::to_floats(proj, in.projection);
+    in.clip = SSAO_CLIP_NEGATIVE_ONE_TO_ONE;
+    for (ssao_rotation rotation : {SSAO_ROTATION_NOISE_4X4, SSAO_ROTATION_HASH, SSAO_ROTATION_NONE}) {
+        CAPTURE(rotation);
+        ssao_settings s = make(16, SSAO_BLUR_NONE, rotation);
+        s.output_format = SSAO_OUTPUT_R16F;
+        s.power = 1.5f;
+        const ssao_settings resolved = fx.settings(s);
+        const auto r = fx.run(g, proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE);
+        REQUIRE(r.status == SSAO_OK);
+        int compared = 0, off = 0;
+        double worst = 0;
+        for (int y = 1; y < g.height; y += 3)
+            for (int x = 2; x < g.width; x += 3) {
+                const float expect = cpu::ao(in, resolved, x, y);
+                const float got = r.ao[static_cast<size_t>(y) * g.width + x];
+                const double diff = std::abs(expect - got);
+                worst = std::max(worst, diff);
+                ++compared;
+                // One kernel sample flipping across a comparison boundary
+                // (float vs double) moves the result by about 1/16.
+                if (diff > 2e-3) ++off;
+                CHECK(diff < 0.09);
+            }
+        MESSAGE("compared " << compared << " pixels, " << off << " differ by more than 2e-3, worst " << worst);
+        CHECK(off <= compared / 50);
+    }
+    CHECK(fx.gl_errors().empty());
+}
+
+TEST_CASE("background pixels exit early with exactly 1 and the passes run are only those asked for") {
+    testgl::Fixture fx;
+    Scene scene;
+    scene.add_quad({-1, -1, -5}, {2, 0, 0}, {0, 2, 0});  // a small quad in the sky
+    const auto proj = analytic::perspective(kFov, 1.0, 0.1, 100.0);
+    const GBuffer g = analytic::render(scene, proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, 32, 32);
+    fx.settings(make(16, SSAO_BLUR_DEFAULT));
+    auto r = fx.run(g, proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE);
+    REQUIRE(r.status == SSAO_OK);
+    CHECK(r.output.passes_run == (SSAO_PASS_AO | SSAO_PASS_BLUR_X | SSAO_PASS_BLUR_Y));
+    for (int i = 0; i < 32 * 32; ++i)
+        if (g.sky(i % 32, i / 32)) CHECK(r.ao[i] == 1.0f);
+
+    fx.settings(make(16, SSAO_BLUR_NONE));
+    r = fx.run(g, proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE);
+    CHECK(r.output.passes_run == SSAO_PASS_AO);
+    fx.settings(make(16, SSAO_BLUR_BOX_4X4));
+    r = fx.run(g, proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE);
+    CHECK(r.output.passes_run == (SSAO_PASS_AO | SSAO_PASS_BLUR_X));
+    ssao_settings off = make(16, SSAO_BLUR_DEFAULT);
+    off.strength = SSAO_STRENGTH_OFF;
+    fx.settings(off);
+    r = fx.run(crease_scene().quads.empty() ? g : analytic::render(crease_scene(), proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, 32, 32),
+               proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE);
+    CHECK(r.output.passes_run == SSAO_PASS_CLEAR);
+    CHECK(*std::min_element(r.ao.begin(), r.ao.end()) == 1.0f);
+    CHECK(fx.gl_errors().empty());
+}
+
+namespace {
+
+// Puts every listed piece of state into a non-default value a host might use.
+void disturb_state(GladGLContext& gl, GLuint host_fbo, GLuint host_vao, GLuint host_program, GLuint* host_objects) {
+    gl.BindFramebuffer(GL_DRAW_FRAMEBUFFER, host_fbo);
+    gl.BindFramebuffer(GL_READ_FRAMEBUFFER, host_fbo);
+    gl.UseProgram(host_program);
+    gl.BindVertexArray(host_vao);
+    for (int u = 0; u < 4; ++u) {
+        gl.ActiveTexture(GL_TEXTURE0 + u);
+        gl.BindTexture(GL_TEXTURE_2D, host_objects[u]);
+        gl.BindSampler(static_cast<GLuint>(u), host_objects[4]);
+    }
+    gl.ActiveTexture(GL_TEXTURE5);
+    gl.BindBuffer(GL_ARRAY_BUFFER, host_objects[5]);
+    gl.BindBufferRange(GL_UNIFORM_BUFFER, 0, host_objects[6], 256, 64);
+    gl.BindBufferBase(GL_UNIFORM_BUFFER, 1, host_objects[6]);
+    gl.BindBuffer(GL_UNIFORM_BUFFER, host_objects[5]);
+    gl.BindBuffer(GL_PIXEL_UNPACK_BUFFER, host_objects[7]);
+    gl.Viewport(3, 5, 17, 19);
+    gl.Scissor(1, 2, 3, 4);
+    gl.Enable(GL_SCISSOR_TEST);
+    gl.Enable(GL_DEPTH_TEST);
+    gl.Enable(GL_STENCIL_TEST);
+    gl.Enable(GL_CULL_FACE);
+    gl.CullFace(GL_FRONT_AND_BACK);
+    gl.Enable(GL_POLYGON_OFFSET_FILL);
+    gl.Enable(GL_COLOR_LOGIC_OP);
+    gl.Enable(GL_SAMPLE_MASK);
+    gl.Disable(GL_DITHER);
+    gl.Enable(GL_FRAMEBUFFER_SRGB);
+    gl.Enable(GL_SAMPLE_ALPHA_TO_COVERAGE);
+    gl.Enablei(GL_BLEND, 0);
+    gl.Enablei(GL_BLEND, 2);
+    gl.BlendFunc(GL_ONE, GL_ONE);
+    gl.ColorMaski(0, GL_FALSE, GL_TRUE, GL_FALSE, GL_TRUE);
+    gl.ColorMaski(1, GL_TRUE, GL_FALSE, GL_TRUE, GL_FALSE);
+    gl.Enable(GL_CLIP_DISTANCE0);
+    gl.Enable(GL_CLIP_DISTANCE3);
+    gl.PolygonMode(GL_FRONT_AND_BACK, GL_LINE);
+    gl.DepthMask(GL_FALSE);
+    gl.StencilMaskSeparate(GL_FRONT, 0x0f);
+    gl.StencilMaskSeparate(GL_BACK, 0xf0);
+    if (gl.ClipControl) gl.ClipControl(GL_UPPER_LEFT, GL_ZERO_TO_ONE);
+    gl.PixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    gl.PixelStorei(GL_UNPACK_ROW_LENGTH, 7);
+    gl.PixelStorei(GL_UNPACK_SKIP_ROWS, 2);
+    gl.PixelStorei(GL_UNPACK_SKIP_PIXELS, 3);
+    gl.PixelStorei(GL_PACK_ALIGNMENT, 2);
+}
+
+// A host's own (linked) program: glUseProgram refuses unlinked ones.
+GLuint link_trivial_program(GladGLContext& gl) {
+    const char* vs_src = "#version 330 core\nvoid main() { gl_Position = vec4(0.0); }\n";
+    const char* fs_src = "#version 330 core\nout vec4 c;\nvoid main() { c = vec4(1.0); }\n";
+    const GLuint vs = gl.CreateShader(GL_VERTEX_SHADER), fs = gl.CreateShader(GL_FRAGMENT_SHADER);
+    gl.ShaderSource(vs, 1, &vs_src, nullptr);
+    gl.ShaderSource(fs, 1, &fs_src, nullptr);
+    gl.CompileShader(vs);
+    gl.CompileShader(fs);
+    const GLuint program = gl.CreateProgram();
+    gl.AttachShader(program, vs);
+    gl.AttachShader(program, fs);
+    gl.LinkProgram(program);
+    gl.DeleteShader(vs);
+    gl.DeleteShader(fs);
+    return program;
+}
+
+}  // namespace
+
+TEST_CASE("every listed piece of GL state is identical before and after execute, and the result is unaffected") {
+    testgl::Fixture fx;
+    auto& gl = fx.gl();
+    const Scene scene = crease_scene();
+    const auto proj = analytic::perspective(kFov, 1.0, 0.1, 100.0);
+    const GBuffer g = analytic::render(scene, proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, 40, 40);
+    fx.settings(make(16, SSAO_BLUR_DEFAULT));
+    const auto clean = fx.run(g, proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE);
+    REQUIRE(clean.status == SSAO_OK);
+
+    const GLuint depth = fx.make_depth(GL_DEPTH_COMPONENT32F, g.width, g.height, g.depth);
+    const GLuint normal = fx.make_normals(GL_RGBA16F, g.width, g.height, g.normal);
+    GLuint objects[8] = {};
+    gl.GenTextures(4, objects);
+    for (int i = 0; i < 4; ++i) {
+        gl.BindTexture(GL_TEXTURE_2D, objects[i]);
+        gl.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 4, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+    }
+    gl.GenSamplers(1, &objects[4]);
+    gl.GenBuffers(3, &objects[5]);
+    gl.BindBuffer(GL_UNIFORM_BUFFER, objects[6]);
+    gl.BufferData(GL_UNIFORM_BUFFER, 1024, nullptr, GL_STATIC_DRAW);
+    gl.BindBuffer(GL_PIXEL_UNPACK_BUFFER, objects[7]);
+    gl.BufferData(GL_PIXEL_UNPACK_BUFFER, 1024, nullptr, GL_STATIC_DRAW);
+    gl.BindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
+    GLuint host_fbo = 0, host_color = 0, host_vao = 0;
+    gl.GenTextures(1, &host_color);
+    gl.BindTexture(GL_TEXTURE_2D, host_color);
+    gl.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 8, 8, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+    gl.GenFramebuffers(1, &host_fbo);
+    gl.BindFramebuffer(GL_FRAMEBUFFER, host_fbo);
+    gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, host_color, 0);
+    gl.GenVertexArrays(1, &host_vao);
+    const GLuint host_program = link_trivial_program(gl);
+
+    disturb_state(gl, host_fbo, host_vao, host_program, objects);
+    const testgl::Snapshot before = testgl::snapshot(gl);
+    ssao_inputs in = fx.inputs(depth, normal, proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE);
+    ssao_output out{};
+    out.size = sizeof out;
+    // Run twice: the first run allocates, the second reuses.
+    REQUIRE(fx.api().execute(fx.ctx(), &in, &out) == SSAO_OK);
+    REQUIRE(fx.api().execute(fx.ctx(), &in, &out) == SSAO_OK);
+    const testgl::Snapshot after = testgl::snapshot(gl);
+    for (const auto& [name, value] : before) {
+        CAPTURE(name);
+        CHECK(after.at(name) == value);
+    }
+    // The host's odd state (upper-left origin, line mode, scissor, masks) did not leak into the AO.
+    gl.BindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
+    gl.PixelStorei(GL_PACK_ALIGNMENT, 4);
+    if (gl.ClipControl) gl.ClipControl(GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE);
+    const auto ao = fx.read_red(out.texture, g.width, g.height);
+    for (size_t i = 0; i < ao.size(); ++i) CHECK(std::abs(ao[i] - clean.ao[i]) < 1e-6f);
+    CHECK(fx.gl_errors().empty());
+}
+
+TEST_CASE("GL errors are caught by the KHR_debug capture (the detector itself can fail)") {
+    testgl::Fixture fx;
+    CHECK(fx.gl_errors().empty());
+    fx.gl().BindTexture(0x1234, 1);  // an invalid target: GL_INVALID_ENUM
+    CHECK_FALSE(fx.gl_errors().empty());
+}
+
+TEST_CASE("GPU timings arrive from earlier frames without stalling") {
+    testgl::Fixture fx;
+    const auto proj = analytic::perspective(kFov, 1.0, 0.1, 100.0);
+    const GBuffer g = analytic::render(crease_scene(), proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, 32, 32);
+    fx.settings(make(16, SSAO_BLUR_DEFAULT));
+    ssao_timings t{};
+    t.size = sizeof t;
+    for (int i = 0; i < 12; ++i) {
+        REQUIRE(fx.run(g, proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE).status == SSAO_OK);
+        fx.gl().Finish();
+    }
+    REQUIRE(fx.api().get_timings(fx.ctx(), &t) == SSAO_OK);
+    CHECK(t.available == 1);
+    CHECK(t.frame >= 1);
+    CHECK(t.frame <= 12);
+    CHECK(t.ao_ms > 0.0);
+    CHECK(t.total_ms >= t.ao_ms);
+    CHECK(t.total_ms == doctest::Approx(t.ao_ms + t.blur_ms).epsilon(1e-6));
+    CHECK(fx.gl_errors().empty());
+}

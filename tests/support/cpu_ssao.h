@@ -1,0 +1,23 @@
+// cpu_ssao.h - an independent CPU implementation of the AO pass's formula
+// (shaders/ao.frag), written from its description, for comparing against the
+// GPU output at sampled pixels. Kernel and noise come from the plugin's own
+// generator (that part is unit-tested separately).
+#pragma once
+
+#include "analytic_scene.h"
+
+#include <ssao/ssao.h>
+
+namespace cpu {
+
+struct Input {
+    const analytic::GBuffer* gbuffer = nullptr;
+    float projection[16] = {};
+    ssao_clip_range clip = SSAO_CLIP_NEGATIVE_ONE_TO_ONE;
+    double depth_step = 0.0;  // unorm step of the depth format; 0 = float
+};
+
+// AO of pixel (x, y) before any blur, with resolved settings `s`.
+float ao(const Input& in, const ssao_settings& s, int x, int y);
+
+}  // namespace cpu

@@ -1,0 +1,130 @@
+#include "gl_fixture.h"
+
+#include <stdexcept>
+
+namespace testgl {
+
+void Fixture::debug_callback(GLenum /*source*/, GLenum type, GLuint /*id*/, GLenum /*severity*/, GLsizei /*length*/,
+                             const GLchar* message, const void* user) {
+    if (type == GL_DEBUG_TYPE_ERROR || type == GL_DEBUG_TYPE_UNDEFINED_BEHAVIOR)
+        static_cast<Fixture*>(const_cast<void*>(user))->errors_.push_back(message);
+}
+
+Fixture::Fixture(int major, int minor) {
+    std::string error;
+    eglctx::Options options;
+    options.major = major;
+    options.minor = minor;
+    options.debug = true;
+    egl_ = eglctx::Context::create(options, error);
+    if (!egl_) throw std::runtime_error(error);
+    if (!lib_.open(plugin::Library::default_path(), error)) throw std::runtime_error(error);
+    auto& g = gl();
+    if (g.DebugMessageCallback) {
+        g.Enable(GL_DEBUG_OUTPUT);
+        g.Enable(GL_DEBUG_OUTPUT_SYNCHRONOUS);
+        g.DebugMessageCallback(&Fixture::debug_callback, this);
+    }
+    ssao_context_desc desc{};
+    desc.size = sizeof desc;
+    desc.get_proc_address = &eglctx::Context::get_proc;
+    const ssao_status st = api().create_context(&desc, &ctx_);
+    if (st != SSAO_OK) throw std::runtime_error(std::string("create_context: ") + api().status_string(st));
+}
+
+Fixture::~Fixture() {
+    if (!textures_.empty()) gl().DeleteTextures(static_cast<GLsizei>(textures_.size()), textures_.data());
+    api().destroy_context(ctx_);
+}
+
+GLuint Fixture::make_depth(GLenum internal, int w, int h, const std::vector<float>& depth) {
+    auto& g = gl();
+    GLuint t = 0;
+    g.GenTextures(1, &t);
+    textures_.push_back(t);
+    g.BindTexture(GL_TEXTURE_2D, t);
+    if (internal == GL_DEPTH24_STENCIL8) {
+        std::vector<uint32_t> packed(depth.size());
+        for (size_t i = 0; i < depth.size(); ++i)
+            packed[i] = static_cast<uint32_t>(std::lround(static_cast<double>(depth[i]) * 16777215.0)) << 8;
+        g.TexImage2D(GL_TEXTURE_2D, 0, static_cast<GLint>(internal), w, h, 0, GL_DEPTH_STENCIL,
+                     GL_UNSIGNED_INT_24_8, packed.data());
+    } else if (internal == GL_DEPTH32F_STENCIL8) {
+        std::vector<float> packed(depth.size() * 2, 0.0f);
+        for (size_t i = 0; i < depth.size(); ++i) packed[i * 2] = depth[i];
+        g.TexImage2D(GL_TEXTURE_2D, 0, static_cast<GLint>(internal), w, h, 0, GL_DEPTH_STENCIL,
+                     GL_FLOAT_32_UNSIGNED_INT_24_8_REV, packed.data());
+    } else {
+        g.TexImage2D(GL_TEXTURE_2D, 0, static_cast<GLint>(internal), w, h, 0, GL_DEPTH_COMPONENT, GL_FLOAT,
+                     depth.data());
+    }
+    g.BindTexture(GL_TEXTURE_2D, 0);
+    return t;
+}
+
+GLuint Fixture::make_normals(GLenum internal, int w, int h, const std::vector<glm::vec3>& normals) {
+    auto& g = gl();
+    GLuint t = 0;
+    g.GenTextures(1, &t);
+    textures_.push_back(t);
+    g.BindTexture(GL_TEXTURE_2D, t);
+    std::vector<float> rgba(normals.size() * 4);
+    const bool packed = internal == GL_RGBA8;
+    for (size_t i = 0; i < normals.size(); ++i) {
+        for (int c = 0; c < 3; ++c) rgba[i * 4 + c] = packed ? normals[i][c] * 0.5f + 0.5f : normals[i][c];
+        rgba[i * 4 + 3] = 1.0f;
+    }
+    g.TexImage2D(GL_TEXTURE_2D, 0, static_cast<GLint>(internal), w, h, 0, GL_RGBA, GL_FLOAT, rgba.data());
+    g.BindTexture(GL_TEXTURE_2D, 0);
+    return t;
+}
+
+std::vector<float> Fixture::read_red(GLuint texture, int w, int h) {
+    auto& g = gl();
+    GLuint fbo = 0;
+    g.GenFramebuffers(1, &fbo);
+    g.BindFramebuffer(GL_READ_FRAMEBUFFER, fbo);
+    g.FramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture, 0);
+    std::vector<float> out(static_cast<size_t>(w) * h);
+    g.PixelStorei(GL_PACK_ALIGNMENT, 4);
+    g.ReadPixels(0, 0, w, h, GL_RED, GL_FLOAT, out.data());
+    g.BindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+    g.DeleteFramebuffers(1, &fbo);
+    return out;
+}
+
+ssao_settings Fixture::settings(const ssao_settings& overrides) {
+    ssao_settings s = overrides;
+    s.size = sizeof s;
+    if (api().set_settings(ctx_, &s) != SSAO_OK) throw std::runtime_error(api().last_error(ctx_));
+    ssao_settings r{};
+    r.size = sizeof r;
+    api().get_settings(ctx_, &r);
+    return r;
+}
+
+ssao_inputs Fixture::inputs(GLuint depth, GLuint normal, const glm::dmat4& proj, ssao_clip_range clip) {
+    ssao_inputs in{};
+    in.size = sizeof in;
+    in.depth_texture = depth;
+    in.normal_texture = normal;
+    in.normal_space = SSAO_NORMAL_SPACE_VIEW;
+    in.normal_packing = SSAO_NORMAL_PACKING_SIGNED;
+    analytic::to_floats(proj, in.projection);
+    in.clip_range = clip;
+    return in;
+}
+
+Fixture::Result Fixture::run(const analytic::GBuffer& g, const glm::dmat4& proj, ssao_clip_range clip,
+                             GLenum depth_format) {
+    Result r;
+    const GLuint depth = make_depth(depth_format, g.width, g.height, g.depth);
+    const GLuint normal = make_normals(GL_RGBA16F, g.width, g.height, g.normal);
+    ssao_inputs in = inputs(depth, normal, proj, clip);
+    r.output.size = sizeof r.output;
+    r.status = api().execute(ctx_, &in, &r.output);
+    if (r.status == SSAO_OK) r.ao = read_red(r.output.texture, g.width, g.height);
+    return r;
+}
+
+}  // namespace testgl

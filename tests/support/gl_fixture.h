@@ -1,0 +1,60 @@
+// gl_fixture.h - what every GL test needs: a headless EGL context with a
+// KHR_debug callback that records every GL error, the plugin loaded with
+// dlopen exactly as a host does, and helpers to upload G-buffers and read AO.
+#pragma once
+
+#include "analytic_scene.h"
+
+#include <egl_context.h>
+#include <plugin_loader.h>
+
+#include <ssao/ssao.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace testgl {
+
+class Fixture {
+public:
+    explicit Fixture(int major = 4, int minor = 5);
+    ~Fixture();
+
+    GladGLContext& gl() { return egl_->gl(); }
+    const ssao_api& api() const { return lib_.api(); }
+    ssao_context* ctx() { return ctx_; }
+    // GL errors reported through KHR_debug since the fixture was made.
+    const std::vector<std::string>& gl_errors() const { return errors_; }
+
+    // Depth texture of the given sized format from values in [0,1]
+    // (GL_DEPTH_COMPONENT16/24/32F, GL_DEPTH24_STENCIL8, GL_DEPTH32F_STENCIL8).
+    GLuint make_depth(GLenum internal, int w, int h, const std::vector<float>& depth);
+    // Normal texture: RGBA16F signed (default), RGBA32F, or RGBA8 packed to [0,1].
+    GLuint make_normals(GLenum internal, int w, int h, const std::vector<glm::vec3>& normals);
+    // Reads the red channel of a texture's level 0 (any colour format) as floats.
+    std::vector<float> read_red(GLuint texture, int w, int h);
+
+    ssao_settings settings(const ssao_settings& overrides);  // resolved, applied to ctx
+    // Uploads the G-buffer (D32F + RGBA16F by default), runs execute, reads AO.
+    struct Result {
+        ssao_status status = SSAO_OK;
+        std::vector<float> ao;
+        ssao_output output{};
+    };
+    Result run(const analytic::GBuffer& g, const glm::dmat4& proj, ssao_clip_range clip,
+               GLenum depth_format = 0x8CAC /* GL_DEPTH_COMPONENT32F */);
+    ssao_inputs inputs(GLuint depth, GLuint normal, const glm::dmat4& proj, ssao_clip_range clip);
+
+    static void debug_callback(GLenum source, GLenum type, GLuint id, GLenum severity, GLsizei length,
+                               const GLchar* message, const void* user);
+
+private:
+    std::unique_ptr<eglctx::Context> egl_;
+    plugin::Library lib_;
+    ssao_context* ctx_ = nullptr;
+    std::vector<std::string> errors_;
+    std::vector<GLuint> textures_;
+};
+
+}  // namespace testgl
