@@ -1,0 +1,328 @@
+#include "cli.h"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <functional>
+#include <map>
+#include <sstream>
+
+namespace cli {
+
+namespace {
+
+struct Fail {
+    std::string message;
+};
+
+[[noreturn]] void fail(const std::string& message) { throw Fail{message}; }
+
+std::string quoted(const std::string& s) { return "'" + s + "'"; }
+
+double parse_number(const std::string& flag, const std::string& text, bool allow_inf = false) {
+    if (allow_inf && (text == "inf" || text == "infinity" || text == "+inf"))
+        return std::numeric_limits<double>::infinity();
+    const char* begin = text.c_str();
+    char* end = nullptr;
+    errno = 0;
+    const double v = std::strtod(begin, &end);
+    if (text.empty() || end == begin || *end != '\0' || errno == ERANGE || !std::isfinite(v))
+        fail(flag + " expects a finite number" + std::string(allow_inf ? " or 'inf'" : "") +
+             ", got " + quoted(text));
+    return v;
+}
+
+long long parse_integer(const std::string& flag, const std::string& text, long long lo, long long hi) {
+    const char* begin = text.c_str();
+    char* end = nullptr;
+    errno = 0;
+    const long long v = std::strtoll(begin, &end, 10);
+    if (text.empty() || end == begin || *end != '\0' || errno == ERANGE)
+        fail(flag + " expects a whole number, got " + quoted(text));
+    if (v < lo || v > hi)
+        fail(flag + " " + text + " is out of range " + std::to_string(lo) + ".." + std::to_string(hi));
+    return v;
+}
+
+glm::vec3 parse_vec3(const std::string& flag, const std::string& text) {
+    std::vector<std::string> parts;
+    std::string part;
+    std::istringstream in(text);
+    while (std::getline(in, part, ',')) parts.push_back(part);
+    if (parts.size() != 3 || (!text.empty() && text.back() == ','))
+        fail(flag + " expects three comma-separated numbers x,y,z, got " + quoted(text));
+    glm::vec3 v;
+    for (int i = 0; i < 3; ++i) v[i] = static_cast<float>(parse_number(flag, parts[static_cast<size_t>(i)]));
+    return v;
+}
+
+template <typename T>
+T parse_choice(const std::string& flag, const std::string& text, const std::vector<std::pair<const char*, T>>& choices) {
+    std::string list;
+    for (const auto& c : choices) {
+        if (text == c.first) return c.second;
+        list += std::string(list.empty() ? "" : "|") + c.first;
+    }
+    fail(flag + " expects one of " + list + ", got " + quoted(text));
+}
+
+const std::vector<std::pair<const char*, ssao_kernel_shape>> kKernels = {
+    {"hemisphere", SSAO_KERNEL_HEMISPHERE}, {"sphere", SSAO_KERNEL_SPHERE}, {"separable", SSAO_KERNEL_SEPARABLE}};
+const std::vector<std::pair<const char*, ssao_kernel_distribution>> kDistributions = {
+    {"accelerating", SSAO_DISTRIBUTION_ACCELERATING}, {"uniform", SSAO_DISTRIBUTION_UNIFORM}};
+const std::vector<std::pair<const char*, ssao_rotation>> kRotations = {
+    {"noise", SSAO_ROTATION_NOISE_4X4}, {"hash", SSAO_ROTATION_HASH}, {"none", SSAO_ROTATION_NONE}};
+const std::vector<std::pair<const char*, ssao_blur>> kBlurs = {
+    {"depth-aware", SSAO_BLUR_DEPTH_AWARE}, {"box", SSAO_BLUR_BOX_4X4}, {"gaussian", SSAO_BLUR_GAUSSIAN}, {"none", SSAO_BLUR_NONE}};
+const std::vector<std::pair<const char*, ssao_output_format>> kOutputs = {
+    {"r8", SSAO_OUTPUT_R8}, {"r16f", SSAO_OUTPUT_R16F}};
+const std::vector<std::pair<const char*, ssao_preset>> kPresets = {
+    {"low", SSAO_PRESET_LOW}, {"medium", SSAO_PRESET_MEDIUM}, {"high", SSAO_PRESET_HIGH}, {"ultra", SSAO_PRESET_ULTRA}};
+const std::vector<std::pair<const char*, DepthFormat>> kDepths = {
+    {"d16", DepthFormat::D16}, {"d24", DepthFormat::D24}, {"d32f", DepthFormat::D32F}};
+
+template <typename T>
+const char* choice_name(T v, const std::vector<std::pair<const char*, T>>& choices) {
+    for (const auto& c : choices)
+        if (c.second == v) return c.first;
+    return "?";
+}
+
+// A number with a range, written once for the parser and the help text.
+float ranged(const std::string& flag, const std::string& text, double lo, bool lo_open, double hi, bool hi_open) {
+    const double v = parse_number(flag, text);
+    const bool below = lo_open ? v <= lo : v < lo;
+    const bool above = hi_open ? v >= hi : v > hi;
+    if (below || above) {
+        std::ostringstream r;
+        r << (lo_open ? "(" : "[") << lo << ", " << hi << (hi_open ? ")" : "]");
+        fail(flag + " " + text + " is out of range " + r.str());
+    }
+    return static_cast<float>(v);
+}
+
+constexpr double kBig = 1e30;
+
+}  // namespace
+
+const char* name(ssao_kernel_shape v) { return choice_name(v, kKernels); }
+const char* name(ssao_kernel_distribution v) { return choice_name(v, kDistributions); }
+const char* name(ssao_rotation v) { return choice_name(v, kRotations); }
+const char* name(ssao_blur v) { return choice_name(v, kBlurs); }
+const char* name(ssao_output_format v) { return choice_name(v, kOutputs); }
+const char* name(DepthFormat v) { return choice_name(v, kDepths); }
+
+std::optional<ssao_blur> parse_blur(const std::string& s) {
+    for (const auto& c : kBlurs)
+        if (s == c.first) return c.second;
+    return std::nullopt;
+}
+
+ParseResult parse(int argc, const char* const* argv, Options& o, std::string& error) {
+    using Handler = std::function<void(const std::string& flag, const std::string& value)>;
+    // Flags that take a value.
+    const std::map<std::string, Handler> valued = {
+        {"--out", [&](const std::string& f, const std::string& v) {
+             if (v.empty()) fail(f + " expects a directory");
+             o.out_dir = v;
+         }},
+        {"--plugin", [&](const std::string& f, const std::string& v) {
+             if (v.empty()) fail(f + " expects a path to libssao.so");
+             o.plugin_path = v;
+         }},
+        {"--width", [&](const std::string& f, const std::string& v) {
+             o.width = static_cast<int>(parse_integer(f, v, 1, SSAO_MAX_DIMENSION));
+         }},
+        {"--height", [&](const std::string& f, const std::string& v) {
+             o.height = static_cast<int>(parse_integer(f, v, 1, SSAO_MAX_DIMENSION));
+         }},
+        {"--frames", [&](const std::string& f, const std::string& v) {
+             o.frames = static_cast<int>(parse_integer(f, v, 1, 1000));
+         }},
+        {"--eye", [&](const std::string& f, const std::string& v) { o.eye = parse_vec3(f, v); }},
+        {"--target", [&](const std::string& f, const std::string& v) { o.target = parse_vec3(f, v); }},
+        {"--fov", [&](const std::string& f, const std::string& v) { o.fov_deg = ranged(f, v, 0, true, 180, true); }},
+        {"--near", [&](const std::string& f, const std::string& v) { o.znear = ranged(f, v, 0, true, kBig, false); }},
+        {"--far", [&](const std::string& f, const std::string& v) {
+             const double d = parse_number(f, v, true);
+             if (!(d > 0)) fail(f + " " + v + " must be > 0 (or 'inf')");
+             o.zfar = static_cast<float>(d);
+         }},
+        {"--ortho", [&](const std::string& f, const std::string& v) {
+             o.ortho_half_height = ranged(f, v, 0, true, kBig, false);
+         }},
+        {"--depth", [&](const std::string& f, const std::string& v) { o.depth_format = parse_choice(f, v, kDepths); }},
+        {"--normals", [&](const std::string& f, const std::string& v) {
+             o.normal_space = parse_choice<NormalSpace>(f, v, {{"view", NormalSpace::View}, {"world", NormalSpace::World}});
+         }},
+        {"--normal-format", [&](const std::string& f, const std::string& v) {
+             o.normal_format = parse_choice<NormalFormat>(f, v, {{"rgba16f", NormalFormat::RGBA16F}, {"rgba8", NormalFormat::RGBA8}});
+         }},
+        {"--only", [&](const std::string& f, const std::string& v) {
+             o.only_ao = parse_choice<bool>(f, v, {{"ao", true}, {"all", false}});
+         }},
+        {"--preset", [&](const std::string& f, const std::string& v) { o.preset = parse_choice(f, v, kPresets); }},
+        {"--samples", [&](const std::string& f, const std::string& v) {
+             o.samples = static_cast<int>(parse_integer(f, v, 1, SSAO_MAX_SAMPLES));
+         }},
+        {"--radius", [&](const std::string& f, const std::string& v) { o.radius = ranged(f, v, 0, true, kBig, false); }},
+        {"--bias", [&](const std::string& f, const std::string& v) { o.bias = ranged(f, v, 0, false, kBig, false); }},
+        {"--depth-step-bias", [&](const std::string& f, const std::string& v) {
+             o.depth_step_bias = ranged(f, v, 0, false, 1e6, false);
+         }},
+        {"--power", [&](const std::string& f, const std::string& v) { o.power = ranged(f, v, 0, true, 16, false); }},
+        {"--strength", [&](const std::string& f, const std::string& v) { o.strength = ranged(f, v, 0, false, 8, false); }},
+        {"--kernel", [&](const std::string& f, const std::string& v) { o.kernel = parse_choice(f, v, kKernels); }},
+        {"--distribution", [&](const std::string& f, const std::string& v) {
+             o.distribution = parse_choice(f, v, kDistributions);
+         }},
+        {"--rotation", [&](const std::string& f, const std::string& v) { o.rotation = parse_choice(f, v, kRotations); }},
+        {"--seed", [&](const std::string& f, const std::string& v) {
+             o.seed = static_cast<uint32_t>(parse_integer(f, v, 0, 4294967295LL));
+         }},
+        {"--blur", [&](const std::string& f, const std::string& v) { o.blur = parse_choice(f, v, kBlurs); }},
+        {"--blur-radius", [&](const std::string& f, const std::string& v) {
+             o.blur_radius = static_cast<int>(parse_integer(f, v, 1, SSAO_MAX_BLUR_RADIUS));
+         }},
+        {"--blur-sigma", [&](const std::string& f, const std::string& v) { o.blur_sigma = ranged(f, v, 0, true, 64, false); }},
+        {"--blur-tolerance", [&](const std::string& f, const std::string& v) {
+             o.blur_tolerance = ranged(f, v, 0, true, 1, false);
+         }},
+        {"--output-format", [&](const std::string& f, const std::string& v) { o.output_format = parse_choice(f, v, kOutputs); }},
+    };
+    // Flags without a value.
+    const std::map<std::string, std::function<void()>> switches = {
+        {"--gl33", [&] { o.gl33 = true; }},
+        {"--reverse-z", [&] { o.reverse_z = true; }},
+        {"--sheet", [&] { o.sheet = true; }},
+        {"--no-sheet", [&] { o.sheet = false; }},
+    };
+
+    try {
+        bool help = false;
+        bool scene_seen = false;
+        for (int i = 1; i < argc; ++i) {
+            std::string arg = argv[i];
+            if (arg == "--help" || arg == "-h") {
+                help = true;
+                continue;
+            }
+            if (arg.size() > 1 && arg[0] == '-') {
+                std::string value;
+                bool has_value = false;
+                const size_t eq = arg.find('=');
+                if (arg.rfind("--", 0) == 0 && eq != std::string::npos) {
+                    value = arg.substr(eq + 1);
+                    arg = arg.substr(0, eq);
+                    has_value = true;
+                }
+                if (auto s = switches.find(arg); s != switches.end()) {
+                    if (has_value) fail(arg + " takes no value");
+                    s->second();
+                    continue;
+                }
+                auto h = valued.find(arg);
+                if (h == valued.end()) fail("unknown flag " + quoted(arg) + " (see --help)");
+                if (!has_value) {
+                    if (i + 1 >= argc) fail(arg + " needs a value");
+                    value = argv[++i];
+                }
+                h->second(arg, value);
+                continue;
+            }
+            if (scene_seen) fail("more than one scene file given: " + quoted(o.scene_path) + " and " + quoted(arg));
+            o.scene_path = arg;
+            scene_seen = true;
+        }
+        if (help) return ParseResult::Help;
+        if (o.ortho_half_height && o.fov_deg) fail("--ortho and --fov exclude each other");
+        if (o.ortho_half_height && o.zfar && std::isinf(*o.zfar))
+            fail("--far inf needs a perspective camera (not --ortho)");
+        if (o.znear && o.zfar && !(*o.zfar > *o.znear))
+            fail("--far must be greater than --near");
+        if (o.eye && o.target && glm::all(glm::equal(*o.eye, *o.target)))
+            fail("--eye and --target are the same point");
+    } catch (const Fail& f) {
+        error = f.message;
+        return ParseResult::Error;
+    }
+    return ParseResult::Run;
+}
+
+std::string help_text(const ssao_settings* d, const std::string& default_scene) {
+    auto def = [&](const std::function<std::string(const ssao_settings&)>& f) -> std::string {
+        return d ? f(*d) : std::string("plugin default (plugin not loaded)");
+    };
+    auto num = [](double v) {
+        std::ostringstream s;
+        s << v;
+        return s.str();
+    };
+    std::ostringstream h;
+    h << "usage: ssao-host [SCENE.gltf|SCENE.glb] [flags]\n"
+         "\n"
+         "Renders a glTF scene headless (EGL), runs the SSAO plugin on its depth and normals\n"
+         "and writes pictures with and without ambient occlusion.\n"
+         "Without a scene it renders " << default_scene << ".\n"
+         "\n"
+         "Output\n"
+         "  --out DIR               output directory (default out)\n"
+         "  --only ao|all           ao: only ao.png and ao.exr, no lighting pass (default all)\n"
+         "  --sheet / --no-sheet    the E/R/T/Y/U mode sheet modes.png (default: on for all, off for --only ao)\n"
+         "  --width N, --height N   image size, 1..16384 (default 800 x 600)\n"
+         "  --frames N              plugin executions before reading GPU times, 1..1000 (default 8)\n"
+         "  --plugin PATH           libssao.so to load (default $SSAO_PLUGIN, beside the program, or the build tree)\n"
+         "  --gl33                  ask for a GL 3.3 core context (default 4.5 core)\n"
+         "\n"
+         "Camera (default: the scene's camera, else framed from the scene bounds)\n"
+         "  --eye x,y,z --target x,y,z\n"
+         "  --fov DEG               vertical field of view, (0, 180)\n"
+         "  --near N --far F        clip planes; --far inf for an infinite far plane\n"
+         "  --ortho HALF_HEIGHT     orthographic, half the view height in scene units\n"
+         "  --reverse-z             reverse-Z with a [0,1] clip range (glClipControl), depth cleared to 0, GL_GREATER\n"
+         "  --depth d16|d24|d32f    depth buffer format (default d32f)\n"
+         "\n"
+         "G-buffer\n"
+         "  --normals view|world    space of the stored normals (default view)\n"
+         "  --normal-format rgba16f|rgba8   rgba16f stores signed normals, rgba8 n*0.5+0.5 (default rgba16f)\n"
+         "\n"
+         "SSAO settings (precedence: flags > scene hints (glTF extras \"ssao\") > --preset > plugin defaults)\n"
+         "  --preset low|medium|high|ultra   start from a plugin preset (default medium = plugin defaults)\n"
+         "  --samples N             kernel samples, 1..64 (default " << def([](const ssao_settings& s) { return std::to_string(s.sample_count); }) << ")\n"
+         "  --radius R              sampling radius in scene units, > 0 (default: scene hint, else 0.05 x the\n"
+         "                          scene's bounding-box diagonal; plugin's own default "
+      << def([&](const ssao_settings& s) { return num(s.radius); }) << ")\n"
+         "  --bias B                depth bias in scene units, >= 0 (default 0.025 x radius"
+      << (d ? ", i.e. " + num(d->bias) + " at radius " + num(d->radius) : std::string()) << ")\n"
+         "  --depth-step-bias K     multiple of the depth format's step, >= 0 (default "
+      << def([&](const ssao_settings& s) { return num(s.depth_step_bias); }) << ")\n"
+         "  --power P               exponent on the AO, (0, 16] (default " << def([&](const ssao_settings& s) { return num(s.power); }) << ")\n"
+         "  --strength S            occlusion multiplier, [0, 8]; 0 = no AO at all (default "
+      << def([&](const ssao_settings& s) { return num(s.strength); }) << ")\n"
+         "  --kernel hemisphere|sphere|separable (default " << def([](const ssao_settings& s) { return std::string(name(s.kernel_shape)); }) << ")\n"
+         "  --distribution accelerating|uniform (default " << def([](const ssao_settings& s) { return std::string(name(s.distribution)); }) << ")\n"
+         "  --rotation noise|hash|none (default " << def([](const ssao_settings& s) { return std::string(name(s.rotation)); }) << ")\n"
+         "  --seed N                seed of kernel, noise and hash, 0..4294967295; 0 = default (default "
+      << def([](const ssao_settings& s) { return std::to_string(s.seed); }) << ")\n"
+         "  --blur depth-aware|box|gaussian|none (default " << def([](const ssao_settings& s) { return std::string(name(s.blur)); }) << ")\n"
+         "  --blur-radius N         blur taps either side, 1..16 (default " << def([](const ssao_settings& s) { return std::to_string(s.blur_radius); }) << ")\n"
+         "  --blur-sigma S          gaussian sigma in pixels, (0, 64] (default: the blur radius"
+      << (d ? ", " + num(d->blur_sigma) : std::string()) << ")\n"
+         "  --blur-tolerance T      depth-aware blur's relative depth tolerance, (0, 1] (default "
+      << def([&](const ssao_settings& s) { return num(s.blur_depth_tolerance); }) << ")\n"
+         "  --output-format r8|r16f plugin output texture format (default " << def([](const ssao_settings& s) { return std::string(name(s.output_format)); }) << ")\n"
+         "\n"
+         "Files written to the output directory (all or none: written to temporary names, renamed at the end)\n"
+         "  ao.png ao.exr           ambient occlusion (EXR: one float channel Y, 1 = unoccluded)\n"
+         "  lit_ao.png lit_no_ao.png  Blinn-Phong lighting with and without AO on the ambient term\n"
+         "  normals.png             view-space normals as n*0.5+0.5\n"
+         "  depth.png               linear view depth, nearest surface black, farthest white, sky white\n"
+         "  view_depth.exr          view distance along -z (one float channel Y); sky = +inf\n"
+         "  modes.png               panels left to right: E no SSAO, R no rotation, T noise rotation,\n"
+         "                          Y accelerating distribution, U hemisphere kernel (each lit with its AO)\n"
+         "\n"
+         "Exit status: 0 on success, 1 when rendering or loading fails, 2 on a bad command line.\n";
+    return h.str();
+}
+
+}  // namespace cli

@@ -1,0 +1,80 @@
+// cli.h - ssao-host's command line: every flag, its parsing and validation,
+// and the --help text (whose plugin defaults come from the plugin itself).
+#pragma once
+
+#include <ssao/ssao.h>
+
+#include <glm/glm.hpp>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace cli {
+
+enum class DepthFormat { D16, D24, D32F };
+enum class NormalSpace { View, World };
+enum class NormalFormat { RGBA16F, RGBA8 };
+
+// What the user asked for. Unset optionals mean "let the scene, the camera
+// chooser or the plugin decide".
+struct Options {
+    std::string scene_path;         // empty = the bundled default scene
+    std::string out_dir = "out";
+    std::string plugin_path;        // empty = plugin::Library::default_path()
+    int width = 800;
+    int height = 600;
+    bool gl33 = false;
+    int frames = 8;                 // plugin executions to measure GPU times over
+
+    // Camera overrides.
+    std::optional<glm::vec3> eye, target;
+    std::optional<float> fov_deg, znear, zfar, ortho_half_height;
+    bool reverse_z = false;
+    std::optional<DepthFormat> depth_format;   // default d32f
+
+    // G-buffer.
+    NormalSpace normal_space = NormalSpace::View;
+    NormalFormat normal_format = NormalFormat::RGBA16F;
+
+    // Which outputs.
+    bool only_ao = false;
+    std::optional<bool> sheet;      // default: on for the full run, off for --only ao
+
+    // Plugin settings (unset = preset / scene hints / plugin default).
+    std::optional<ssao_preset> preset;
+    std::optional<int> samples;
+    std::optional<float> radius, bias, depth_step_bias, power, strength;
+    std::optional<ssao_kernel_shape> kernel;
+    std::optional<ssao_kernel_distribution> distribution;
+    std::optional<ssao_rotation> rotation;
+    std::optional<uint32_t> seed;
+    std::optional<ssao_blur> blur;
+    std::optional<int> blur_radius;
+    std::optional<float> blur_sigma, blur_tolerance;
+    std::optional<ssao_output_format> output_format;
+};
+
+enum class ParseResult { Run, Help, Error };
+
+// Parses argv. On Error, `error` holds one sentence naming the flag and the
+// problem. "--flag value" and "--flag=value" are both accepted.
+ParseResult parse(int argc, const char* const* argv, Options& out, std::string& error);
+
+// The --help text. `defaults` are the plugin's resolved defaults (a zeroed
+// ssao_settings through resolve_settings), or nullptr when the plugin could not
+// be loaded, in which case the plugin's defaults are shown as unavailable.
+std::string help_text(const ssao_settings* defaults, const std::string& default_scene);
+
+// Names as the flags spell them (also used in the printed summary).
+const char* name(ssao_kernel_shape v);
+const char* name(ssao_kernel_distribution v);
+const char* name(ssao_rotation v);
+const char* name(ssao_blur v);
+const char* name(ssao_output_format v);
+const char* name(DepthFormat v);
+// Parses a --blur name ("depth-aware", "box", "gaussian", "none"); used for
+// scene hints too.
+std::optional<ssao_blur> parse_blur(const std::string& s);
+
+}  // namespace cli

@@ -1,0 +1,18 @@
+# ssao-host: the program. Sees the plugin only through include/ssao/ssao.h and
+# dlopen (ssao_egl's plugin::Library); loads scenes through ssao_scene.
+find_package(tinyexr REQUIRED)
+
+add_executable(ssao-host
+  ${CMAKE_CURRENT_LIST_DIR}/main.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/cli.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/gl_util.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/gbuffer.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/composite.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/image_io.cpp)
+target_include_directories(ssao-host PRIVATE ${CMAKE_CURRENT_LIST_DIR})
+target_link_libraries(ssao-host PRIVATE ssao_egl ssao_scene glm::glm tinyexr::tinyexr)
+# The bundled default scene is found in the source tree.
+target_compile_definitions(ssao-host PRIVATE SSAO_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+target_compile_options(ssao-host PRIVATE ${SSAO_WARNINGS})
+# Building the program builds the plugin it loads (never linked: dlopen only).
+add_dependencies(ssao-host ssao)

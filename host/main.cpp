@@ -1,0 +1,505 @@
+// ssao-host: renders a glTF scene headless, runs the SSAO plugin (seen only
+// through include/ssao/ssao.h and dlopen) and writes pictures with and without
+// ambient occlusion. See host/README-section.md.
+#include "camera.h"
+#include "cli.h"
+#include "composite.h"
+#include "egl_context.h"
+#include "gbuffer.h"
+#include "gl_util.h"
+#include "image_io.h"
+#include "plugin_loader.h"
+#include "scene.h"
+
+#include <ssao/ssao.h>
+
+#include <glm/glm.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#ifndef SSAO_SOURCE_DIR
+#define SSAO_SOURCE_DIR "."
+#endif
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct RunError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+std::string default_scene_path() { return std::string(SSAO_SOURCE_DIR) + "/assets/models/spot-on-ground.glb"; }
+
+std::string fmt(double v, int precision = 4) {
+    std::ostringstream s;
+    s.precision(precision);
+    s << v;
+    return s.str();
+}
+
+std::string fmt(const glm::vec3& v) { return "(" + fmt(v.x) + ", " + fmt(v.y) + ", " + fmt(v.z) + ")"; }
+
+std::string with_commas(size_t n) {
+    std::string s = std::to_string(n);
+    for (int i = static_cast<int>(s.size()) - 3; i > 0; i -= 3) s.insert(static_cast<size_t>(i), ",");
+    return s;
+}
+
+float scene_diagonal(const scene::Scene& s) {
+    const float d = glm::length(s.bounds_max - s.bounds_min);
+    return std::isfinite(d) ? d : 0.0f;
+}
+
+// ---------------------------------------------------------------- settings
+// Precedence: flags > scene hints > preset > plugin defaults. The radius is
+// scene-scaled: the scene's hint, else 0.05 x the bounding-box diagonal.
+constexpr float kRadiusPerDiagonal = 0.05f;
+
+ssao_settings build_settings(const ssao_api& api, const cli::Options& o, const scene::Scene& sc, std::string& radius_note) {
+    ssao_settings s{};
+    s.size = sizeof(ssao_settings);
+    if (o.preset) {
+        const ssao_status st = api.preset_settings(*o.preset, &s);
+        if (st != SSAO_OK) throw RunError(std::string("the plugin refused the preset: ") + api.status_string(st));
+        // Presets trade samples and blur for time; the radius (and the bias that
+        // follows it) stays scene-scaled.
+        s.radius = 0.0f;
+        s.bias = 0.0f;
+    }
+    const scene::AoHints& h = sc.hints;
+    const float diagonal = scene_diagonal(sc);
+    if (h.radius) {
+        if (!(std::isfinite(*h.radius) && *h.radius > 0.0f))
+            throw RunError("the scene's hint ssao.radius = " + fmt(*h.radius) + " is not a number > 0");
+        s.radius = *h.radius;
+        radius_note = "scene hint";
+    } else if (diagonal > 0.0f) {
+        s.radius = kRadiusPerDiagonal * diagonal;
+        radius_note = "0.05 x scene diagonal " + fmt(diagonal);
+    } else {
+        radius_note = "plugin default; the scene has no extent";
+    }
+    if (h.samples) {
+        if (*h.samples < 1 || *h.samples > SSAO_MAX_SAMPLES)
+            throw RunError("the scene's hint ssao.samples = " + std::to_string(*h.samples) + " is out of range 1..64");
+        s.sample_count = static_cast<uint32_t>(*h.samples);
+    }
+    if (h.blur) {
+        const auto b = cli::parse_blur(*h.blur);
+        if (!b) throw RunError("the scene's hint ssao.blur = '" + *h.blur + "' is not depth-aware|box|gaussian|none");
+        s.blur = *b;
+    }
+    if (h.bias) {
+        if (!(std::isfinite(*h.bias) && *h.bias >= 0.0f))
+            throw RunError("the scene's hint ssao.bias = " + fmt(*h.bias) + " is not a number >= 0");
+        s.bias = *h.bias > 0.0f ? *h.bias : FLT_MIN;
+    }
+    if (h.power) {
+        if (!(std::isfinite(*h.power) && *h.power > 0.0f && *h.power <= 16.0f))
+            throw RunError("the scene's hint ssao.power = " + fmt(*h.power) + " is out of range (0, 16]");
+        s.power = *h.power;
+    }
+    // Flags. A zero field means "default" in the ABI, so an explicit 0 for a
+    // bias becomes the smallest positive float and strength 0 SSAO_STRENGTH_OFF.
+    if (o.samples) s.sample_count = static_cast<uint32_t>(*o.samples);
+    if (o.radius) {
+        s.radius = *o.radius;
+        radius_note = "--radius";
+    }
+    if (o.bias) s.bias = *o.bias > 0.0f ? *o.bias : FLT_MIN;
+    if (o.depth_step_bias) s.depth_step_bias = *o.depth_step_bias > 0.0f ? *o.depth_step_bias : FLT_MIN;
+    if (o.power) s.power = *o.power;
+    if (o.strength) s.strength = *o.strength > 0.0f ? *o.strength : SSAO_STRENGTH_OFF;
+    if (o.kernel) s.kernel_shape = *o.kernel;
+    if (o.distribution) s.distribution = *o.distribution;
+    if (o.rotation) s.rotation = *o.rotation;
+    if (o.seed) s.seed = *o.seed;
+    if (o.blur) s.blur = *o.blur;
+    if (o.blur_radius) s.blur_radius = static_cast<uint32_t>(*o.blur_radius);
+    if (o.blur_sigma) s.blur_sigma = *o.blur_sigma;
+    if (o.blur_tolerance) s.blur_depth_tolerance = *o.blur_tolerance;
+    if (o.output_format) s.output_format = *o.output_format;
+
+    ssao_settings resolved{};
+    resolved.size = sizeof(ssao_settings);
+    const ssao_status st = api.resolve_settings(&s, &resolved);
+    if (st != SSAO_OK)
+        throw RunError(std::string("the SSAO settings are invalid: ") + api.status_string(st));
+    return resolved;
+}
+
+// ------------------------------------------------------------------ camera
+camera::Camera build_camera(const cli::Options& o, const scene::Scene& sc, float aspect, bool& from_scene) {
+    from_scene = sc.camera.has_value();
+    camera::Overrides ov;
+    ov.eye = o.eye;
+    ov.target = o.target;
+    ov.fov_deg = o.fov_deg;
+    ov.znear = o.znear;
+    ov.zfar = o.zfar;
+    ov.ortho_half_height = o.ortho_half_height;
+    ov.reverse_z = o.reverse_z;
+    const camera::Camera c = camera::apply(sc, camera::choose(sc, aspect), ov);
+    if (!(glm::length(c.target - c.eye) > 0.0f)) throw RunError("the camera's eye and target are the same point");
+    if (c.orthographic && std::isinf(c.zfar)) throw RunError("an orthographic camera needs a finite far plane");
+    if (!c.orthographic && !(c.znear > 0.0f)) throw RunError("the near plane " + fmt(c.znear) + " must be > 0");
+    if (!(c.zfar > c.znear))
+        throw RunError("the far plane " + fmt(c.zfar) + " must lie beyond the near plane " + fmt(c.znear));
+    return c;
+}
+
+// ------------------------------------------------------------------ plugin
+struct PluginContext {
+    const ssao_api& api;
+    ssao_context* ctx = nullptr;
+    explicit PluginContext(const ssao_api& a) : api(a) {}
+    ~PluginContext() {
+        if (ctx) api.destroy_context(ctx);
+    }
+    std::string error(ssao_status st) const {
+        const char* detail = api.last_error(ctx);
+        return std::string(api.status_string(st)) + (detail && *detail ? std::string(": ") + detail : std::string());
+    }
+};
+
+void SSAO_CALL plugin_log(void* user, ssao_log_level level, const char* message) {
+    // Errors come back through the status and last_error; keep the last one
+    // for create_context, which has no context to ask. Others go to stdout.
+    if (level == SSAO_LOG_ERROR) {
+        *static_cast<std::string*>(user) = message ? message : "";
+        return;
+    }
+    std::printf("  plugin %s: %s\n", level == SSAO_LOG_WARNING ? "warning" : "info", message ? message : "");
+}
+
+// Reads the plugin's AO (viewport-sized at output.origin), top row first.
+std::vector<float> read_ao(GladGLContext& gl, const ssao_output& out, int w, int h) {
+    std::vector<float> bottom_up = gl_util::read_texture(gl, out.texture, out.origin[0], out.origin[1], w, h, 1);
+    std::vector<float> top_down(bottom_up.size());
+    for (int y = 0; y < h; ++y)
+        std::copy_n(bottom_up.begin() + static_cast<ptrdiff_t>(y) * w, w,
+                    top_down.begin() + static_cast<ptrdiff_t>(h - 1 - y) * w);
+    return top_down;
+}
+
+std::vector<uint8_t> to_bytes(const std::vector<float>& v) {
+    std::vector<uint8_t> b(v.size());
+    for (size_t i = 0; i < v.size(); ++i) {
+        const float x = std::isfinite(v[i]) ? std::clamp(v[i], 0.0f, 1.0f) : 0.0f;
+        b[i] = static_cast<uint8_t>(std::lround(x * 255.0f));
+    }
+    return b;
+}
+
+struct Mode {
+    char letter;
+    bool ssao;
+    ssao_rotation rotation;
+    ssao_kernel_distribution distribution;
+    ssao_kernel_shape kernel;
+};
+// The reference implementation's E/R/T/Y/U keys.
+const Mode kModes[5] = {
+    {'E', false, SSAO_ROTATION_NONE, SSAO_DISTRIBUTION_UNIFORM, SSAO_KERNEL_SPHERE},
+    {'R', true, SSAO_ROTATION_NONE, SSAO_DISTRIBUTION_UNIFORM, SSAO_KERNEL_SPHERE},
+    {'T', true, SSAO_ROTATION_NOISE_4X4, SSAO_DISTRIBUTION_UNIFORM, SSAO_KERNEL_SPHERE},
+    {'Y', true, SSAO_ROTATION_NOISE_4X4, SSAO_DISTRIBUTION_ACCELERATING, SSAO_KERNEL_SPHERE},
+    {'U', true, SSAO_ROTATION_NOISE_4X4, SSAO_DISTRIBUTION_ACCELERATING, SSAO_KERNEL_HEMISPHERE},
+};
+
+// ------------------------------------------------------------------- run
+int run(const cli::Options& o) {
+    const int W = o.width, H = o.height;
+    const std::string scene_path = o.scene_path.empty() ? default_scene_path() : o.scene_path;
+    {
+        std::error_code ec;
+        if (fs::exists(o.out_dir, ec) && !fs::is_directory(o.out_dir, ec))
+            throw RunError("the output path '" + o.out_dir + "' exists and is not a directory");
+        if (o.scene_path.empty() && !fs::exists(scene_path, ec))
+            throw RunError("the bundled scene '" + scene_path + "' is missing; pass a .gltf or .glb file");
+        if (fs::is_directory(scene_path, ec))
+            throw RunError("cannot load '" + scene_path + "': it is a directory, not a .gltf or .glb file");
+    }
+    const bool full = !o.only_ao;
+    const bool sheet = o.sheet.value_or(full);
+
+    // The plugin, through its C ABI only.
+    plugin::Library library;
+    std::string error;
+    const std::string plugin_path = o.plugin_path.empty() ? plugin::Library::default_path() : o.plugin_path;
+    if (!library.open(plugin_path, error)) throw RunError(error);
+    const ssao_api& api = library.api();
+
+    scene::Scene sc;
+    if (!scene::load(scene_path, sc, error)) throw RunError("cannot load '" + scene_path + "': " + error);
+    if (sc.mesh.triangle_count() == 0) throw RunError("'" + scene_path + "' has nothing to draw (no triangles)");
+
+    std::string radius_note;
+    const ssao_settings settings = build_settings(api, o, sc, radius_note);
+    const float aspect = static_cast<float>(W) / static_cast<float>(H);
+    bool camera_from_scene = false;
+    const camera::Camera cam = build_camera(o, sc, aspect, camera_from_scene);
+    const glm::mat4 view = camera::view_matrix(cam);
+    const glm::mat4 projection = camera::projection_matrix(cam, aspect);
+    for (int i = 0; i < 16; ++i)
+        if (!std::isfinite(glm::value_ptr(view)[i]) || !std::isfinite(glm::value_ptr(projection)[i]))
+            throw RunError("the camera gives a non-finite view or projection matrix; check --eye, --target, --fov, --near, --far");
+    const cli::DepthFormat depth_format = o.depth_format.value_or(cli::DepthFormat::D32F);
+
+    // GL.
+    eglctx::Options gl_options;
+    if (o.gl33) {
+        gl_options.major = 3;
+        gl_options.minor = 3;
+    }
+    auto context = eglctx::Context::create(gl_options, error);
+    if (!context) throw RunError(error);
+    GladGLContext& gl = context->gl();
+    if (cam.zero_to_one && !gl.ClipControl)
+        throw RunError("--reverse-z needs glClipControl (GL 4.5 or ARB_clip_control), which this context lacks");
+    GLint max_size = 0;
+    gl.GetIntegerv(GL_MAX_TEXTURE_SIZE, &max_size);
+    if (W > max_size || H > max_size)
+        throw RunError("the image size " + std::to_string(W) + "x" + std::to_string(H) +
+                       " exceeds this GPU's largest texture, " + std::to_string(max_size));
+    const char* renderer = reinterpret_cast<const char*>(gl.GetString(GL_RENDERER));
+
+    // Everything rendered is kept in memory and written at the end.
+    std::vector<float> ao, view_depth;
+    std::vector<uint8_t> lit_ao, lit_no_ao, normals_png, depth_png, modes_png;
+    ssao_timings timings{};
+    timings.size = sizeof timings;
+    ssao_frame_info info{};
+    info.size = sizeof info;
+    ssao_output output{};
+    output.size = sizeof output;
+    {
+        gbuffer::Desc gdesc;
+        gdesc.width = W;
+        gdesc.height = H;
+        gdesc.depth = depth_format;
+        gdesc.space = o.normal_space;
+        gdesc.format = o.normal_format;
+        gdesc.reverse_z = cam.reverse_z;
+        gdesc.zero_to_one = cam.zero_to_one;
+        gbuffer::GBuffer gbuf(gl, gdesc, sc.mesh);
+        gbuf.render(view, projection);
+
+        std::string plugin_message;
+        ssao_context_desc desc{};
+        desc.size = sizeof desc;
+        desc.get_proc_address = [](void* user, const char* name) -> ssao_gl_proc {
+            return eglctx::Context::get_proc(user, name);
+        };
+        desc.log = plugin_log;
+        desc.log_user = &plugin_message;
+        desc.settings = &settings;
+        PluginContext plugin(api);
+        ssao_status st = api.create_context(&desc, &plugin.ctx);
+        if (st != SSAO_OK)
+            throw RunError("the SSAO plugin could not start: " + std::string(api.status_string(st)) +
+                           (plugin_message.empty() ? "" : ": " + plugin_message));
+
+        ssao_inputs inputs{};
+        inputs.size = sizeof inputs;
+        inputs.depth_texture = gbuf.depth_texture();
+        inputs.normal_texture = gbuf.normal_texture();
+        inputs.normal_space = o.normal_space == cli::NormalSpace::World ? SSAO_NORMAL_SPACE_WORLD : SSAO_NORMAL_SPACE_VIEW;
+        inputs.normal_packing = o.normal_format == cli::NormalFormat::RGBA8 ? SSAO_NORMAL_PACKING_UNORM : SSAO_NORMAL_PACKING_SIGNED;
+        std::copy_n(glm::value_ptr(projection), 16, inputs.projection);
+        std::copy_n(glm::value_ptr(view), 16, inputs.view_matrix);
+        inputs.clip_range = cam.zero_to_one ? SSAO_CLIP_ZERO_TO_ONE : SSAO_CLIP_NEGATIVE_ONE_TO_ONE;
+        inputs.output_texture = 0;   // the plugin's own texture, in settings.output_format
+
+        for (int frame = 0; frame < o.frames; ++frame) {
+            st = api.execute(plugin.ctx, &inputs, &output);
+            if (st != SSAO_OK) throw RunError("the SSAO plugin failed: " + plugin.error(st));
+            gl.Flush();
+        }
+        gl.Finish();
+        api.get_timings(plugin.ctx, &timings);
+        api.get_frame_info(plugin.ctx, &info);
+        gl_util::check(gl, "the SSAO plugin's execute");
+        ao = read_ao(gl, output, W, H);
+
+        if (full || sheet) {
+            composite::Compositor compositor(gl, W, H);
+            const composite::Lighting lighting = composite::default_lighting(sc.bounds_min, sc.bounds_max, view);
+            const glm::ivec2 origin(output.origin[0], output.origin[1]);
+            if (full) lit_ao = compositor.render(gbuf, view, projection, output.texture, origin, lighting);
+            std::vector<uint8_t> no_ao = compositor.render(gbuf, view, projection, 0, origin, lighting);
+            if (sheet) {
+                // Panels left to right: E R T Y U, each lit with its own AO.
+                const size_t row_bytes = static_cast<size_t>(W) * 3;
+                const size_t sheet_row = row_bytes * 5;
+                modes_png.assign(sheet_row * static_cast<size_t>(H), 0);
+                for (int m = 0; m < 5; ++m) {
+                    const Mode& mode = kModes[m];
+                    std::vector<uint8_t> panel;
+                    if (!mode.ssao) {
+                        panel = no_ao;
+                    } else {
+                        ssao_settings ms = settings;
+                        ms.rotation = mode.rotation;
+                        ms.distribution = mode.distribution;
+                        ms.kernel_shape = mode.kernel;
+                        st = api.set_settings(plugin.ctx, &ms);
+                        if (st != SSAO_OK) throw RunError("the SSAO plugin refused a mode's settings: " + plugin.error(st));
+                        ssao_output mode_output{};
+                        mode_output.size = sizeof mode_output;
+                        st = api.execute(plugin.ctx, &inputs, &mode_output);
+                        if (st != SSAO_OK) throw RunError("the SSAO plugin failed: " + plugin.error(st));
+                        panel = compositor.render(gbuf, view, projection, mode_output.texture,
+                                                  glm::ivec2(mode_output.origin[0], mode_output.origin[1]), lighting);
+                    }
+                    const int scale = std::max(1, std::min(W, H) / 64);
+                    image_io::draw_label(panel, W, H, 2 * scale, 2 * scale, mode.letter, scale);
+                    for (int y = 0; y < H; ++y)
+                        std::copy_n(panel.begin() + static_cast<ptrdiff_t>(static_cast<size_t>(y) * row_bytes), row_bytes,
+                                    modes_png.begin() + static_cast<ptrdiff_t>(static_cast<size_t>(y) * sheet_row +
+                                                                               static_cast<size_t>(m) * row_bytes));
+                }
+            }
+            if (full) lit_no_ao = std::move(no_ao);
+        }
+
+        if (full) {
+            // Depth: view distance along -z from the depth buffer and the
+            // inverse projection (in double), sky = +inf.
+            const std::vector<float> depth = gl_util::read_texture(gl, gbuf.depth_texture(), 0, 0, W, H, 1, true);
+            const std::vector<float> normal = gl_util::read_texture(gl, gbuf.normal_texture(), 0, 0, W, H, 4);
+            const glm::dmat4 inv = glm::inverse(glm::dmat4(projection));
+            const glm::mat3 rotation(view);
+            const float clear = gbuf.clear_depth();
+            const size_t count = static_cast<size_t>(W) * static_cast<size_t>(H);
+            view_depth.assign(count, std::numeric_limits<float>::infinity());
+            normals_png.assign(count * 3, 0);
+            double zmin = std::numeric_limits<double>::infinity(), zmax = -zmin;
+            for (int y = 0; y < H; ++y) {
+                for (int x = 0; x < W; ++x) {
+                    const size_t src = static_cast<size_t>(y) * static_cast<size_t>(W) + static_cast<size_t>(x);
+                    const size_t dst = static_cast<size_t>(H - 1 - y) * static_cast<size_t>(W) + static_cast<size_t>(x);
+                    const float d = depth[src];
+                    if (d == clear) continue;
+                    const double ndc_z = cam.zero_to_one ? d : 2.0 * d - 1.0;
+                    const glm::dvec4 p = inv * glm::dvec4((x + 0.5) / W * 2.0 - 1.0, (y + 0.5) / H * 2.0 - 1.0, ndc_z, 1.0);
+                    const double z = -p.z / p.w;
+                    view_depth[dst] = static_cast<float>(z);
+                    zmin = std::min(zmin, z);
+                    zmax = std::max(zmax, z);
+                    glm::vec3 n(normal[src * 4], normal[src * 4 + 1], normal[src * 4 + 2]);
+                    if (o.normal_format == cli::NormalFormat::RGBA8) n = n * 2.0f - 1.0f;
+                    if (o.normal_space == cli::NormalSpace::World) n = rotation * n;
+                    const float len = glm::length(n);
+                    if (len > 0.0f && std::isfinite(len)) n /= len;
+                    for (int c = 0; c < 3; ++c)
+                        normals_png[dst * 3 + static_cast<size_t>(c)] =
+                            static_cast<uint8_t>(std::lround(std::clamp(n[c] * 0.5f + 0.5f, 0.0f, 1.0f) * 255.0f));
+                }
+            }
+            depth_png.assign(count, 255);
+            const double span = zmax > zmin ? zmax - zmin : 1.0;
+            for (size_t i = 0; i < count; ++i)
+                if (std::isfinite(view_depth[i]))
+                    depth_png[i] = static_cast<uint8_t>(std::lround(std::clamp((view_depth[i] - zmin) / span, 0.0, 1.0) * 255.0));
+        }
+        gl_util::check(gl, "the read-back");
+    }
+
+    // Write everything under temporary names, then rename them all.
+    image_io::StagedOutput files(o.out_dir);
+    files.png("ao.png", W, H, 1, to_bytes(ao));
+    files.exr("ao.exr", W, H, ao);
+    if (full) {
+        files.png("lit_ao.png", W, H, 3, lit_ao);
+        files.png("lit_no_ao.png", W, H, 3, lit_no_ao);
+        files.png("normals.png", W, H, 3, normals_png);
+        files.png("depth.png", W, H, 1, depth_png);
+        files.exr("view_depth.exr", W, H, view_depth);
+    }
+    if (sheet) files.png("modes.png", W * 5, H, 3, modes_png);
+    files.commit();
+
+    // The report.
+    const char* depth_names[] = {"d16", "d24", "d32f"};
+    std::printf("ssao-host: %s\n", fs::absolute(scene_path).lexically_normal().c_str());
+    std::printf("  scene: %s triangles, bounds %s .. %s\n", with_commas(sc.mesh.triangle_count()).c_str(),
+                fmt(sc.bounds_min).c_str(), fmt(sc.bounds_max).c_str());
+    std::printf("  render: %dx%d, GL %d.%d core%s on %s, depth %s, normals %s %s\n", W, H, context->major(),
+                context->minor(), o.gl33 ? " (asked for 3.3 core)" : "", renderer ? renderer : "?",
+                depth_names[static_cast<int>(depth_format)], o.normal_space == cli::NormalSpace::World ? "world" : "view",
+                o.normal_format == cli::NormalFormat::RGBA8 ? "rgba8" : "rgba16f");
+    std::printf("  camera: %s, %s, eye %s, target %s, near %s, far %s%s\n",
+                camera_from_scene ? "the scene's (with flag overrides)" : "framed from the bounds",
+                cam.orthographic ? ("orthographic half-height " + fmt(cam.ortho_half_height)).c_str()
+                                 : ("perspective fov " + fmt(glm::degrees(cam.yfov)) + " deg").c_str(),
+                fmt(cam.eye).c_str(), fmt(cam.target).c_str(), fmt(cam.znear).c_str(),
+                std::isinf(cam.zfar) ? "inf" : fmt(cam.zfar).c_str(), cam.reverse_z ? ", reverse-Z [0,1]" : "");
+    std::printf("  ssao: %u samples, radius %s (%s), bias %s, kernel %s, distribution %s, rotation %s, blur %s "
+                "(radius %u), strength %s, power %s, output %s\n",
+                settings.sample_count, fmt(settings.radius).c_str(), radius_note.c_str(), fmt(settings.bias).c_str(),
+                cli::name(settings.kernel_shape), cli::name(settings.distribution), cli::name(settings.rotation),
+                cli::name(settings.blur), settings.blur_radius,
+                settings.strength == SSAO_STRENGTH_OFF ? "0 (off)" : fmt(settings.strength).c_str(),
+                fmt(settings.power).c_str(), cli::name(settings.output_format));
+    std::printf("  plugin saw: %s, %s depth%s%s, near %s, far %s\n", info.orthographic ? "orthographic" : "perspective",
+                info.depth_bits == 32 ? "32-bit float" : (std::to_string(info.depth_bits) + "-bit").c_str(),
+                info.reverse_z ? ", reverse-Z" : "", info.infinite_far ? ", infinite far" : "",
+                fmt(info.near_distance).c_str(), std::isinf(info.far_distance) ? "inf" : fmt(info.far_distance).c_str());
+    if (timings.available)
+        std::printf("  GPU times (frame %llu of %d): ao %.3f ms, blur %.3f ms, total %.3f ms\n",
+                    static_cast<unsigned long long>(timings.frame), o.frames, timings.ao_ms, timings.blur_ms,
+                    timings.total_ms);
+    else
+        std::printf("  GPU times: n/a (no timer results after %d frames)\n", o.frames);
+    const fs::path out_abs = fs::absolute(o.out_dir).lexically_normal();
+    std::printf("wrote %zu files to %s/:\n", files.names().size(), out_abs.c_str());
+    for (const std::string& n : files.names()) std::printf("  %s\n", (out_abs / n).c_str());
+    return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    cli::Options options;
+    std::string error;
+    switch (cli::parse(argc, argv, options, error)) {
+        case cli::ParseResult::Error:
+            std::fprintf(stderr, "ssao-host: %s\n", error.c_str());
+            return 2;
+        case cli::ParseResult::Help: {
+            // Defaults come from the plugin itself (a zeroed struct resolved),
+            // so the help never drifts from the library.
+            plugin::Library library;
+            ssao_settings defaults{};
+            defaults.size = sizeof defaults;
+            bool have = false;
+            if (library.open(options.plugin_path.empty() ? plugin::Library::default_path() : options.plugin_path, error)) {
+                ssao_settings zero{};
+                zero.size = sizeof zero;
+                have = library.api().resolve_settings(&zero, &defaults) == SSAO_OK;
+            }
+            std::fputs(cli::help_text(have ? &defaults : nullptr, default_scene_path()).c_str(), stdout);
+            return 0;
+        }
+        case cli::ParseResult::Run: break;
+    }
+    try {
+        return run(options);
+    } catch (const std::exception& e) {
+        std::fflush(stdout);
+        std::fprintf(stderr, "ssao-host: error: %s\n", e.what());
+        return 1;
+    }
+}
