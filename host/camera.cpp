@@ -10,21 +10,36 @@ namespace {
 
 bool finite3(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
+// Looks at the bounds' centre from above and in front, at the distance where all
+// eight corners of the bounding box fit the field of view with a 5% margin.
 Camera framed(const scene::Scene& s, float aspect) {
     Camera c;
     const glm::vec3 centre = 0.5f * (s.bounds_min + s.bounds_max);
     float radius = 0.5f * glm::length(s.bounds_max - s.bounds_min);
     if (!(radius > 0.0f) || !std::isfinite(radius)) radius = 1.0f;
-    const float half_v = 0.5f * c.yfov;
-    const float half_h = std::atan(std::tan(half_v) * std::max(aspect, 1e-3f));
-    const float half = std::min(half_v, half_h);
-    const float dist = radius / std::sin(half) * 1.1f;
-    const glm::vec3 dir = glm::normalize(glm::vec3(0.0f, 0.55f, 1.0f));
+    const float tan_v = std::tan(0.5f * c.yfov);
+    const float tan_h = tan_v * std::max(aspect, 1e-3f);
+    const glm::vec3 dir = glm::normalize(glm::vec3(0.0f, 0.55f, 1.0f));  // from the centre towards the eye
+    const glm::vec3 right = glm::normalize(glm::cross(glm::vec3(0.0f, 1.0f, 0.0f), dir));
+    const glm::vec3 up = glm::cross(dir, right);
+    const float margin = 1.05f;
+    float dist = 0.0f, half_height = 0.0f;
+    for (int i = 0; i < 8; ++i) {
+        const glm::vec3 corner((i & 1) ? s.bounds_max.x : s.bounds_min.x, (i & 2) ? s.bounds_max.y : s.bounds_min.y,
+                               (i & 4) ? s.bounds_max.z : s.bounds_min.z);
+        const glm::vec3 o = corner - centre;
+        const float x = std::fabs(glm::dot(o, right)) * margin, y = std::fabs(glm::dot(o, up)) * margin;
+        const float z = glm::dot(o, dir);
+        dist = std::max({dist, z + x / tan_h, z + y / tan_v});
+        half_height = std::max({half_height, y, x / std::max(aspect, 1e-3f)});
+    }
+    dist = std::max(dist, radius * 1e-3f);
+    if (!std::isfinite(dist)) dist = radius * 3.0f;
     c.target = centre;
     c.eye = centre + dir * dist;
     c.znear = std::max(dist - radius * 1.5f, dist * 0.01f);
     c.zfar = dist + radius * 2.0f;
-    c.ortho_half_height = radius * 1.1f;
+    c.ortho_half_height = half_height > 0.0f ? half_height : radius;
     return c;
 }
 

@@ -1,0 +1,195 @@
+#include "image_io.h"
+
+#include <tinyexr.h>
+
+#if defined(__GNUC__)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
+#pragma GCC diagnostic ignored "-Wsign-compare"
+#pragma GCC diagnostic ignored "-Wunused-function"
+#pragma GCC diagnostic ignored "-Wunused-parameter"
+#pragma GCC diagnostic ignored "-Wshadow"
+#endif
+#define STB_IMAGE_WRITE_IMPLEMENTATION
+#define STB_IMAGE_WRITE_STATIC
+#include <stb/stb_image_write.h>
+#if defined(__GNUC__)
+#pragma GCC diagnostic pop
+#endif
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+namespace refio {
+namespace {
+
+std::string exr_message(const char* err) {
+    std::string s = err ? err : "unknown error";
+    if (err) FreeEXRErrorMessage(err);
+    return s;
+}
+
+}  // namespace
+
+bool write_exr(const std::string& path, int width, int height, std::vector<Channel> channels, std::string& error) {
+    if (width <= 0 || height <= 0 || channels.empty()) {
+        error = "cannot write " + path + ": empty image.";
+        return false;
+    }
+    const size_t n = size_t(width) * size_t(height);
+    for (const auto& c : channels)
+        if (!c.data || c.data->size() != n || c.name.empty() || c.name.size() > 255) {
+            error = "cannot write " + path + ": channel '" + c.name + "' has the wrong size.";
+            return false;
+        }
+    std::sort(channels.begin(), channels.end(), [](const Channel& a, const Channel& b) { return a.name < b.name; });
+
+    EXRHeader header;
+    InitEXRHeader(&header);
+    EXRImage image;
+    InitEXRImage(&image);
+    std::vector<EXRChannelInfo> info(channels.size());
+    std::vector<int> types(channels.size(), TINYEXR_PIXELTYPE_FLOAT);
+    std::vector<const float*> ptrs(channels.size());
+    for (size_t i = 0; i < channels.size(); ++i) {
+        std::memset(&info[i], 0, sizeof(EXRChannelInfo));
+        std::strncpy(info[i].name, channels[i].name.c_str(), 255);
+        info[i].pixel_type = TINYEXR_PIXELTYPE_FLOAT;
+        info[i].x_sampling = info[i].y_sampling = 1;
+        ptrs[i] = channels[i].data->data();
+    }
+    image.num_channels = int(channels.size());
+    image.images = reinterpret_cast<unsigned char**>(const_cast<float**>(ptrs.data()));
+    image.width = width;
+    image.height = height;
+    header.num_channels = int(channels.size());
+    header.channels = info.data();
+    header.pixel_types = types.data();
+    header.requested_pixel_types = types.data();
+    header.compression_type = TINYEXR_COMPRESSIONTYPE_ZIP;
+    const char* err = nullptr;
+    const int rc = SaveEXRImageToFile(&image, &header, path.c_str(), &err);
+    if (rc != TINYEXR_SUCCESS) {
+        error = "cannot write " + path + ": " + exr_message(err) + ".";
+        return false;
+    }
+    return true;
+}
+
+namespace {
+
+struct LoadedExr {
+    EXRHeader header;
+    EXRImage image;
+    bool header_ok = false, image_ok = false;
+    LoadedExr() {
+        InitEXRHeader(&header);
+        InitEXRImage(&image);
+    }
+    ~LoadedExr() {
+        if (image_ok) FreeEXRImage(&image);
+        if (header_ok) FreeEXRHeader(&header);
+    }
+    LoadedExr(const LoadedExr&) = delete;
+    LoadedExr& operator=(const LoadedExr&) = delete;
+};
+
+bool parse_header(const std::string& path, LoadedExr& x, std::string& error) {
+    EXRVersion version;
+    if (ParseEXRVersionFromFile(&version, path.c_str()) != TINYEXR_SUCCESS) {
+        error = path + ": not a readable OpenEXR file (missing or not EXR).";
+        return false;
+    }
+    if (version.multipart || version.non_image) {
+        error = path + ": multi-part and deep EXR files are not supported.";
+        return false;
+    }
+    const char* err = nullptr;
+    if (ParseEXRHeaderFromFile(&x.header, &version, path.c_str(), &err) != TINYEXR_SUCCESS) {
+        error = path + ": cannot parse the EXR header (" + exr_message(err) + ").";
+        return false;
+    }
+    x.header_ok = true;
+    return true;
+}
+
+}  // namespace
+
+bool exr_has_channel(const std::string& path, const std::string& name) {
+    LoadedExr x;
+    std::string err;
+    if (!parse_header(path, x, err)) return false;
+    for (int c = 0; c < x.header.num_channels; ++c)
+        if (name == x.header.channels[c].name) return true;
+    return false;
+}
+
+bool read_exr_channel(const std::string& path, const std::vector<std::string>& preferred, std::vector<float>& out,
+                      int& width, int& height, std::string& error, std::string* used) {
+    LoadedExr x;
+    if (!parse_header(path, x, error)) return false;
+    if (x.header.tiled) {
+        error = path + ": tiled EXR files are not supported.";
+        return false;
+    }
+    if (x.header.num_channels <= 0) {
+        error = path + ": the EXR has no channels.";
+        return false;
+    }
+    for (int c = 0; c < x.header.num_channels; ++c)
+        if (x.header.pixel_types[c] == TINYEXR_PIXELTYPE_HALF) x.header.requested_pixel_types[c] = TINYEXR_PIXELTYPE_FLOAT;
+    const char* err = nullptr;
+    if (LoadEXRImageFromFile(&x.image, &x.header, path.c_str(), &err) != TINYEXR_SUCCESS) {
+        error = path + ": cannot read the EXR pixels (" + exr_message(err) + ").";
+        return false;
+    }
+    x.image_ok = true;
+    int chosen = -1;
+    for (const auto& p : preferred) {
+        for (int c = 0; c < x.header.num_channels && chosen < 0; ++c)
+            if (p == x.header.channels[c].name) chosen = c;
+        if (chosen >= 0) break;
+    }
+    if (chosen < 0) chosen = 0;
+    width = x.image.width;
+    height = x.image.height;
+    if (width <= 0 || height <= 0 || !x.image.images) {
+        error = path + ": the EXR image is empty.";
+        return false;
+    }
+    const size_t n = size_t(width) * size_t(height);
+    out.resize(n);
+    const unsigned char* src = x.image.images[chosen];
+    if (x.header.requested_pixel_types[chosen] == TINYEXR_PIXELTYPE_UINT) {
+        for (size_t i = 0; i < n; ++i) {
+            unsigned int v;
+            std::memcpy(&v, src + i * 4, 4);
+            out[i] = float(v);
+        }
+    } else {
+        std::memcpy(out.data(), src, n * sizeof(float));
+    }
+    if (used) *used = x.header.channels[chosen].name;
+    return true;
+}
+
+bool write_png_grey(const std::string& path, int width, int height, const std::vector<float>& values, std::string& error) {
+    const size_t n = size_t(width) * size_t(height);
+    if (width <= 0 || height <= 0 || values.size() != n) {
+        error = "cannot write " + path + ": wrong image size.";
+        return false;
+    }
+    std::vector<unsigned char> px(n);
+    for (size_t i = 0; i < n; ++i) {
+        const float v = std::isnan(values[i]) ? 1.0f : std::min(std::max(values[i], 0.0f), 1.0f);
+        px[i] = static_cast<unsigned char>(std::lround(v * 255.0f));
+    }
+    if (!stbi_write_png(path.c_str(), width, height, 1, px.data(), width)) {
+        error = "cannot write " + path + ".";
+        return false;
+    }
+    return true;
+}
+
+}  // namespace refio

@@ -1,0 +1,218 @@
+#include "metrics.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <sstream>
+
+namespace metrics {
+
+double percentile(std::vector<double> v, double q) {
+    if (v.empty()) return 0.0;
+    q = std::min(std::max(q, 0.0), 100.0);
+    // Nearest rank: the smallest value with at least q% of the values <= it.
+    size_t rank = size_t(std::ceil(q / 100.0 * double(v.size())));
+    if (rank < 1) rank = 1;
+    std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(rank - 1), v.end());
+    return v[rank - 1];
+}
+
+Stats stats_over(const std::vector<float>& test, const std::vector<float>& ref, const std::vector<uint8_t>& mask,
+                 const std::vector<float>* std_error, const std::string& name) {
+    Stats s;
+    s.mask = name;
+    double se = 0.0, sum = 0.0, noise = 0.0, noise2 = 0.0;
+    std::vector<double> abs_err;
+    for (size_t i = 0; i < mask.size() && i < test.size() && i < ref.size(); ++i) {
+        if (!mask[i]) continue;
+        if (!std::isfinite(test[i])) {
+            ++s.non_finite;
+            continue;
+        }
+        const double e = double(test[i]) - double(ref[i]);
+        se += e * e;
+        sum += e;
+        abs_err.push_back(std::fabs(e));
+        s.max_abs_error = std::max(s.max_abs_error, std::fabs(e));
+        if (std_error && i < std_error->size()) {
+            const double sd = (*std_error)[i];
+            noise += sd;
+            noise2 += sd * sd;
+        }
+        ++s.pixels;
+    }
+    if (s.pixels > 0) {
+        const double n = double(s.pixels);
+        s.rmse = std::sqrt(se / n);
+        s.mean_error = sum / n;
+        s.noise_mean = std_error ? noise / n : std::numeric_limits<double>::quiet_NaN();
+        s.noise_rms = std_error ? std::sqrt(noise2 / n) : std::numeric_limits<double>::quiet_NaN();
+    } else {
+        s.noise_mean = s.noise_rms = std::numeric_limits<double>::quiet_NaN();
+    }
+    s.psnr = s.rmse > 0.0 ? -20.0 * std::log10(s.rmse) : std::numeric_limits<double>::infinity();
+    if (s.pixels == 0) s.psnr = std::numeric_limits<double>::quiet_NaN();
+    s.p99_abs_error = percentile(std::move(abs_err), 99.0);
+    return s;
+}
+
+namespace {
+
+// Square (Chebyshev) dilation by r pixels, separable.
+std::vector<uint8_t> dilate(const std::vector<uint8_t>& m, int w, int h, int r) {
+    if (r <= 0) return m;
+    std::vector<uint8_t> tmp(m.size(), 0), out(m.size(), 0);
+    for (int y = 0; y < h; ++y) {
+        int last = -1000000;  // most recent set pixel to the left (incl. x + r lookahead)
+        // Two sweeps are simplest: distance to nearest set pixel in the row.
+        std::vector<int> dist(size_t(w), 1 << 29);
+        for (int x = 0; x < w; ++x) {
+            if (m[size_t(y) * size_t(w) + size_t(x)]) last = x;
+            dist[size_t(x)] = x - last;
+        }
+        last = 1000000;
+        for (int x = w - 1; x >= 0; --x) {
+            if (m[size_t(y) * size_t(w) + size_t(x)]) last = x;
+            dist[size_t(x)] = std::min(dist[size_t(x)], last - x);
+            tmp[size_t(y) * size_t(w) + size_t(x)] = dist[size_t(x)] <= r;
+        }
+    }
+    for (int x = 0; x < w; ++x) {
+        int last = -1000000;
+        std::vector<int> dist(size_t(h), 1 << 29);
+        for (int y = 0; y < h; ++y) {
+            if (tmp[size_t(y) * size_t(w) + size_t(x)]) last = y;
+            dist[size_t(y)] = y - last;
+        }
+        last = 1000000;
+        for (int y = h - 1; y >= 0; --y) {
+            if (tmp[size_t(y) * size_t(w) + size_t(x)]) last = y;
+            dist[size_t(y)] = std::min(dist[size_t(y)], last - y);
+            out[size_t(y) * size_t(w) + size_t(x)] = dist[size_t(y)] <= r;
+        }
+    }
+    return out;
+}
+
+}  // namespace
+
+bool build_masks(const Inputs& in, Masks& m, std::string& error) {
+    const int w = in.width, h = in.height;
+    if (w <= 0 || h <= 0 || !in.test || !in.reference) {
+        error = "empty images";
+        return false;
+    }
+    const size_t n = size_t(w) * size_t(h);
+    auto check = [&](const std::vector<float>* v, const char* what) {
+        if (v && v->size() != n) {
+            error = std::string("the ") + what + " image is " + std::to_string(v->size()) + " pixels, expected " +
+                    std::to_string(n) + " (" + std::to_string(w) + "x" + std::to_string(h) + ")";
+            return false;
+        }
+        return true;
+    };
+    if (!check(in.test, "tested") || !check(in.reference, "reference") || !check(in.sky, "coverage") ||
+        !check(in.std_error, "standard-error") || !check(in.depth, "depth"))
+        return false;
+
+    m.geometry.assign(n, 0);
+    for (size_t i = 0; i < n; ++i) {
+        bool geo = std::isfinite((*in.reference)[i]);
+        if (in.sky) geo = geo && (*in.sky)[i] > 0.5f;
+        if (in.depth) geo = geo && std::isfinite((*in.depth)[i]) && (*in.depth)[i] > 0.0f;
+        m.geometry[i] = geo;
+    }
+    // Edges: between geometry and sky, and depth (or AO) discontinuities.
+    std::vector<uint8_t> edge(n, 0);
+    auto mark_pair = [&](size_t a, size_t b) {
+        bool e = false;
+        if (m.geometry[a] != m.geometry[b]) e = true;
+        else if (m.geometry[a]) {
+            if (in.depth) {
+                const float za = (*in.depth)[a], zb = (*in.depth)[b];
+                e = std::fabs(za - zb) > in.depth_jump * std::min(za, zb);
+            } else {
+                e = std::fabs((*in.reference)[a] - (*in.reference)[b]) > in.ao_jump;
+            }
+        }
+        if (e) edge[a] = edge[b] = 1;
+    };
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const size_t i = size_t(y) * size_t(w) + size_t(x);
+            if (x + 1 < w) mark_pair(i, i + 1);
+            if (y + 1 < h) mark_pair(i, i + size_t(w));
+        }
+    const int k = std::max(in.band, 0);
+    std::vector<uint8_t> band = dilate(edge, w, h, std::max(k - 1, 0));
+    m.silhouette.assign(n, 0);
+    m.border.assign(n, 0);
+    m.interior.assign(n, 0);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const size_t i = size_t(y) * size_t(w) + size_t(x);
+            if (!m.geometry[i]) continue;
+            const int d = std::min(std::min(x, y), std::min(w - 1 - x, h - 1 - y));
+            m.border[i] = d < k;
+            m.silhouette[i] = k > 0 && band[i];
+            m.interior[i] = !m.border[i] && !m.silhouette[i];
+        }
+    return true;
+}
+
+bool compute(const Inputs& in, std::vector<Stats>& out, std::string& error) {
+    Masks m;
+    if (!build_masks(in, m, error)) return false;
+    out.clear();
+    out.push_back(stats_over(*in.test, *in.reference, m.geometry, in.std_error, "all"));
+    out.push_back(stats_over(*in.test, *in.reference, m.interior, in.std_error, "interior"));
+    out.push_back(stats_over(*in.test, *in.reference, m.silhouette, in.std_error, "silhouette"));
+    out.push_back(stats_over(*in.test, *in.reference, m.border, in.std_error, "border"));
+    return true;
+}
+
+namespace {
+std::string num(double v, int prec) {
+    if (std::isnan(v)) return "-";
+    if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.*f", prec, v);
+    return buf;
+}
+}  // namespace
+
+std::string table(const std::vector<Stats>& s) {
+    std::ostringstream o;
+    char line[256];
+    std::snprintf(line, sizeof line, "%-11s %9s %8s %9s %10s %9s %9s %10s %9s\n", "mask", "pixels", "RMSE", "PSNR(dB)",
+                  "mean err", "p99|err|", "max|err|", "ref noise", "noise rms");
+    o << line;
+    for (const auto& r : s) {
+        std::snprintf(line, sizeof line, "%-11s %9zu %8s %9s %10s %9s %9s %10s %9s\n", r.mask.c_str(), r.pixels,
+                      num(r.rmse, 5).c_str(), num(r.psnr, 2).c_str(), num(r.mean_error, 5).c_str(),
+                      num(r.p99_abs_error, 4).c_str(), num(r.max_abs_error, 4).c_str(), num(r.noise_mean, 5).c_str(),
+                      num(r.noise_rms, 5).c_str());
+        o << line;
+    }
+    return o.str();
+}
+
+std::string csv_header() {
+    return "label,mask,pixels,non_finite,rmse,psnr_db,mean_error,p99_abs_error,max_abs_error,ref_noise_mean,ref_noise_rms\n";
+}
+
+std::string csv_rows(const std::vector<Stats>& s, const std::string& label) {
+    std::ostringstream o;
+    for (const auto& r : s) {
+        std::string l = label;
+        for (char& c : l)
+            if (c == ',' || c == '\n') c = ' ';
+        o << l << ',' << r.mask << ',' << r.pixels << ',' << r.non_finite << ',' << num(r.rmse, 7) << ','
+          << num(r.psnr, 4) << ',' << num(r.mean_error, 7) << ',' << num(r.p99_abs_error, 7) << ','
+          << num(r.max_abs_error, 7) << ',' << num(r.noise_mean, 7) << ',' << num(r.noise_rms, 7) << '\n';
+    }
+    return o.str();
+}
+
+}  // namespace metrics

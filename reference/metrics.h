@@ -1,0 +1,59 @@
+// metrics.h - error of an AO image against the ray-traced reference, over masks.
+// Reused by ssao-error and the benchmark.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace metrics {
+
+struct Stats {
+    std::string mask;            // "all", "interior", "silhouette", "border"
+    size_t pixels = 0;           // pixels compared (geometry, finite in both images)
+    size_t non_finite = 0;       // geometry pixels where the tested image is NaN/inf (not compared)
+    double rmse = 0.0;
+    double psnr = 0.0;           // dB, peak 1; +inf when rmse == 0
+    double mean_error = 0.0;     // mean of (test - reference): < 0 too dark, > 0 too light
+    double p99_abs_error = 0.0;  // 99th percentile of |test - reference|
+    double max_abs_error = 0.0;
+    double noise_mean = 0.0;     // mean reference standard error (NaN when unknown)
+    double noise_rms = 0.0;      // sqrt(mean(std_error^2)): the RMSE the reference's own noise explains
+};
+
+struct Inputs {
+    int width = 0, height = 0;
+    const std::vector<float>* test = nullptr;       // AO under test
+    const std::vector<float>* reference = nullptr;  // ray-traced AO
+    const std::vector<float>* sky = nullptr;        // optional: 1 = geometry, 0 = sky (else NaN reference = sky)
+    const std::vector<float>* std_error = nullptr;  // optional: reference standard error
+    const std::vector<float>* depth = nullptr;      // optional: reference view depth (0 or non-finite = sky)
+    int band = 3;                                   // width of the silhouette and border bands, pixels
+    float depth_jump = 0.05f;                       // relative depth step counted as a discontinuity
+    float ao_jump = 0.25f;                          // without depth: AO step counted as an edge
+};
+
+// Masks (width*height, 1 = in the mask); geometry only.
+struct Masks {
+    std::vector<uint8_t> geometry, silhouette, border, interior;
+};
+bool build_masks(const Inputs& in, Masks& out, std::string& error);
+
+// Stats for all, interior, silhouette and border, in that order.
+bool compute(const Inputs& in, std::vector<Stats>& out, std::string& error);
+
+// Stats of `test` against `reference` over the pixels where mask != 0
+// (sky and non-finite pixels must already be excluded by the mask, except
+// that non-finite test values are counted and skipped).
+Stats stats_over(const std::vector<float>& test, const std::vector<float>& reference, const std::vector<uint8_t>& mask,
+                 const std::vector<float>* std_error, const std::string& name);
+
+// Percentile q in [0,100] of values (nearest rank); 0 for an empty list.
+double percentile(std::vector<double> values, double q);
+
+// Text table and CSV rows.
+std::string table(const std::vector<Stats>& s);
+std::string csv_header();
+std::string csv_rows(const std::vector<Stats>& s, const std::string& label);
+
+}  // namespace metrics

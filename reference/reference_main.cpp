@@ -1,0 +1,354 @@
+// ssao-reference: ray-traced ground-truth ambient occlusion (Embree 3) for the
+// same scene, camera and resolution as ssao-host.
+//
+// Outputs in --out DIR (written only once everything has been traced; on any
+// failure nothing is left behind):
+//   reference_ao.exr      channels Y = V_R in [0,1] and A = coverage (1 geometry, 0 sky).
+//                         Sky pixels have Y = 1 and A = 0: use A as the sky mask.
+//   reference_stderr.exr  channel Y = per-pixel standard error of Y (0 for sky)
+//   reference_ao.png      8-bit grey of Y (sky white)
+//   with --dump-buffers:
+//   reference_depth.exr   channel Z = view depth (-z_view, positive; 0 for sky)
+//   reference_normal.exr  channels R,G,B = view-space geometric normal facing the camera (0 for sky)
+// Row 0 of every image is the top row of the picture.
+#include "camera.h"
+#include "image_io.h"
+#include "raytracer.h"
+#include "scene.h"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <functional>
+#include <limits>
+#include <map>
+#include <sstream>
+#include <string>
+#include <sys/stat.h>
+#include <unistd.h>
+#include <vector>
+
+#ifndef SSAO_DEFAULT_SCENE
+#define SSAO_DEFAULT_SCENE "assets/models/spot-on-ground.glb"
+#endif
+
+namespace {
+
+struct Fail {
+    std::string message;
+};
+[[noreturn]] void fail(const std::string& m) { throw Fail{m}; }
+std::string quoted(const std::string& s) { return "'" + s + "'"; }
+
+double parse_number(const std::string& flag, const std::string& text, bool allow_inf = false) {
+    if (allow_inf && (text == "inf" || text == "infinity" || text == "+inf")) return std::numeric_limits<double>::infinity();
+    const char* b = text.c_str();
+    char* e = nullptr;
+    errno = 0;
+    const double v = std::strtod(b, &e);
+    if (text.empty() || e == b || *e != '\0' || errno == ERANGE || !std::isfinite(v))
+        fail(flag + " expects a finite number" + std::string(allow_inf ? " or 'inf'" : "") + ", got " + quoted(text));
+    return v;
+}
+
+long long parse_integer(const std::string& flag, const std::string& text, long long lo, long long hi) {
+    const char* b = text.c_str();
+    char* e = nullptr;
+    errno = 0;
+    const long long v = std::strtoll(b, &e, 10);
+    if (text.empty() || e == b || *e != '\0' || errno == ERANGE) fail(flag + " expects a whole number, got " + quoted(text));
+    if (v < lo || v > hi) fail(flag + " " + text + " is out of range " + std::to_string(lo) + ".." + std::to_string(hi));
+    return v;
+}
+
+float positive(const std::string& flag, const std::string& text) {
+    const double v = parse_number(flag, text);
+    if (!(v > 0.0) || v > 1e30) fail(flag + " " + text + " must be greater than 0");
+    return float(v);
+}
+
+glm::vec3 parse_vec3(const std::string& flag, const std::string& text) {
+    std::vector<std::string> parts;
+    std::string part;
+    std::istringstream in(text);
+    while (std::getline(in, part, ',')) parts.push_back(part);
+    if (parts.size() != 3 || (!text.empty() && text.back() == ','))
+        fail(flag + " expects three comma-separated numbers x,y,z, got " + quoted(text));
+    glm::vec3 v;
+    for (int i = 0; i < 3; ++i) v[i] = float(parse_number(flag, parts[size_t(i)]));
+    return v;
+}
+
+struct Options {
+    std::string scene_path;
+    std::string out_dir = "out";
+    int width = 800, height = 600;
+    std::optional<float> radius;
+    int samples = 1024;
+    uint32_t seed = 1;
+    int threads = 0;
+    bool dump_buffers = false;
+    bool quiet = false;
+    camera::Overrides cam;
+};
+
+const char* kHelp =
+    "ssao-reference - ray-traced ambient occlusion (Embree) for the same image ssao-host renders.\n"
+    "\n"
+    "usage: ssao-reference [SCENE.gltf|SCENE.glb] [flags]\n"
+    "  SCENE              glTF scene (default: the bundled spot-on-ground.glb)\n"
+    "  --width N          image width in pixels, 1..16384 (default 800, as ssao-host)\n"
+    "  --height N         image height in pixels, 1..16384 (default 600, as ssao-host)\n"
+    "  --radius R         AO radius in scene units, > 0 (default: the scene's extras.ssao.radius,\n"
+    "                     else 0.5, the plugin's default)\n"
+    "  --samples N        occlusion rays per pixel, 1..1048576 (default 1024)\n"
+    "  --seed N           sample-pattern seed, 0..4294967295 (default 1)\n"
+    "  --eye x,y,z        camera position (default: the scene's camera, else framed from the bounds)\n"
+    "  --target x,y,z     point the camera looks at\n"
+    "  --fov DEG          vertical field of view in degrees, (0, 180)\n"
+    "  --near N           near plane distance, > 0\n"
+    "  --far F|inf        far plane distance (inf: infinite far plane, perspective only)\n"
+    "  --ortho H          orthographic camera of half-height H (scene units)\n"
+    "  --reverse-z        reverse-Z projection (same rays; accepted for parity with ssao-host)\n"
+    "  --out DIR          output folder, created if missing (default out)\n"
+    "  --dump-buffers     also write reference_depth.exr and reference_normal.exr\n"
+    "  --threads N        worker threads (default: all cores)\n"
+    "  --quiet            no progress bar\n"
+    "  --help             this text\n"
+    "\n"
+    "Writes DIR/reference_ao.exr (Y = AO, A = coverage: 0 for sky, where Y = 1),\n"
+    "DIR/reference_stderr.exr (Y = standard error of the mean per pixel) and DIR/reference_ao.png.\n"
+    "AO is V_R: the cosine-weighted fraction of the hemisphere around the face normal with no hit\n"
+    "within the radius. Pixel centres, row 0 at the top, rays from inverse(projection * view).\n";
+
+enum class Parse { Run, Help, Error };
+
+Parse parse(int argc, char** argv, Options& o, std::string& error) {
+    using Handler = std::function<void(const std::string&, const std::string&)>;
+    const std::map<std::string, Handler> valued = {
+        {"--width", [&](const std::string& f, const std::string& v) { o.width = int(parse_integer(f, v, 1, 16384)); }},
+        {"--height", [&](const std::string& f, const std::string& v) { o.height = int(parse_integer(f, v, 1, 16384)); }},
+        {"--radius", [&](const std::string& f, const std::string& v) { o.radius = positive(f, v); }},
+        {"--samples", [&](const std::string& f, const std::string& v) { o.samples = int(parse_integer(f, v, 1, 1 << 20)); }},
+        {"--seed", [&](const std::string& f, const std::string& v) { o.seed = uint32_t(parse_integer(f, v, 0, 4294967295LL)); }},
+        {"--threads", [&](const std::string& f, const std::string& v) { o.threads = int(parse_integer(f, v, 1, 1024)); }},
+        {"--eye", [&](const std::string& f, const std::string& v) { o.cam.eye = parse_vec3(f, v); }},
+        {"--target", [&](const std::string& f, const std::string& v) { o.cam.target = parse_vec3(f, v); }},
+        {"--fov", [&](const std::string& f, const std::string& v) {
+             const double d = parse_number(f, v);
+             if (!(d > 0.0 && d < 180.0)) fail(f + " " + v + " is out of range (0, 180)");
+             o.cam.fov_deg = float(d);
+         }},
+        {"--near", [&](const std::string& f, const std::string& v) { o.cam.znear = positive(f, v); }},
+        {"--far", [&](const std::string& f, const std::string& v) {
+             const double d = parse_number(f, v, true);
+             if (!(d > 0.0)) fail(f + " " + v + " must be greater than 0");
+             o.cam.zfar = float(d);
+         }},
+        {"--ortho", [&](const std::string& f, const std::string& v) { o.cam.ortho_half_height = positive(f, v); }},
+        {"--out", [&](const std::string& f, const std::string& v) {
+             if (v.empty()) fail(f + " needs a folder name");
+             o.out_dir = v;
+         }},
+    };
+    const std::map<std::string, std::function<void()>> switches = {
+        {"--dump-buffers", [&] { o.dump_buffers = true; }},
+        {"--quiet", [&] { o.quiet = true; }},
+        {"--reverse-z", [&] { o.cam.reverse_z = true; }},
+    };
+    try {
+        bool help = false, scene_seen = false;
+        for (int i = 1; i < argc; ++i) {
+            std::string arg = argv[i];
+            if (arg == "--help" || arg == "-h") {
+                help = true;
+                continue;
+            }
+            if (arg.size() > 1 && arg[0] == '-') {
+                std::string value;
+                bool has_value = false;
+                const size_t eq = arg.find('=');
+                if (arg.rfind("--", 0) == 0 && eq != std::string::npos) {
+                    value = arg.substr(eq + 1);
+                    arg = arg.substr(0, eq);
+                    has_value = true;
+                }
+                if (auto s = switches.find(arg); s != switches.end()) {
+                    if (has_value) fail(arg + " takes no value");
+                    s->second();
+                    continue;
+                }
+                auto h = valued.find(arg);
+                if (h == valued.end()) fail("unknown flag " + quoted(arg) + " (see --help)");
+                if (!has_value) {
+                    if (i + 1 >= argc) fail(arg + " needs a value");
+                    value = argv[++i];
+                }
+                h->second(arg, value);
+                continue;
+            }
+            if (scene_seen) fail("more than one scene file given: " + quoted(o.scene_path) + " and " + quoted(arg));
+            o.scene_path = arg;
+            scene_seen = true;
+        }
+        if (help) return Parse::Help;
+        if (o.cam.ortho_half_height && o.cam.fov_deg) fail("--ortho and --fov exclude each other");
+        if (o.cam.ortho_half_height && o.cam.zfar && std::isinf(*o.cam.zfar))
+            fail("--far inf needs a perspective camera (not --ortho)");
+        if (o.cam.znear && o.cam.zfar && !(*o.cam.zfar > *o.cam.znear)) fail("--far must be greater than --near");
+        if (o.cam.eye && o.cam.target && glm::all(glm::equal(*o.cam.eye, *o.cam.target)))
+            fail("--eye and --target are the same point");
+        if (double(o.width) * double(o.height) * double(o.samples) > 4e12)
+            fail("--width x --height x --samples is absurdly large (more than 4e12 rays)");
+    } catch (const Fail& f) {
+        error = f.message;
+        return Parse::Error;
+    }
+    return Parse::Run;
+}
+
+bool make_dirs(const std::string& path, std::string& error) {
+    std::string cur;
+    for (size_t i = 0; i <= path.size(); ++i) {
+        if (i == path.size() || path[i] == '/') {
+            if (!cur.empty() && cur != "/" && cur != ".") {
+                struct stat st;
+                if (stat(cur.c_str(), &st) == 0) {
+                    if (!S_ISDIR(st.st_mode)) {
+                        error = "--out " + quoted(path) + ": " + quoted(cur) + " exists and is not a folder.";
+                        return false;
+                    }
+                } else if (mkdir(cur.c_str(), 0777) != 0 && errno != EEXIST) {
+                    error = "--out " + quoted(path) + ": cannot create " + quoted(cur) + " (" + std::strerror(errno) + ").";
+                    return false;
+                }
+            }
+        }
+        if (i < path.size()) cur += path[i];
+    }
+    if (access(path.c_str(), W_OK) != 0) {
+        error = "--out " + quoted(path) + ": the folder is not writable.";
+        return false;
+    }
+    return true;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    Options o;
+    std::string error;
+    switch (parse(argc, argv, o, error)) {
+        case Parse::Help: std::fputs(kHelp, stdout); return 0;
+        case Parse::Error: std::fprintf(stderr, "ssao-reference: %s.\n", error.c_str()); return 2;
+        case Parse::Run: break;
+    }
+    if (o.scene_path.empty()) o.scene_path = SSAO_DEFAULT_SCENE;
+
+    scene::Scene sc;
+    if (!scene::load(o.scene_path, sc, error)) {
+        std::fprintf(stderr, "ssao-reference: %s\n", error.c_str());
+        return 1;
+    }
+    const float aspect = float(o.width) / float(o.height);
+    const camera::Camera cam = camera::apply(sc, camera::choose(sc, aspect), o.cam);
+    const float radius = o.radius ? *o.radius : (sc.hints.radius && *sc.hints.radius > 0.0f ? *sc.hints.radius : 0.5f);
+
+    if (!make_dirs(o.out_dir, error)) {
+        std::fprintf(stderr, "ssao-reference: %s\n", error.c_str());
+        return 1;
+    }
+
+    raytrace::Tracer tracer(sc.mesh);
+    if (!tracer.ok()) {
+        std::fprintf(stderr, "ssao-reference: the ray tracer could not be built: %s.\n", tracer.error().c_str());
+        return 1;
+    }
+    std::printf("scene     %s: %zu triangles, bounds (%g, %g, %g) .. (%g, %g, %g)\n", o.scene_path.c_str(),
+                sc.mesh.triangle_count(), sc.bounds_min.x, sc.bounds_min.y, sc.bounds_min.z, sc.bounds_max.x,
+                sc.bounds_max.y, sc.bounds_max.z);
+    std::printf("camera    %s, eye (%g, %g, %g), target (%g, %g, %g), %s, near %g, far %g\n",
+                (o.cam.eye || o.cam.target) ? "from the flags" : (sc.camera ? "from the scene" : "framed from the bounds"), cam.eye.x, cam.eye.y, cam.eye.z, cam.target.x,
+                cam.target.y, cam.target.z,
+                cam.orthographic ? ("orthographic half-height " + std::to_string(cam.ortho_half_height)).c_str()
+                                 : ("fov " + std::to_string(glm::degrees(cam.yfov)) + " deg").c_str(),
+                cam.znear, cam.zfar);
+    std::printf("trace     %dx%d, radius %g, %d rays per pixel, seed %u\n", o.width, o.height, radius, o.samples, o.seed);
+    std::fflush(stdout);
+
+    raytrace::RenderOptions ro;
+    ro.width = o.width;
+    ro.height = o.height;
+    ro.radius = radius;
+    ro.samples = o.samples;
+    ro.seed = o.seed;
+    ro.threads = o.threads;
+    ro.progress = !o.quiet;
+    raytrace::Image img;
+    if (!tracer.render(cam, ro, img, error)) {
+        std::fprintf(stderr, "ssao-reference: %s.\n", error.c_str());
+        return 1;
+    }
+
+    // Write everything; on a failure remove what was written.
+    const std::string dir = o.out_dir;
+    std::vector<std::string> written;
+    auto undo = [&]() {
+        for (const auto& p : written) std::remove(p.c_str());
+    };
+    auto exr = [&](const std::string& name, std::vector<refio::Channel> ch) {
+        const std::string p = dir + "/" + name;
+        if (!refio::write_exr(p, img.width, img.height, std::move(ch), error)) return false;
+        written.push_back(p);
+        return true;
+    };
+    std::vector<float> nx, ny, nz;
+    if (o.dump_buffers) {
+        const size_t n = img.ao.size();
+        nx.resize(n);
+        ny.resize(n);
+        nz.resize(n);
+        for (size_t i = 0; i < n; ++i) {
+            nx[i] = img.normal[i * 3];
+            ny[i] = img.normal[i * 3 + 1];
+            nz[i] = img.normal[i * 3 + 2];
+        }
+    }
+    bool ok = exr("reference_ao.exr", {{"Y", &img.ao}, {"A", &img.mask}}) &&
+              exr("reference_stderr.exr", {{"Y", &img.std_error}});
+    if (ok) {
+        const std::string p = dir + "/reference_ao.png";
+        ok = refio::write_png_grey(p, img.width, img.height, img.ao, error);
+        if (ok) written.push_back(p);
+    }
+    if (ok && o.dump_buffers)
+        ok = exr("reference_depth.exr", {{"Z", &img.depth}}) &&
+             exr("reference_normal.exr", {{"R", &nx}, {"G", &ny}, {"B", &nz}});
+    if (!ok) {
+        undo();
+        std::fprintf(stderr, "ssao-reference: %s\n", error.c_str());
+        return 1;
+    }
+
+    double mean = 0.0, se = 0.0, se_max = 0.0;
+    size_t geo = 0;
+    for (size_t i = 0; i < img.ao.size(); ++i)
+        if (img.mask[i] > 0.5f) {
+            mean += img.ao[i];
+            se += img.std_error[i];
+            se_max = std::max(se_max, double(img.std_error[i]));
+            ++geo;
+        }
+    if (geo) {
+        mean /= double(geo);
+        se /= double(geo);
+    }
+    std::printf("result    %zu geometry pixels, %zu sky; mean AO %.4f\n", geo, img.ao.size() - geo, mean);
+    std::printf("noise     mean standard error %.5f, max %.5f (bound 0.5/sqrt(N) = %.5f)\n", se, se_max,
+                0.5 / std::sqrt(double(o.samples)));
+    std::printf("time      %.2f s, %.2f Mrays/s\n", img.seconds, double(img.rays) / std::max(img.seconds, 1e-9) * 1e-6);
+    for (const auto& p : written) std::printf("wrote     %s\n", p.c_str());
+    return 0;
+}
