@@ -1,0 +1,170 @@
+// Metrics on images whose answers are known.
+#include "image_io.h"
+#include "metrics.h"
+
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <limits>
+#include <unistd.h>
+
+TEST_SUITE("metrics") {
+
+TEST_CASE("constant offset: RMSE, PSNR, mean error, percentile") {
+    const int w = 20, h = 10;
+    std::vector<float> ref(size_t(w * h), 0.5f), test(size_t(w * h), 0.6f);
+    metrics::Inputs in;
+    in.width = w;
+    in.height = h;
+    in.test = &test;
+    in.reference = &ref;
+    in.band = 0;
+    std::vector<metrics::Stats> s;
+    std::string err;
+    REQUIRE(metrics::compute(in, s, err));
+    REQUIRE(s.size() == 4u);
+    CHECK(s[0].mask == "all");
+    CHECK(s[0].pixels == 200u);
+    CHECK(s[0].rmse == doctest::Approx(0.1).epsilon(1e-5));
+    CHECK(s[0].psnr == doctest::Approx(20.0).epsilon(1e-4));
+    CHECK(s[0].mean_error == doctest::Approx(0.1).epsilon(1e-5));
+    CHECK(s[0].p99_abs_error == doctest::Approx(0.1).epsilon(1e-5));
+    CHECK(std::isnan(s[0].noise_mean));
+    // With no bands everything is interior.
+    CHECK(s[1].pixels == 200u);
+    CHECK(s[2].pixels == 0u);
+    CHECK(s[3].pixels == 0u);
+}
+
+TEST_CASE("too dark gives a negative mean error; identical images give infinite PSNR") {
+    std::vector<float> ref(16, 0.8f), dark(16, 0.6f);
+    std::vector<uint8_t> all(16, 1);
+    const auto s = metrics::stats_over(dark, ref, all, nullptr, "all");
+    CHECK(s.mean_error == doctest::Approx(-0.2).epsilon(1e-5));
+    const auto same = metrics::stats_over(ref, ref, all, nullptr, "all");
+    CHECK(same.rmse == 0.0);
+    CHECK(std::isinf(same.psnr));
+}
+
+TEST_CASE("percentile is nearest-rank") {
+    std::vector<double> v;
+    for (int i = 0; i < 100; ++i) v.push_back(i / 100.0);
+    CHECK(metrics::percentile(v, 99.0) == doctest::Approx(0.98));
+    CHECK(metrics::percentile(v, 100.0) == doctest::Approx(0.99));
+    CHECK(metrics::percentile(v, 50.0) == doctest::Approx(0.49));
+    CHECK(metrics::percentile({}, 99.0) == 0.0);
+    CHECK(metrics::percentile({3.0}, 99.0) == 3.0);
+}
+
+TEST_CASE("known RMSE from mixed errors") {
+    // Errors 0.3 on one pixel in four, 0 elsewhere: RMSE = 0.3 / 2 = 0.15.
+    std::vector<float> ref(400, 0.5f), test(400, 0.5f);
+    for (size_t i = 0; i < 400; i += 4) test[i] = 0.8f;
+    std::vector<uint8_t> all(400, 1);
+    const auto s = metrics::stats_over(test, ref, all, nullptr, "all");
+    CHECK(s.rmse == doctest::Approx(0.15).epsilon(1e-5));
+    CHECK(s.psnr == doctest::Approx(-20.0 * std::log10(0.15)).epsilon(1e-4));
+    CHECK(s.mean_error == doctest::Approx(0.075).epsilon(1e-5));
+    CHECK(s.p99_abs_error == doctest::Approx(0.3).epsilon(1e-5));
+    CHECK(s.max_abs_error == doctest::Approx(0.3).epsilon(1e-5));
+}
+
+TEST_CASE("sky is excluded, non-finite test pixels are counted and skipped") {
+    const int w = 10, h = 10;
+    std::vector<float> ref(100, 0.5f), test(100, 0.5f), cover(100, 1.0f);
+    for (int i = 0; i < 10; ++i) {
+        cover[size_t(i)] = 0.0f;  // top row is sky
+        test[size_t(i)] = 100.0f;  // wildly wrong there: must not count
+    }
+    test[55] = std::numeric_limits<float>::quiet_NaN();
+    metrics::Inputs in;
+    in.width = w;
+    in.height = h;
+    in.test = &test;
+    in.reference = &ref;
+    in.sky = &cover;
+    in.band = 0;
+    std::vector<metrics::Stats> s;
+    std::string err;
+    REQUIRE(metrics::compute(in, s, err));
+    CHECK(s[0].pixels == 89u);
+    CHECK(s[0].non_finite == 1u);
+    CHECK(s[0].rmse == 0.0);
+}
+
+TEST_CASE("border band and silhouette band from depth") {
+    const int w = 20, h = 20;
+    std::vector<float> ref(400, 1.0f), test(400, 1.0f), depth(400, 10.0f), se(400, 0.01f);
+    for (int y = 0; y < h; ++y)
+        for (int x = 10; x < w; ++x) depth[size_t(y * w + x)] = 20.0f;  // a step between columns 9 and 10
+    metrics::Inputs in;
+    in.width = w;
+    in.height = h;
+    in.test = &test;
+    in.reference = &ref;
+    in.depth = &depth;
+    in.std_error = &se;
+    in.band = 3;
+    metrics::Masks m;
+    std::string err;
+    REQUIRE(metrics::build_masks(in, m, err));
+    size_t border = 0, sil = 0, interior = 0;
+    for (size_t i = 0; i < 400; ++i) {
+        border += m.border[i];
+        sil += m.silhouette[i];
+        interior += m.interior[i];
+    }
+    CHECK(border == size_t(400 - 14 * 14));
+    CHECK(sil == size_t(6 * 20));  // columns 7..12: three either side of the step
+    CHECK(interior == size_t(14 * 14 - 6 * 14));
+    std::vector<metrics::Stats> s;
+    REQUIRE(metrics::compute(in, s, err));
+    CHECK(s[0].noise_mean == doctest::Approx(0.01).epsilon(1e-5));
+    CHECK(s[0].noise_rms == doctest::Approx(0.01).epsilon(1e-5));
+    CHECK(metrics::table(s).find("silhouette") != std::string::npos);
+    CHECK(metrics::csv_rows(s, "x").find("x,border,204,") != std::string::npos);
+}
+
+TEST_CASE("mismatched sizes are an error") {
+    std::vector<float> a(16, 0.0f), b(15, 0.0f);
+    metrics::Inputs in;
+    in.width = 4;
+    in.height = 4;
+    in.test = &a;
+    in.reference = &b;
+    std::vector<metrics::Stats> s;
+    std::string err;
+    CHECK_FALSE(metrics::compute(in, s, err));
+    CHECK(err.find("reference") != std::string::npos);
+}
+
+TEST_CASE("EXR round trip keeps NaN-free floats and channel names") {
+    const auto dir = std::filesystem::temp_directory_path() / ("ssao_metrics_" + std::to_string(getpid()));
+    std::filesystem::create_directories(dir);
+    const std::string path = (dir / "t.exr").string();
+    std::vector<float> y(12), a(12);
+    for (size_t i = 0; i < 12; ++i) {
+        y[i] = float(i) / 11.0f;
+        a[i] = float(i % 2);
+    }
+    std::string err;
+    REQUIRE(refio::write_exr(path, 4, 3, {{"Y", &y}, {"A", &a}}, err));
+    std::vector<float> back;
+    int w = 0, h = 0;
+    std::string used;
+    REQUIRE(refio::read_exr_channel(path, {"Y"}, back, w, h, err, &used));
+    CHECK(w == 4);
+    CHECK(h == 3);
+    CHECK(used == "Y");
+    CHECK(back == y);
+    REQUIRE(refio::read_exr_channel(path, {"A"}, back, w, h, err));
+    CHECK(back == a);
+    CHECK(refio::exr_has_channel(path, "A"));
+    CHECK_FALSE(refio::exr_has_channel(path, "Z"));
+    CHECK_FALSE(refio::read_exr_channel((dir / "missing.exr").string(), {"Y"}, back, w, h, err));
+    CHECK(err.find("missing.exr") != std::string::npos);
+    std::filesystem::remove_all(dir);
+}
+
+}  // TEST_SUITE
