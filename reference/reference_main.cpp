@@ -101,8 +101,8 @@ const char* kHelp =
     "  SCENE              glTF scene (default: the bundled spot-on-ground.glb)\n"
     "  --width N          image width in pixels, 1..16384 (default 800, as ssao-host)\n"
     "  --height N         image height in pixels, 1..16384 (default 600, as ssao-host)\n"
-    "  --radius R         AO radius in scene units, > 0 (default: the scene's extras.ssao.radius,\n"
-    "                     else 0.5, the plugin's default)\n"
+    "  --radius R         AO radius in scene units, > 0 (default as ssao-host: the scene's\n"
+    "                     extras.ssao.radius, else 0.05 x the bounding-box diagonal)\n"
     "  --samples N        occlusion rays per pixel, 1..1048576 (default 1024)\n"
     "  --seed N           sample-pattern seed, 0..4294967295 (default 1)\n"
     "  --eye x,y,z        camera position (default: the scene's camera, else framed from the bounds)\n"
@@ -254,7 +254,22 @@ int main(int argc, char** argv) {
     }
     const float aspect = float(o.width) / float(o.height);
     const camera::Camera cam = camera::apply(sc, camera::choose(sc, aspect), o.cam);
-    const float radius = o.radius ? *o.radius : (sc.hints.radius && *sc.hints.radius > 0.0f ? *sc.hints.radius : 0.5f);
+    // Radius as ssao-host picks it: --radius, else the scene's hint, else 0.05 x the
+    // bounding-box diagonal (else the plugin's default 0.5).
+    const float diagonal = glm::length(sc.bounds_max - sc.bounds_min);
+    std::string radius_note = "--radius";
+    float radius = 0.5f;
+    if (o.radius) {
+        radius = *o.radius;
+    } else if (sc.hints.radius && std::isfinite(*sc.hints.radius) && *sc.hints.radius > 0.0f) {
+        radius = *sc.hints.radius;
+        radius_note = "scene hint";
+    } else if (std::isfinite(diagonal) && diagonal > 0.0f) {
+        radius = 0.05f * diagonal;
+        radius_note = "0.05 x scene diagonal " + std::to_string(diagonal);
+    } else {
+        radius_note = "plugin default";
+    }
 
     if (!make_dirs(o.out_dir, error)) {
         std::fprintf(stderr, "ssao-reference: %s\n", error.c_str());
@@ -275,7 +290,8 @@ int main(int argc, char** argv) {
                 cam.orthographic ? ("orthographic half-height " + std::to_string(cam.ortho_half_height)).c_str()
                                  : ("fov " + std::to_string(glm::degrees(cam.yfov)) + " deg").c_str(),
                 cam.znear, cam.zfar);
-    std::printf("trace     %dx%d, radius %g, %d rays per pixel, seed %u\n", o.width, o.height, radius, o.samples, o.seed);
+    std::printf("trace     %dx%d, radius %g (%s), %d rays per pixel, seed %u\n", o.width, o.height, radius,
+                radius_note.c_str(), o.samples, o.seed);
     std::fflush(stdout);
 
     raytrace::RenderOptions ro;
