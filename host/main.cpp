@@ -242,7 +242,7 @@ int run(const cli::Options& o) {
     const ssao_api& api = library.api();
 
     scene::Scene sc;
-    if (!scene::load(scene_path, sc, error)) throw RunError("cannot load '" + scene_path + "': " + error);
+    if (!scene::load(scene_path, sc, error)) throw RunError("cannot load the scene: " + error);
     if (sc.mesh.triangle_count() == 0) throw RunError("'" + scene_path + "' has nothing to draw (no triangles)");
 
     std::string radius_note;
@@ -441,7 +441,11 @@ int run(const cli::Options& o) {
                 depth_names[static_cast<int>(depth_format)], o.normal_space == cli::NormalSpace::World ? "world" : "view",
                 o.normal_format == cli::NormalFormat::RGBA8 ? "rgba8" : "rgba16f");
     std::printf("  camera: %s, %s, eye %s, target %s, near %s, far %s%s\n",
-                camera_from_scene ? "the scene's (with flag overrides)" : "framed from the bounds",
+                (std::string(camera_from_scene ? "the scene's" : "framed from the bounds") +
+                 (o.eye || o.target || o.fov_deg || o.znear || o.zfar || o.ortho_half_height || o.reverse_z
+                      ? " with flag overrides"
+                      : ""))
+                    .c_str(),
                 cam.orthographic ? ("orthographic half-height " + fmt(cam.ortho_half_height)).c_str()
                                  : ("perspective fov " + fmt(glm::degrees(cam.yfov)) + " deg").c_str(),
                 fmt(cam.eye).c_str(), fmt(cam.target).c_str(), fmt(cam.znear).c_str(),
@@ -498,8 +502,13 @@ int main(int argc, char** argv) {
     try {
         return run(options);
     } catch (const std::exception& e) {
+        // One line on stderr, whatever the message (loaders may embed newlines).
+        std::string message = e.what();
+        for (char& c : message)
+            if (c == '\n' || c == '\r') c = ' ';
+        while (!message.empty() && message.back() == ' ') message.pop_back();
         std::fflush(stdout);
-        std::fprintf(stderr, "ssao-host: error: %s\n", e.what());
+        std::fprintf(stderr, "ssao-host: error: %s\n", message.c_str());
         return 1;
     }
 }
