@@ -1,0 +1,649 @@
+// test_abi_gl.cpp - the ABI with a context on a real (headless EGL, Mesa)
+// GL 4.5 core context: NULL pointers and struct sizes of every context
+// function, every execute validation error, settings that must not apply,
+// which passes run, and the plugin-owned output across resizes.
+#include "abi_common.h"
+
+#include <glm/glm.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <limits>
+#include <string>
+#include <vector>
+
+using namespace unit;
+
+namespace {
+
+const float kNaN = std::numeric_limits<float>::quiet_NaN();
+const float kInf = std::numeric_limits<float>::infinity();
+
+constexpr int kW = 16, kH = 16;
+
+// Host textures of a flat wall facing the camera at view distance 10.
+struct Scene {
+    GLuint depth = 0, normal = 0;
+    ssao_inputs inputs{};
+    Scene(GladGLContext& gl, int w, int h) {
+        float proj[16];
+        default_projection(proj);
+        depth = make_depth(gl, w, h, depth_at(proj, 10.0f));
+        normal = make_normals(gl, w, h);
+        inputs = make_inputs(depth, normal);
+    }
+};
+
+// A failing execute returns `expected`, writes nothing into `out`, leaves
+// the GL state and the last frame info alone, and explains itself in
+// last_error (naming `keyword`) and in the log.
+void expect_execute_fails(GlFixture& f, const ssao_inputs& in, ssao_status expected, const char* keyword) {
+    const ssao_api& a = api();
+    GladGLContext& gl = f.gl();
+    set_host_state(gl);
+    const GlSnapshot state_before = snapshot(gl);
+    ssao_frame_info info_before = sized<ssao_frame_info>();
+    REQUIRE(a.get_frame_info(f.ctx, &info_before) == SSAO_OK);
+    ssao_output out = sentinel<ssao_output>();
+    const ssao_output out_before = out;
+    const size_t logged = f.log.entries.size();
+
+    CHECK(a.execute(f.ctx, &in, &out) == expected);
+
+    CHECK(same_bytes(out, out_before));
+    CHECK(snapshot(gl) == state_before);
+    ssao_frame_info info_after = sized<ssao_frame_info>();
+    REQUIRE(a.get_frame_info(f.ctx, &info_after) == SSAO_OK);
+    CHECK(same_bytes(info_after, info_before));
+    const std::string error = f.last_error();
+    CAPTURE(error);
+    CHECK_FALSE(error.empty());
+    CHECK(contains(error, keyword));
+    REQUIRE(f.log.entries.size() == logged + 1);
+    CHECK(f.log.entries.back().level == SSAO_LOG_ERROR);
+    CHECK(f.log.entries.back().message == error);
+}
+
+ssao_settings with_blur(ssao_blur blur) {
+    ssao_settings s = sized<ssao_settings>();
+    s.blur = blur;
+    return s;
+}
+
+void set_settings_ok(GlFixture& f, const ssao_settings& s) {
+    REQUIRE(api().set_settings(f.ctx, &s) == SSAO_OK);
+}
+
+ssao_settings current_settings(GlFixture& f) {
+    ssao_settings s = sized<ssao_settings>();
+    REQUIRE(api().get_settings(f.ctx, &s) == SSAO_OK);
+    return s;
+}
+
+void level0(GladGLContext& gl, GLuint tex, GLint& w, GLint& h, GLint& format) {
+    gl.GetTextureLevelParameteriv(tex, 0, GL_TEXTURE_WIDTH, &w);
+    gl.GetTextureLevelParameteriv(tex, 0, GL_TEXTURE_HEIGHT, &h);
+    gl.GetTextureLevelParameteriv(tex, 0, GL_TEXTURE_INTERNAL_FORMAT, &format);
+}
+
+std::vector<float> read_red(GladGLContext& gl, GLuint tex, int w, int h) {
+    std::vector<float> px(static_cast<size_t>(w) * h, -1.0f);
+    gl.PixelStorei(GL_PACK_ALIGNMENT, 1);
+    gl.GetTextureImage(tex, 0, GL_RED, GL_FLOAT, static_cast<GLsizei>(px.size() * sizeof(float)), px.data());
+    return px;
+}
+
+}  // namespace
+
+TEST_CASE("abi: every context function rejects NULL pointers") {
+    GlFixture f;
+    const ssao_api& a = api();
+    Scene scene(f.gl(), kW, kH);
+    ssao_settings s = sized<ssao_settings>();
+    ssao_output out = sized<ssao_output>();
+    ssao_timings t = sized<ssao_timings>();
+    ssao_frame_info fi = sized<ssao_frame_info>();
+
+    CHECK(a.set_settings(nullptr, &s) == SSAO_ERROR_NULL_POINTER);
+    CHECK(a.get_settings(nullptr, &s) == SSAO_ERROR_NULL_POINTER);
+    CHECK(a.execute(nullptr, &scene.inputs, &out) == SSAO_ERROR_NULL_POINTER);
+    CHECK(a.get_timings(nullptr, &t) == SSAO_ERROR_NULL_POINTER);
+    CHECK(a.get_frame_info(nullptr, &fi) == SSAO_ERROR_NULL_POINTER);
+    CHECK(a.destroy_context(nullptr) == SSAO_OK);
+
+    struct Call {
+        const char* what;
+        ssao_status (*call)(const ssao_api&, ssao_context*);
+    };
+    const Call calls[] = {
+        {"set_settings", [](const ssao_api& x, ssao_context* c) { return x.set_settings(c, nullptr); }},
+        {"get_settings", [](const ssao_api& x, ssao_context* c) { return x.get_settings(c, nullptr); }},
+        {"execute", [](const ssao_api& x, ssao_context* c) {
+             ssao_output o = sized<ssao_output>();
+             return x.execute(c, nullptr, &o);
+         }},
+        {"get_timings", [](const ssao_api& x, ssao_context* c) { return x.get_timings(c, nullptr); }},
+        {"get_frame_info", [](const ssao_api& x, ssao_context* c) { return x.get_frame_info(c, nullptr); }},
+    };
+    for (const Call& c : calls) {
+        const std::string what_ = c.what;
+        CAPTURE(what_);
+        // Clear last_error with a successful call first.
+        REQUIRE(a.execute(f.ctx, &scene.inputs, nullptr) == SSAO_OK);
+        const size_t logged = f.log.entries.size();
+        CHECK(c.call(a, f.ctx) == SSAO_ERROR_NULL_POINTER);
+        // get_settings and get_frame_info: see the may_fail test below.
+        if (what_ != "get_settings" && what_ != "get_frame_info") {
+            CHECK_FALSE(f.last_error().empty());
+            CHECK(f.log.entries.size() == logged + 1);
+        }
+    }
+    // `out` may be NULL.
+    CHECK(a.execute(f.ctx, &scene.inputs, nullptr) == SSAO_OK);
+}
+
+TEST_CASE("abi: every context function rejects wrong struct sizes and writes nothing") {
+    GlFixture f;
+    const ssao_api& a = api();
+    Scene scene(f.gl(), kW, kH);
+    REQUIRE(a.execute(f.ctx, &scene.inputs, nullptr) == SSAO_OK);
+    const ssao_settings settings_before = current_settings(f);
+    for (int delta : {-4, 4, -1000}) {
+        CAPTURE(delta);
+        auto bad = [delta](uint32_t size) { return static_cast<uint32_t>(static_cast<int>(size) + delta); };
+
+        ssao_settings s = sized<ssao_settings>();
+        s.radius = 3.0f;
+        s.size = bad(sizeof s);
+        CHECK(a.set_settings(f.ctx, &s) == SSAO_ERROR_STRUCT_SIZE);
+        CHECK_FALSE(f.last_error().empty());
+        CHECK(same_bytes(current_settings(f), settings_before));
+
+        ssao_inputs in = scene.inputs;
+        in.size = bad(sizeof in);
+        ssao_output out = sentinel<ssao_output>();
+        ssao_output out_before = out;
+        CHECK(a.execute(f.ctx, &in, &out) == SSAO_ERROR_STRUCT_SIZE);
+        CHECK(same_bytes(out, out_before));
+        CHECK(contains(f.last_error(), "size"));
+
+        out = sentinel<ssao_output>();
+        out.size = bad(sizeof out);
+        out_before = out;
+        CHECK(a.execute(f.ctx, &scene.inputs, &out) == SSAO_ERROR_STRUCT_SIZE);
+        CHECK(same_bytes(out, out_before));
+        CHECK(contains(f.last_error(), "size"));
+
+        ssao_timings t = sentinel<ssao_timings>();
+        t.size = bad(sizeof t);
+        const ssao_timings t_before = t;
+        CHECK(a.get_timings(f.ctx, &t) == SSAO_ERROR_STRUCT_SIZE);
+        CHECK(same_bytes(t, t_before));
+        CHECK_FALSE(f.last_error().empty());
+    }
+}
+
+TEST_CASE("abi: get_settings and get_frame_info failures are reported in last_error and the log" *
+          doctest::may_fail()) {
+    // The contract: "when a context is given, last_error(ctx) holds a sentence
+    // on the most recent failure of that context", and the log "receives
+    // every error message too".
+    GlFixture f;
+    const ssao_api& a = api();
+    Scene scene(f.gl(), kW, kH);
+    REQUIRE(a.execute(f.ctx, &scene.inputs, nullptr) == SSAO_OK);  // clears last_error
+    size_t logged = f.log.entries.size();
+    CHECK(a.get_settings(f.ctx, nullptr) == SSAO_ERROR_NULL_POINTER);
+    CHECK_FALSE(f.last_error().empty());
+    CHECK(f.log.entries.size() == ++logged);
+
+    REQUIRE(a.execute(f.ctx, &scene.inputs, nullptr) == SSAO_OK);
+    CHECK(a.get_frame_info(f.ctx, nullptr) == SSAO_ERROR_NULL_POINTER);
+    CHECK_FALSE(f.last_error().empty());
+    CHECK(f.log.entries.size() == ++logged);
+
+    REQUIRE(a.execute(f.ctx, &scene.inputs, nullptr) == SSAO_OK);
+
+    ssao_settings s = sentinel<ssao_settings>();
+    s.size = sizeof s - 4;
+    const ssao_settings s_before = s;
+    CHECK(a.get_settings(f.ctx, &s) == SSAO_ERROR_STRUCT_SIZE);
+    CHECK(same_bytes(s, s_before));
+    CHECK_FALSE(f.last_error().empty());
+    CHECK(f.log.entries.size() == ++logged);
+
+    REQUIRE(a.execute(f.ctx, &scene.inputs, nullptr) == SSAO_OK);
+    ssao_frame_info fi = sentinel<ssao_frame_info>();
+    fi.size = sizeof fi + 4;
+    const ssao_frame_info fi_before = fi;
+    CHECK(a.get_frame_info(f.ctx, &fi) == SSAO_ERROR_STRUCT_SIZE);
+    CHECK(same_bytes(fi, fi_before));
+    CHECK_FALSE(f.last_error().empty());
+    CHECK(f.log.entries.size() == ++logged);
+}
+
+TEST_CASE("abi: execute rejects missing or foreign or wrong-target textures") {
+    GlFixture f;
+    GladGLContext& gl = f.gl();
+    Scene scene(gl, kW, kH);
+    ssao_inputs in = scene.inputs;
+
+    in.depth_texture = 0;
+    expect_execute_fails(f, in, SSAO_ERROR_INVALID_TEXTURE, "depth_texture");
+    in = scene.inputs;
+    in.normal_texture = 0;
+    expect_execute_fails(f, in, SSAO_ERROR_INVALID_TEXTURE, "normal_texture");
+    in = scene.inputs;
+    in.depth_texture = 12345;  // not a texture name
+    expect_execute_fails(f, in, SSAO_ERROR_INVALID_TEXTURE, "depth_texture");
+    in = scene.inputs;
+    in.normal_texture = 12345;
+    expect_execute_fails(f, in, SSAO_ERROR_INVALID_TEXTURE, "normal_texture");
+
+    // A GL_TEXTURE_3D (GL 4.5 can tell the target).
+    GLuint tex3d = 0;
+    gl.GenTextures(1, &tex3d);
+    gl.BindTexture(GL_TEXTURE_3D, tex3d);
+    gl.TexImage3D(GL_TEXTURE_3D, 0, GL_DEPTH_COMPONENT32F, kW, kH, 1, 0, GL_DEPTH_COMPONENT, GL_FLOAT, nullptr);
+    gl.TexImage3D(GL_TEXTURE_3D, 0, GL_R32F, kW, kH, 1, 0, GL_RED, GL_FLOAT, nullptr);
+    gl.BindTexture(GL_TEXTURE_3D, 0);
+    in = scene.inputs;
+    in.depth_texture = tex3d;
+    expect_execute_fails(f, in, SSAO_ERROR_INVALID_TEXTURE, "depth_texture");
+    in = scene.inputs;
+    in.normal_texture = tex3d;
+    expect_execute_fails(f, in, SSAO_ERROR_INVALID_TEXTURE, "normal_texture");
+    // A 2D array texture of the right size.
+    GLuint array = 0;
+    gl.GenTextures(1, &array);
+    gl.BindTexture(GL_TEXTURE_2D_ARRAY, array);
+    gl.TexStorage3D(GL_TEXTURE_2D_ARRAY, 1, GL_DEPTH_COMPONENT32F, kW, kH, 1);
+    gl.BindTexture(GL_TEXTURE_2D_ARRAY, 0);
+    in = scene.inputs;
+    in.depth_texture = array;
+    expect_execute_fails(f, in, SSAO_ERROR_INVALID_TEXTURE, "depth_texture");
+
+    // A normal texture of another size.
+    const GLuint small_normal = make_normals(gl, kW, kH / 2);
+    in = scene.inputs;
+    in.normal_texture = small_normal;
+    expect_execute_fails(f, in, SSAO_ERROR_INVALID_TEXTURE, "normal_texture");
+    const GLuint wide_normal = make_normals(gl, kW + 1, kH);
+    in.normal_texture = wide_normal;
+    expect_execute_fails(f, in, SSAO_ERROR_INVALID_TEXTURE, "normal_texture");
+
+    // Output texture: not a texture, too small, not colour-renderable.
+    in = scene.inputs;
+    in.output_texture = 12345;
+    expect_execute_fails(f, in, SSAO_ERROR_INVALID_TEXTURE, "output_texture");
+    in.output_texture = make_color(gl, kW - 1, kH);
+    expect_execute_fails(f, in, SSAO_ERROR_INVALID_SIZE, "output_texture");
+    in.output_texture = make_depth(gl, kW, kH, 0.5f);
+    expect_execute_fails(f, in, SSAO_ERROR_UNSUPPORTED_FORMAT, "output_texture");
+}
+
+TEST_CASE("abi: execute rejects a colour texture as depth (UNSUPPORTED_FORMAT)") {
+    GlFixture f;
+    GladGLContext& gl = f.gl();
+    Scene scene(gl, kW, kH);
+    for (GLenum internal : {GLenum(GL_RGBA8), GLenum(GL_R32F), GLenum(GL_RGBA16F)}) {
+        CAPTURE(internal);
+        ssao_inputs in = scene.inputs;
+        in.depth_texture = make_color(gl, kW, kH, internal);
+        expect_execute_fails(f, in, SSAO_ERROR_UNSUPPORTED_FORMAT, "depth_texture");
+    }
+    // The documented depth formats are accepted.
+    for (GLenum internal : {GLenum(GL_DEPTH_COMPONENT16), GLenum(GL_DEPTH_COMPONENT24), GLenum(GL_DEPTH_COMPONENT32F),
+                            GLenum(GL_DEPTH24_STENCIL8), GLenum(GL_DEPTH32F_STENCIL8)}) {
+        CAPTURE(internal);
+        ssao_inputs in = scene.inputs;
+        GLuint depth = 0;
+        gl.GenTextures(1, &depth);
+        gl.BindTexture(GL_TEXTURE_2D, depth);
+        gl.TexStorage2D(GL_TEXTURE_2D, 1, internal, kW, kH);
+        gl.BindTexture(GL_TEXTURE_2D, 0);
+        in.depth_texture = depth;
+        ssao_output out = sized<ssao_output>();
+        CHECK(api().execute(f.ctx, &in, &out) == SSAO_OK);
+        ssao_frame_info fi = sized<ssao_frame_info>();
+        REQUIRE(api().get_frame_info(f.ctx, &fi) == SSAO_OK);
+        const uint32_t bits = internal == GL_DEPTH_COMPONENT16 ? 16u
+                              : (internal == GL_DEPTH_COMPONENT24 || internal == GL_DEPTH24_STENCIL8) ? 24u
+                                                                                                     : 32u;
+        CHECK(fi.depth_bits == bits);
+    }
+}
+
+TEST_CASE("abi: execute rejects bad viewports (INVALID_SIZE)") {
+    GlFixture f;
+    Scene scene(f.gl(), kW, kH);
+    const int32_t bad[][4] = {
+        {0, 0, 0, kH},      {0, 0, kW, 0},        {0, 1, 0, 0},       {0, 0, -4, kH},        {0, 0, kW, -1},
+        {0, 0, 20000, kH},  {0, 0, kW, 16385},    {0, 0, 16385, 16385}, {0, 0, kW + 1, kH},  {0, 0, kW, kH + 1},
+        {8, 8, 9, 8},       {-1, 0, 8, 8},        {0, -1, 8, 8},      {kW, 0, 1, 1},         {0, kH, 1, 1},
+        {0x7fffffff, 0, 16, 16}, {4, 4, 0x7fffffff, 4},
+    };
+    for (const auto& v : bad) {
+        CAPTURE(v[0]);
+        CAPTURE(v[1]);
+        CAPTURE(v[2]);
+        CAPTURE(v[3]);
+        ssao_inputs in = scene.inputs;
+        std::memcpy(in.viewport, v, sizeof in.viewport);
+        expect_execute_fails(f, in, SSAO_ERROR_INVALID_SIZE, "viewport");
+    }
+    // A viewport inside the textures is fine.
+    ssao_inputs in = scene.inputs;
+    const int32_t ok[4] = {3, 2, 9, 7};
+    std::memcpy(in.viewport, ok, sizeof ok);
+    CHECK(api().execute(f.ctx, &in, nullptr) == SSAO_OK);
+}
+
+TEST_CASE("abi: execute rejects bad projections and view matrices and enums") {
+    GlFixture f;
+    Scene scene(f.gl(), kW, kH);
+    for (int i : {0, 5, 10, 11, 14, 15}) {
+        CAPTURE(i);
+        ssao_inputs in = scene.inputs;
+        in.projection[i] = kNaN;
+        expect_execute_fails(f, in, SSAO_ERROR_INVALID_VALUE, "projection");
+        in.projection[i] = -kInf;
+        expect_execute_fails(f, in, SSAO_ERROR_INVALID_VALUE, "projection");
+    }
+    ssao_inputs in = scene.inputs;
+    std::memset(in.projection, 0, sizeof in.projection);
+    expect_execute_fails(f, in, SSAO_ERROR_INVALID_PROJECTION, "projection");
+    in = scene.inputs;
+    const glm::mat4 lh = glm::perspectiveLH(glm::radians(60.0f), 1.0f, 1.0f, 100.0f);
+    std::memcpy(in.projection, glm::value_ptr(lh), sizeof in.projection);
+    expect_execute_fails(f, in, SSAO_ERROR_INVALID_PROJECTION, "projection");
+    in = scene.inputs;
+    in.projection[14] = 0.0f;  // singular: no depth offset
+    expect_execute_fails(f, in, SSAO_ERROR_INVALID_PROJECTION, "projection");
+
+    // World-space normals read view_matrix, which must be finite.
+    in = scene.inputs;
+    in.normal_space = SSAO_NORMAL_SPACE_WORLD;
+    in.view_matrix[5] = kNaN;
+    expect_execute_fails(f, in, SSAO_ERROR_INVALID_VALUE, "view_matrix");
+
+    for (int32_t raw : {3, -1, 1000}) {
+        CAPTURE(raw);
+        in = scene.inputs;
+        set_raw(in.normal_space, raw);
+        expect_execute_fails(f, in, SSAO_ERROR_INVALID_ENUM, "normal_space");
+        in = scene.inputs;
+        set_raw(in.normal_packing, raw);
+        expect_execute_fails(f, in, SSAO_ERROR_INVALID_ENUM, "normal_packing");
+        in = scene.inputs;
+        set_raw(in.clip_range, raw);
+        expect_execute_fails(f, in, SSAO_ERROR_INVALID_ENUM, "clip_range");
+    }
+}
+
+TEST_CASE("abi: set_settings with invalid values changes nothing") {
+    GlFixture f;
+    const ssao_api& a = api();
+    ssao_settings custom = sized<ssao_settings>();
+    custom.sample_count = 24;
+    custom.radius = 1.25f;
+    custom.blur = SSAO_BLUR_GAUSSIAN;
+    set_settings_ok(f, custom);
+    const ssao_settings before = current_settings(f);
+    CHECK(before.sample_count == 24u);
+    CHECK(before.radius == 1.25f);
+
+    struct Bad {
+        const char* what;
+        ssao_status expected;
+        const char* keyword;
+        void (*edit)(ssao_settings&);
+    };
+    const Bad bad[] = {
+        {"radius NaN", SSAO_ERROR_INVALID_VALUE, "radius", [](ssao_settings& s) { s.radius = kNaN; }},
+        {"radius -1", SSAO_ERROR_INVALID_VALUE, "radius", [](ssao_settings& s) { s.radius = -1.0f; }},
+        {"blur 7", SSAO_ERROR_INVALID_ENUM, "blur", [](ssao_settings& s) { set_raw(s.blur, 7); }},
+        {"blur -1", SSAO_ERROR_INVALID_ENUM, "blur", [](ssao_settings& s) { set_raw(s.blur, -1); }},
+        {"sample_count 65", SSAO_ERROR_INVALID_VALUE, "sample_count", [](ssao_settings& s) { s.sample_count = 65; }},
+        {"strength inf", SSAO_ERROR_INVALID_VALUE, "strength", [](ssao_settings& s) { s.strength = kInf; }},
+        {"output_format 9", SSAO_ERROR_INVALID_ENUM, "output_format",
+         [](ssao_settings& s) { set_raw(s.output_format, 9); }},
+    };
+    for (const Bad& b : bad) {
+        const std::string what_ = b.what;
+        CAPTURE(what_);
+        ssao_settings s = sized<ssao_settings>();
+        s.sample_count = 8;  // a valid change that must not apply either
+        b.edit(s);
+        const size_t logged = f.log.entries.size();
+        CHECK(a.set_settings(f.ctx, &s) == b.expected);
+        CHECK(same_bytes(current_settings(f), before));
+        const std::string error = f.last_error();
+        CAPTURE(error);
+        CHECK(contains(error, b.keyword));
+        REQUIRE(f.log.entries.size() == logged + 1);
+        CHECK(f.log.entries.back().message == error);
+    }
+    // get_settings returns resolved values, never a zero that means default.
+    set_settings_ok(f, sized<ssao_settings>());
+    ssao_settings resolved = sentinel<ssao_settings>();
+    REQUIRE(a.resolve_settings(&custom, &resolved) == SSAO_OK);
+    ssao_settings zero = sized<ssao_settings>();
+    REQUIRE(a.resolve_settings(&zero, &resolved) == SSAO_OK);
+    CHECK(same_bytes(current_settings(f), resolved));
+}
+
+TEST_CASE("abi: create_context with initial settings uses them") {
+    ssao_settings s = sized<ssao_settings>();
+    s.sample_count = 40;
+    s.strength = SSAO_STRENGTH_OFF;
+    GlFixture f(&s);
+    const ssao_settings got = current_settings(f);
+    CHECK(got.sample_count == 40u);
+    CHECK(got.strength == SSAO_STRENGTH_OFF);
+    CHECK(got.radius == 0.5f);
+}
+
+TEST_CASE("abi: a valid execute runs the passes the settings call for") {
+    GlFixture f;
+    const ssao_api& a = api();
+    GladGLContext& gl = f.gl();
+    Scene scene(gl, kW, kH);
+
+    struct Expect {
+        const char* what;
+        ssao_settings settings;
+        uint32_t passes;
+    };
+    ssao_settings off = sized<ssao_settings>();
+    off.strength = SSAO_STRENGTH_OFF;
+    ssao_settings off_no_blur = off;
+    off_no_blur.blur = SSAO_BLUR_NONE;
+    const Expect expect[] = {
+        {"defaults", sized<ssao_settings>(), SSAO_PASS_AO | SSAO_PASS_BLUR_X | SSAO_PASS_BLUR_Y},
+        {"depth-aware", with_blur(SSAO_BLUR_DEPTH_AWARE), SSAO_PASS_AO | SSAO_PASS_BLUR_X | SSAO_PASS_BLUR_Y},
+        {"gaussian", with_blur(SSAO_BLUR_GAUSSIAN), SSAO_PASS_AO | SSAO_PASS_BLUR_X | SSAO_PASS_BLUR_Y},
+        {"box 4x4", with_blur(SSAO_BLUR_BOX_4X4), SSAO_PASS_AO | SSAO_PASS_BLUR_X},
+        {"no blur", with_blur(SSAO_BLUR_NONE), SSAO_PASS_AO},
+        {"strength off", off, SSAO_PASS_CLEAR},
+        {"strength off, no blur", off_no_blur, SSAO_PASS_CLEAR},
+    };
+    for (const Expect& e : expect) {
+        const std::string what_ = e.what;
+        CAPTURE(what_);
+        set_settings_ok(f, e.settings);
+        ssao_output out = sentinel<ssao_output>();
+        REQUIRE(a.execute(f.ctx, &scene.inputs, &out) == SSAO_OK);
+        CHECK(out.size == sizeof(ssao_output));
+        CHECK(out.passes_run == e.passes);
+        CHECK(out.texture != 0u);
+        CHECK(out.texture != scene.depth);
+        CHECK(out.texture != scene.normal);
+        CHECK(out.origin[0] == 0);
+        CHECK(out.origin[1] == 0);
+        CHECK(gl.IsTexture(out.texture) == GL_TRUE);
+        const std::vector<float> ao = read_red(gl, out.texture, kW, kH);
+        float lo = 2.0f, hi = -1.0f;
+        for (float v : ao) {
+            lo = std::min(lo, v);
+            hi = std::max(hi, v);
+        }
+        CAPTURE(lo);
+        CAPTURE(hi);
+        if (e.passes == SSAO_PASS_CLEAR) {
+            CHECK(lo == 1.0f);  // strength 0: exactly 1 everywhere
+            CHECK(hi == 1.0f);
+        } else {
+            // A flat wall facing the camera is not occluded by a hemisphere kernel.
+            CHECK(lo > 0.9f);
+            CHECK(hi <= 1.0f);
+        }
+    }
+    // The frame info describes the inputs of the last execute.
+    ssao_frame_info fi = sentinel<ssao_frame_info>();
+    REQUIRE(a.get_frame_info(f.ctx, &fi) == SSAO_OK);
+    CHECK(fi.size == sizeof(ssao_frame_info));
+    CHECK(fi.orthographic == 0u);
+    CHECK(fi.reverse_z == 0u);
+    CHECK(fi.infinite_far == 0u);
+    CHECK(fi.depth_bits == 32u);
+    CHECK(fi.near_distance == doctest::Approx(1.0).epsilon(1e-4));
+    CHECK(fi.far_distance == doctest::Approx(100.0).epsilon(1e-3));
+}
+
+TEST_CASE("abi: a host output texture is written at the viewport and returned") {
+    GlFixture f;
+    const ssao_api& a = api();
+    GladGLContext& gl = f.gl();
+    Scene scene(gl, 32, 32);
+    const GLuint host_out = make_color(gl, 32, 32, GL_RGBA8);
+    ssao_inputs in = scene.inputs;
+    in.output_texture = host_out;
+    const int32_t viewport[4] = {4, 6, 16, 12};
+    std::memcpy(in.viewport, viewport, sizeof viewport);
+    ssao_output out = sentinel<ssao_output>();
+    REQUIRE(a.execute(f.ctx, &in, &out) == SSAO_OK);
+    CHECK(out.texture == host_out);
+    CHECK(out.origin[0] == 4);
+    CHECK(out.origin[1] == 6);
+    CHECK(out.passes_run == (SSAO_PASS_AO | SSAO_PASS_BLUR_X | SSAO_PASS_BLUR_Y));
+}
+
+TEST_CASE("abi: the plugin-owned output follows the viewport size and does not leak") {
+    GlFixture f;
+    const ssao_api& a = api();
+    GladGLContext& gl = f.gl();
+    Scene scene(gl, 48, 40);
+
+    // Runs execute with viewport {x, y, w, h}; (w, h) = (0, 0) with x = y = 0
+    // means the whole 48x40 texture.
+    auto run = [&](int x, int y, int w, int h) {
+        ssao_inputs in = scene.inputs;
+        const int32_t v[4] = {x, y, w, h};
+        std::memcpy(in.viewport, v, sizeof v);
+        ssao_output out = sized<ssao_output>();
+        REQUIRE(a.execute(f.ctx, &in, &out) == SSAO_OK);
+        CHECK(out.origin[0] == 0);  // texel (0,0) = viewport pixel (x,y)
+        CHECK(out.origin[1] == 0);
+        GLint tw = 0, th = 0, format = 0;
+        level0(gl, out.texture, tw, th, format);
+        CHECK(tw == (w == 0 ? 48 : w));
+        CHECK(th == (h == 0 ? 40 : h));
+        return std::make_pair(out.texture, format);
+    };
+
+    const auto first = run(0, 0, 16, 16);
+    CHECK(first.second == GL_R8);  // the default output format
+    const auto second = run(0, 0, 32, 24);
+    CHECK(second.first == first.first);
+    const LiveObjects live = count_live(gl);
+
+    const int sizes[][4] = {{0, 0, 48, 40}, {0, 0, 8, 5}, {3, 2, 1, 1}, {1, 1, 47, 39}, {5, 7, 32, 24}, {0, 0, 0, 0}};
+    for (int round = 0; round < 10; ++round)
+        for (const auto& v : sizes) {
+            CAPTURE(round);
+            CAPTURE(v[2]);
+            CAPTURE(v[3]);
+            CHECK(run(v[0], v[1], v[2], v[3]).first == first.first);
+        }
+    const LiveObjects after = count_live(gl);
+    CHECK(after.textures == live.textures);
+    CHECK(after.buffers == live.buffers);
+    CHECK(after.framebuffers == live.framebuffers);
+
+    // Switching the output format re-specifies the texture (R16F) at the viewport size.
+    ssao_settings s = sized<ssao_settings>();
+    s.output_format = SSAO_OUTPUT_R16F;
+    set_settings_ok(f, s);
+    const auto r16 = run(0, 0, 20, 10);
+    CHECK(r16.second == GL_R16F);
+    s.output_format = SSAO_OUTPUT_R8;
+    set_settings_ok(f, s);
+    const auto r8 = run(0, 0, 20, 10);
+    CHECK(r8.second == GL_R8);
+    CHECK(count_live(gl).textures == live.textures);
+}
+
+TEST_CASE("abi: destroy_context deletes every GL object the plugin made") {
+    auto egl = make_egl();
+    GladGLContext& gl = egl->gl();
+    const ssao_api& a = api();
+    Scene scene(gl, kW, kH);
+    const LiveObjects before = count_live(gl);
+
+    ssao_context_desc desc = sized<ssao_context_desc>();
+    desc.get_proc_address = eglctx::Context::get_proc;
+    ssao_context* ctx = nullptr;
+    REQUIRE(a.create_context(&desc, &ctx) == SSAO_OK);
+    // Exercise every lazily made object: blur temporaries, output, timers.
+    for (int i = 0; i < 6; ++i) REQUIRE(a.execute(ctx, &scene.inputs, nullptr) == SSAO_OK);
+    ssao_timings t = sized<ssao_timings>();
+    REQUIRE(a.get_timings(ctx, &t) == SSAO_OK);
+    const LiveObjects during = count_live(gl);
+    CHECK(during.textures > before.textures);  // the check below can fail
+    CHECK(during.programs > before.programs);
+    REQUIRE(a.destroy_context(ctx) == SSAO_OK);
+
+    const LiveObjects after = count_live(gl);
+    CHECK(after.textures == before.textures);
+    CHECK(after.buffers == before.buffers);
+    CHECK(after.framebuffers == before.framebuffers);
+    CHECK(after.vertex_arrays == before.vertex_arrays);
+    CHECK(after.samplers == before.samplers);
+    CHECK(after.programs == before.programs);
+    CHECK(after.queries == before.queries);
+    // The host's textures are untouched.
+    CHECK(gl.IsTexture(scene.depth) == GL_TRUE);
+    CHECK(gl.IsTexture(scene.normal) == GL_TRUE);
+}
+
+TEST_CASE("abi: create_context is GL_LOAD when one GL 3.3 function is missing" * doctest::may_fail()) {
+    // Each run is a fresh process (a NULL function pointer called by the
+    // plugin would crash it); the child exits with create_context's status.
+    const char* names[] = {"glCreateShader",     // checked by the plugin: the harness's control case
+                           "glGenSamplers",      "glSamplerParameteri", "glGenVertexArrays",
+                           "glUniformBlockBinding", "glDrawArrays",     "glBindBufferBase",
+                           "glCheckFramebufferStatus", "glClearBufferfv"};
+    for (const char* name : names) {
+        const std::string what_ = name;
+        CAPTURE(what_);
+        const pid_t pid = fork();
+        REQUIRE(pid >= 0);
+        if (pid == 0) {
+            execl("/proc/self/exe", "unit_abi", "--unit-child-missing", name, static_cast<char*>(nullptr));
+            _exit(127);
+        }
+        int status = 0;
+        REQUIRE(waitpid(pid, &status, 0) == pid);
+        const bool crashed = WIFSIGNALED(status);
+        const int code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+        CAPTURE(crashed);
+        CAPTURE(code);
+        CHECK_FALSE(crashed);
+        CHECK(code == SSAO_ERROR_GL_LOAD);
+    }
+}

@@ -1,0 +1,298 @@
+// test_abi_nogl.cpp - the ABI entry points that need no GL context, through
+// the dlopened libssao.so: ssao_get_api, status_string, resolve_settings,
+// preset_settings, and every create_context failure that happens before (or
+// without) a usable GL context.
+#include "abi_common.h"
+
+#include <glad/gl.h>
+
+#include <cmath>
+#include <limits>
+#include <set>
+#include <string>
+
+using namespace unit;
+
+namespace {
+
+const float kNaN = std::numeric_limits<float>::quiet_NaN();
+
+}  // namespace
+
+TEST_CASE("abi: plugin::Library opens the plugin and the table is complete") {
+    plugin::Library lib;
+    std::string error;
+    REQUIRE_MESSAGE(lib.open(plugin::Library::default_path(), error), error);
+    const ssao_api& a = lib.api();
+    CHECK(a.size == sizeof(ssao_api));
+    CHECK(a.version == SSAO_API_VERSION);
+    CHECK((a.status_string != nullptr));
+    CHECK((a.resolve_settings != nullptr));
+    CHECK((a.preset_settings != nullptr));
+    CHECK((a.create_context != nullptr));
+    CHECK((a.destroy_context != nullptr));
+    CHECK((a.set_settings != nullptr));
+    CHECK((a.get_settings != nullptr));
+    CHECK((a.execute != nullptr));
+    CHECK((a.get_timings != nullptr));
+    CHECK((a.get_frame_info != nullptr));
+    CHECK((a.last_error != nullptr));
+}
+
+TEST_CASE("abi: ssao_get_api rejects NULL and a too-small table and other versions and writes nothing then") {
+    const PFN_ssao_get_api get_api = raw_get_api();
+    CHECK(get_api(SSAO_API_VERSION, nullptr) == SSAO_ERROR_NULL_POINTER);
+
+    for (uint32_t size : {0u, 4u, 8u, static_cast<uint32_t>(sizeof(ssao_api) - 8), static_cast<uint32_t>(sizeof(ssao_api) - 1)}) {
+        CAPTURE(size);
+        ssao_api table = sentinel<ssao_api>();
+        table.size = size;
+        const ssao_api before = table;
+        CHECK(get_api(SSAO_API_VERSION, &table) == SSAO_ERROR_STRUCT_SIZE);
+        CHECK(same_bytes(table, before));
+    }
+    const uint32_t refused[] = {SSAO_MAKE_VERSION(0, 0), SSAO_MAKE_VERSION(0, 9), SSAO_MAKE_VERSION(2, 0),
+                                SSAO_MAKE_VERSION(2, 5), SSAO_MAKE_VERSION(1, 1), SSAO_MAKE_VERSION(1, 0xffff),
+                                0xffffffffu};
+    for (uint32_t version : refused) {
+        CAPTURE(version);
+        ssao_api table = sentinel<ssao_api>();
+        const ssao_api before = table;
+        CHECK(get_api(version, &table) == SSAO_ERROR_VERSION_MISMATCH);
+        CHECK(same_bytes(table, before));
+    }
+    ssao_api table = sentinel<ssao_api>();
+    REQUIRE(get_api(SSAO_MAKE_VERSION(1, 0), &table) == SSAO_OK);
+    CHECK(table.version == SSAO_API_VERSION);
+    CHECK(SSAO_VERSION_MAJOR(table.version) == 1u);
+    CHECK((table.execute != nullptr));
+    CHECK((table.last_error != nullptr));
+}
+
+TEST_CASE("abi: status_string is a distinct non-empty sentence per status and 'unknown status' otherwise") {
+    const ssao_api& a = api();
+    std::set<std::string> seen;
+    for (int s = SSAO_OK; s <= SSAO_ERROR_INTERNAL; ++s) {
+        CAPTURE(s);
+        ssao_status st;
+        set_raw(st, s);
+        const char* text = a.status_string(st);
+        REQUIRE((text != nullptr));
+        CHECK(std::strlen(text) > 0);
+        CHECK(std::string(text) != "unknown status");
+        CHECK(seen.insert(text).second);
+    }
+    CHECK(seen.size() == 16);
+    for (int32_t s : {16, 17, 100, -1, 0x7fffffff}) {
+        CAPTURE(s);
+        ssao_status st;
+        set_raw(st, s);
+        const char* text = a.status_string(st);
+        REQUIRE((text != nullptr));
+        CHECK(std::string(text) == "unknown status");
+    }
+}
+
+TEST_CASE("abi: resolve_settings and preset_settings check pointers and sizes") {
+    const ssao_api& a = api();
+    ssao_settings in = sized<ssao_settings>();
+    ssao_settings out = sized<ssao_settings>();
+    CHECK(a.resolve_settings(nullptr, &out) == SSAO_ERROR_NULL_POINTER);
+    CHECK(a.resolve_settings(&in, nullptr) == SSAO_ERROR_NULL_POINTER);
+    CHECK(a.resolve_settings(nullptr, nullptr) == SSAO_ERROR_NULL_POINTER);
+    CHECK(a.preset_settings(SSAO_PRESET_HIGH, nullptr) == SSAO_ERROR_NULL_POINTER);
+
+    for (uint32_t size : {0u, static_cast<uint32_t>(sizeof(ssao_settings) - 4), static_cast<uint32_t>(sizeof(ssao_settings) + 4)}) {
+        CAPTURE(size);
+        // Wrong size of the input...
+        ssao_settings bad_in = sized<ssao_settings>();
+        bad_in.size = size;
+        ssao_settings o = sentinel<ssao_settings>();
+        ssao_settings before = o;
+        CHECK(a.resolve_settings(&bad_in, &o) == SSAO_ERROR_STRUCT_SIZE);
+        CHECK(same_bytes(o, before));
+        // ...and of the output.
+        o = sentinel<ssao_settings>();
+        o.size = size;
+        before = o;
+        CHECK(a.resolve_settings(&in, &o) == SSAO_ERROR_STRUCT_SIZE);
+        CHECK(same_bytes(o, before));
+        o = sentinel<ssao_settings>();
+        o.size = size;
+        before = o;
+        CHECK(a.preset_settings(SSAO_PRESET_LOW, &o) == SSAO_ERROR_STRUCT_SIZE);
+        CHECK(same_bytes(o, before));
+    }
+}
+
+TEST_CASE("abi: resolve_settings and preset_settings through the library") {
+    const ssao_api& a = api();
+    ssao_settings in = sized<ssao_settings>();
+    ssao_settings out = sentinel<ssao_settings>();
+    REQUIRE(a.resolve_settings(&in, &out) == SSAO_OK);
+    CHECK(out.sample_count == 16u);
+    CHECK(out.radius == 0.5f);
+    CHECK(out.blur == SSAO_BLUR_DEPTH_AWARE);
+    ssao_settings medium = sentinel<ssao_settings>();
+    REQUIRE(a.preset_settings(SSAO_PRESET_MEDIUM, &medium) == SSAO_OK);
+    CHECK(same_bytes(medium, out));
+
+    in.radius = kNaN;
+    ssao_settings o = sentinel<ssao_settings>();
+    const ssao_settings before = o;
+    CHECK(a.resolve_settings(&in, &o) == SSAO_ERROR_INVALID_VALUE);
+    CHECK(same_bytes(o, before));
+    in = sized<ssao_settings>();
+    set_raw(in.blur, 42);
+    CHECK(a.resolve_settings(&in, &o) == SSAO_ERROR_INVALID_ENUM);
+    CHECK(same_bytes(o, before));
+    ssao_preset unknown;
+    set_raw(unknown, 5);
+    CHECK(a.preset_settings(unknown, &o) == SSAO_ERROR_INVALID_ENUM);
+    CHECK(same_bytes(o, before));
+}
+
+TEST_CASE("abi: create_context validates its arguments before touching GL") {
+    const ssao_api& a = api();
+    ssao_context* const poison = reinterpret_cast<ssao_context*>(static_cast<uintptr_t>(0x1234));
+    LogRecorder log;
+    ssao_context_desc desc = sized<ssao_context_desc>();
+    desc.get_proc_address = eglctx::Context::get_proc;
+    desc.log = LogRecorder::callback;
+    desc.log_user = &log;
+
+    CHECK(a.create_context(&desc, nullptr) == SSAO_ERROR_NULL_POINTER);
+    ssao_context* ctx = poison;
+    CHECK(a.create_context(nullptr, &ctx) == SSAO_ERROR_NULL_POINTER);
+    CHECK(ctx == nullptr);
+
+    for (uint32_t size : {0u, static_cast<uint32_t>(sizeof(ssao_context_desc) - 8), static_cast<uint32_t>(sizeof(ssao_context_desc) + 8)}) {
+        CAPTURE(size);
+        ssao_context_desc d = desc;
+        d.size = size;
+        ctx = poison;
+        CHECK(a.create_context(&d, &ctx) == SSAO_ERROR_STRUCT_SIZE);
+        CHECK(ctx == nullptr);
+    }
+
+    struct Case {
+        const char* what;
+        ssao_status expected;
+        const char* keyword;
+    };
+    const Case cases[] = {{"get_proc_address NULL", SSAO_ERROR_NULL_POINTER, "get_proc_address"},
+                          {"settings radius NaN", SSAO_ERROR_INVALID_VALUE, "radius"},
+                          {"settings blur 9", SSAO_ERROR_INVALID_ENUM, "blur"},
+                          {"settings size 0", SSAO_ERROR_STRUCT_SIZE, "size"}};
+    for (const Case& c : cases) {
+        const std::string what_ = c.what;
+        CAPTURE(what_);
+        ssao_context_desc d = desc;
+        ssao_settings s = sized<ssao_settings>();
+        if (std::strcmp(c.what, "get_proc_address NULL") == 0) d.get_proc_address = nullptr;
+        if (std::strcmp(c.what, "settings radius NaN") == 0) s.radius = kNaN;
+        if (std::strcmp(c.what, "settings blur 9") == 0) set_raw(s.blur, 9);
+        if (std::strcmp(c.what, "settings size 0") == 0) s.size = 0;
+        d.settings = &s;
+        log.entries.clear();
+        ctx = poison;
+        CHECK(a.create_context(&d, &ctx) == c.expected);
+        CHECK(ctx == nullptr);
+        // There is no context to ask: the reason goes to the log.
+        REQUIRE(log.entries.size() == 1);
+        CHECK(log.entries[0].level == SSAO_LOG_ERROR);
+        CHECK(contains(log.entries[0].message, c.keyword));
+    }
+}
+
+namespace {
+
+ssao_gl_proc SSAO_CALL get_proc_null(void*, const char*) { return nullptr; }
+
+const char* g_fake_version = "";
+const GLubyte* GLAD_API_PTR fake_get_string(GLenum) { return reinterpret_cast<const GLubyte*>(g_fake_version); }
+
+// Real GL for everything except glGetString, which reports g_fake_version.
+ssao_gl_proc SSAO_CALL get_proc_fake_version(void*, const char* name) {
+    if (std::strcmp(name, "glGetString") == 0) return reinterpret_cast<ssao_gl_proc>(fake_get_string);
+    return eglctx::Context::get_proc(nullptr, name);
+}
+
+}  // namespace
+
+TEST_CASE("abi: create_context is GL_LOAD when get_proc_address returns NULL for everything") {
+    const ssao_api& a = api();
+    LogRecorder log;
+    ssao_context_desc desc = sized<ssao_context_desc>();
+    desc.get_proc_address = get_proc_null;
+    desc.log = LogRecorder::callback;
+    desc.log_user = &log;
+    ssao_context* ctx = reinterpret_cast<ssao_context*>(static_cast<uintptr_t>(0x1234));
+    CHECK(a.create_context(&desc, &ctx) == SSAO_ERROR_GL_LOAD);
+    CHECK(ctx == nullptr);
+    REQUIRE(log.entries.size() == 1);
+    CHECK(log.entries[0].level == SSAO_LOG_ERROR);
+    CHECK_FALSE(log.entries[0].message.empty());
+
+    // The same with a GL context current.
+    auto egl = make_egl();
+    log.entries.clear();
+    ctx = reinterpret_cast<ssao_context*>(static_cast<uintptr_t>(0x1234));
+    CHECK(a.create_context(&desc, &ctx) == SSAO_ERROR_GL_LOAD);
+    CHECK(ctx == nullptr);
+    CHECK(log.entries.size() == 1);
+}
+
+TEST_CASE("abi: create_context is GL_VERSION when no GL context is current") {
+    // No EGL context exists yet in this test (and fixtures of earlier tests
+    // release theirs): glGetString through eglGetProcAddress returns NULL.
+    const ssao_api& a = api();
+    LogRecorder log;
+    ssao_context_desc desc = sized<ssao_context_desc>();
+    desc.get_proc_address = eglctx::Context::get_proc;
+    desc.log = LogRecorder::callback;
+    desc.log_user = &log;
+    ssao_context* ctx = reinterpret_cast<ssao_context*>(static_cast<uintptr_t>(0x1234));
+    CHECK(a.create_context(&desc, &ctx) == SSAO_ERROR_GL_VERSION);
+    CHECK(ctx == nullptr);
+    REQUIRE(log.entries.size() == 1);
+    CHECK(log.entries[0].level == SSAO_LOG_ERROR);
+    CHECK_FALSE(log.entries[0].message.empty());
+}
+
+TEST_CASE("abi: create_context is GL_VERSION for a GL older than 3.3 or a GL ES context") {
+    const ssao_api& a = api();
+    auto egl = make_egl();  // real GL behind every other function
+    for (const char* version : {"3.2.0 Mesa 23.0", "2.1 Mesa", "1.4", "OpenGL ES 3.2 Mesa 23.0", "garbage"}) {
+        const std::string what_ = version;
+        CAPTURE(what_);
+        g_fake_version = version;
+        LogRecorder log;
+        ssao_context_desc desc = sized<ssao_context_desc>();
+        desc.get_proc_address = get_proc_fake_version;
+        desc.log = LogRecorder::callback;
+        desc.log_user = &log;
+        ssao_context* ctx = reinterpret_cast<ssao_context*>(static_cast<uintptr_t>(0x1234));
+        CHECK(a.create_context(&desc, &ctx) == SSAO_ERROR_GL_VERSION);
+        CHECK(ctx == nullptr);
+        REQUIRE(log.entries.size() == 1);
+        CHECK(contains(log.entries[0].message, version));
+    }
+    // A 3.3 context is accepted.
+    g_fake_version = "3.3 (Core Profile) Mesa";
+    ssao_context_desc desc = sized<ssao_context_desc>();
+    desc.get_proc_address = get_proc_fake_version;
+    ssao_context* ctx = nullptr;
+    CHECK(a.create_context(&desc, &ctx) == SSAO_OK);
+    CHECK((ctx != nullptr));
+    CHECK(a.destroy_context(ctx) == SSAO_OK);
+}
+
+TEST_CASE("abi: destroy_context(NULL) is OK and last_error(NULL) is a static message") {
+    const ssao_api& a = api();
+    CHECK(a.destroy_context(nullptr) == SSAO_OK);
+    const char* text = a.last_error(nullptr);
+    REQUIRE((text != nullptr));
+    CHECK(std::strlen(text) > 0);
+    CHECK(a.last_error(nullptr) == text);
+}

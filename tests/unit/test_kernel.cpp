@@ -1,0 +1,288 @@
+// test_kernel.cpp - the sample kernel, the rotation noise and the pixel hash
+// (plugin/kernel.h) against the properties documented in ssao.h and kernel.h.
+#include "kernel.h"
+#include "settings.h"
+
+#include <doctest/doctest.h>
+
+#include <glm/glm.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+using ssao_impl::make_kernel;
+using ssao_impl::make_noise;
+using ssao_impl::pixel_hash;
+
+namespace {
+
+ssao_settings resolved(uint32_t samples, ssao_kernel_shape shape, ssao_kernel_distribution dist, uint32_t seed = 0) {
+    ssao_settings in{};
+    in.size = sizeof in;
+    in.sample_count = samples;
+    in.kernel_shape = shape;
+    in.distribution = dist;
+    in.seed = seed;
+    ssao_settings out{};
+    out.size = sizeof out;
+    std::string why;
+    REQUIRE(ssao_impl::resolve_settings(in, out, why) == SSAO_OK);
+    return out;
+}
+
+const ssao_kernel_shape kShapes[] = {SSAO_KERNEL_HEMISPHERE, SSAO_KERNEL_SPHERE, SSAO_KERNEL_SEPARABLE};
+const ssao_kernel_distribution kDists[] = {SSAO_DISTRIBUTION_ACCELERATING, SSAO_DISTRIBUTION_UNIFORM};
+
+// |k| <= 1 with float slack (a unit direction times a length <= 1).
+constexpr float kLenSlack = 1e-6f;
+
+float lerp(float a, float b, float t) { return a + (b - a) * t; }
+
+}  // namespace
+
+TEST_CASE("kernel: one sample per sample_count for 1..64 in every shape and distribution") {
+    for (ssao_kernel_shape shape : kShapes)
+        for (ssao_kernel_distribution dist : kDists)
+            for (uint32_t n = 1; n <= SSAO_MAX_SAMPLES; ++n) {
+                CAPTURE(shape);
+                CAPTURE(dist);
+                CAPTURE(n);
+                const auto k = make_kernel(resolved(n, shape, dist));
+                REQUIRE(k.size() == n);
+                for (const glm::vec3& v : k) {
+                    REQUIRE(std::isfinite(v.x));
+                    REQUIRE(std::isfinite(v.y));
+                    REQUIRE(std::isfinite(v.z));
+                    CHECK(glm::length(v) <= 1.0f + kLenSlack);
+                }
+            }
+}
+
+TEST_CASE("kernel: hemisphere samples lie in the unit hemisphere around +z") {
+    for (ssao_kernel_distribution dist : kDists)
+        for (uint32_t seed = 1; seed <= 20; ++seed)
+            for (uint32_t n : {1u, 7u, 16u, 64u}) {
+                const auto k = make_kernel(resolved(n, SSAO_KERNEL_HEMISPHERE, dist, seed));
+                for (const glm::vec3& v : k) {
+                    CHECK(v.z >= 0.0f);
+                    CHECK(glm::length(v) <= 1.0f + kLenSlack);
+                }
+            }
+}
+
+TEST_CASE("kernel: hemisphere directions are uniform over the hemisphere (mean direction about +z/2)") {
+    // Mean of the unit direction over a uniform hemisphere is (0, 0, 0.5).
+    glm::dvec3 sum(0.0);
+    int count = 0;
+    for (uint32_t seed = 1; seed <= 200; ++seed)
+        for (const glm::vec3& v : make_kernel(resolved(64, SSAO_KERNEL_HEMISPHERE, SSAO_DISTRIBUTION_UNIFORM, seed))) {
+            sum += glm::dvec3(glm::normalize(v));
+            ++count;
+        }
+    const glm::dvec3 mean = sum / static_cast<double>(count);  // 12800 samples: sd ~ 0.005
+    CHECK(std::abs(mean.x) < 0.03);
+    CHECK(std::abs(mean.y) < 0.03);
+    CHECK(std::abs(mean.z - 0.5) < 0.03);
+}
+
+TEST_CASE("kernel: sphere samples fill the unit ball with both signs of z") {
+    for (ssao_kernel_distribution dist : kDists)
+        for (uint32_t seed = 1; seed <= 20; ++seed)
+            for (uint32_t n : {16u, 17u, 32u, 64u}) {
+                CAPTURE(seed);
+                CAPTURE(n);
+                const auto k = make_kernel(resolved(n, SSAO_KERNEL_SPHERE, dist, seed));
+                int positive = 0, negative = 0;
+                for (const glm::vec3& v : k) {
+                    CHECK(glm::length(v) <= 1.0f + kLenSlack);
+                    positive += v.z > 0.0f;
+                    negative += v.z < 0.0f;
+                }
+                CHECK(positive > 0);
+                CHECK(negative > 0);
+            }
+    glm::dvec3 sum(0.0);
+    int count = 0;
+    for (uint32_t seed = 1; seed <= 200; ++seed)
+        for (const glm::vec3& v : make_kernel(resolved(64, SSAO_KERNEL_SPHERE, SSAO_DISTRIBUTION_UNIFORM, seed))) {
+            sum += glm::dvec3(glm::normalize(v));
+            ++count;
+        }
+    const glm::dvec3 mean = sum / static_cast<double>(count);
+    CHECK(glm::length(mean) < 0.03);  // no preferred direction
+}
+
+TEST_CASE("kernel: separable puts the first ceil(N/2) samples in the x-z plane and the rest in the y-z plane") {
+    for (ssao_kernel_distribution dist : kDists)
+        for (uint32_t seed = 1; seed <= 5; ++seed)
+            for (uint32_t n = 1; n <= SSAO_MAX_SAMPLES; ++n) {
+                CAPTURE(dist);
+                CAPTURE(seed);
+                CAPTURE(n);
+                const auto k = make_kernel(resolved(n, SSAO_KERNEL_SEPARABLE, dist, seed));
+                REQUIRE(k.size() == n);
+                const uint32_t first = (n + 1) / 2;
+                int xz_nonzero_x = 0, yz_nonzero_y = 0;
+                for (uint32_t i = 0; i < n; ++i) {
+                    CAPTURE(i);
+                    const glm::vec3& v = k[i];
+                    CHECK(v.z >= 0.0f);
+                    CHECK(glm::length(v) <= 1.0f + kLenSlack);
+                    if (i < first) {
+                        CHECK(v.y == 0.0f);
+                        xz_nonzero_x += v.x != 0.0f;
+                    } else {
+                        CHECK(v.x == 0.0f);
+                        yz_nonzero_y += v.y != 0.0f;
+                    }
+                }
+                // The planes are really used (not all samples on the z axis).
+                if (first >= 4) CHECK(xz_nonzero_x > 0);
+                if (n - first >= 4) CHECK(yz_nonzero_y > 0);
+            }
+}
+
+TEST_CASE("kernel: accelerating lengths stay under lerp(0.1 to 1 by (i/n)^2)") {
+    for (ssao_kernel_shape shape : kShapes)
+        for (uint32_t seed = 1; seed <= 10; ++seed)
+            for (uint32_t n : {1u, 2u, 5u, 16u, 33u, 64u}) {
+                CAPTURE(shape);
+                CAPTURE(seed);
+                CAPTURE(n);
+                const auto k = make_kernel(resolved(n, shape, SSAO_DISTRIBUTION_ACCELERATING, seed));
+                const bool separable = shape == SSAO_KERNEL_SEPARABLE;
+                const uint32_t first = separable ? (n + 1) / 2 : n;
+                for (uint32_t i = 0; i < n; ++i) {
+                    // i and n within the sample's own set (separable: per plane).
+                    const uint32_t index = i < first ? i : i - first;
+                    const uint32_t count = i < first ? first : n - first;
+                    const float t = static_cast<float>(index) / static_cast<float>(count);
+                    CAPTURE(i);
+                    CHECK(glm::length(k[i]) <= lerp(0.1f, 1.0f, t * t) + kLenSlack);
+                }
+            }
+}
+
+TEST_CASE("kernel: accelerating is denser near the centre than uniform (N = 64)") {
+    for (ssao_kernel_shape shape : kShapes) {
+        CAPTURE(shape);
+        double acc = 0.0, uni = 0.0;
+        for (uint32_t seed = 1; seed <= 16; ++seed) {
+            for (const glm::vec3& v : make_kernel(resolved(64, shape, SSAO_DISTRIBUTION_ACCELERATING, seed)))
+                acc += glm::length(v);
+            for (const glm::vec3& v : make_kernel(resolved(64, shape, SSAO_DISTRIBUTION_UNIFORM, seed)))
+                uni += glm::length(v);
+        }
+        acc /= 16 * 64;
+        uni /= 16 * 64;
+        // Expected: accelerating ~0.5 * mean(lerp) = 0.2; uniform 0.75 (ball) or 0.67 (disc).
+        CHECK(acc < 0.6 * uni);
+        CHECK(acc > 0.1);
+        CHECK(acc < 0.3);
+    }
+}
+
+TEST_CASE("kernel: uniform distribution is uniform in volume (mean |k|^3 ~ 1/2) and in area for the planes") {
+    for (ssao_kernel_shape shape : kShapes) {
+        CAPTURE(shape);
+        const bool separable = shape == SSAO_KERNEL_SEPARABLE;
+        double sum = 0.0, inner = 0.0;
+        int count = 0;
+        for (uint32_t seed = 1; seed <= 64; ++seed)
+            for (const glm::vec3& v : make_kernel(resolved(64, shape, SSAO_DISTRIBUTION_UNIFORM, seed))) {
+                const double r = glm::length(glm::dvec3(v));
+                // Uniform in a ball: |k|^3 is uniform on [0,1]; in a disc: |k|^2 is.
+                const double u = separable ? r * r : r * r * r;
+                sum += u;
+                inner += u < 0.25;
+                ++count;
+            }
+        // 4096 samples: sd of the mean of a U(0,1) ~ 0.0045.
+        CHECK(std::abs(sum / count - 0.5) < 0.025);
+        CHECK(std::abs(inner / count - 0.25) < 0.03);
+    }
+}
+
+TEST_CASE("kernel: the same seed gives the same kernel and another seed another kernel") {
+    for (ssao_kernel_shape shape : kShapes)
+        for (ssao_kernel_distribution dist : kDists) {
+            CAPTURE(shape);
+            CAPTURE(dist);
+            const auto a = make_kernel(resolved(32, shape, dist, 1));
+            const auto b = make_kernel(resolved(32, shape, dist, 1));
+            REQUIRE(a.size() == b.size());
+            for (size_t i = 0; i < a.size(); ++i) CHECK(a[i] == b[i]);
+            // A zero seed resolves to 1: the same kernel as seed 1.
+            const auto z = make_kernel(resolved(32, shape, dist, 0));
+            for (size_t i = 0; i < a.size(); ++i) CHECK(a[i] == z[i]);
+            for (uint32_t other : {2u, 3u, 12345u, 0xffffffffu}) {
+                CAPTURE(other);
+                const auto c = make_kernel(resolved(32, shape, dist, other));
+                int same = 0;
+                for (size_t i = 0; i < a.size(); ++i) same += a[i] == c[i];
+                CHECK(same == 0);
+            }
+        }
+}
+
+TEST_CASE("kernel: rotation noise is 16 deterministic unit vectors per seed") {
+    for (uint32_t seed : {1u, 2u, 77u, 0xffffffffu}) {
+        CAPTURE(seed);
+        const auto a = make_noise(seed);
+        const auto b = make_noise(seed);
+        REQUIRE(a.size() == 16);
+        REQUIRE(b.size() == 16);
+        for (size_t i = 0; i < 16; ++i) {
+            CHECK(a[i] == b[i]);
+            CHECK(std::abs(glm::length(a[i]) - 1.0f) < 1e-5f);
+        }
+        // The 16 rotations are spread out, not one angle repeated.
+        int distinct = 0;
+        for (size_t i = 0; i < 16; ++i) {
+            bool seen = false;
+            for (size_t j = 0; j < i; ++j) seen = seen || glm::length(a[i] - a[j]) < 1e-3f;
+            distinct += !seen;
+        }
+        CHECK(distinct >= 14);
+    }
+    const auto one = make_noise(1), two = make_noise(2);
+    int same = 0;
+    for (size_t i = 0; i < 16; ++i) same += one[i] == two[i];
+    CHECK(same == 0);
+}
+
+TEST_CASE("kernel: pixel_hash is in 0..1 (1 excluded) and deterministic and roughly uniform") {
+    constexpr int kBins = 16;
+    for (uint32_t seed : {1u, 2u, 1000u}) {
+        CAPTURE(seed);
+        int bins[kBins] = {};
+        double sum = 0.0;
+        int equal_neighbours = 0;
+        for (uint32_t y = 0; y < 256; ++y)
+            for (uint32_t x = 0; x < 256; ++x) {
+                const float h = pixel_hash(x, y, seed);
+                REQUIRE(h >= 0.0f);
+                REQUIRE(h < 1.0f);
+                CHECK(h == pixel_hash(x, y, seed));
+                bins[std::min(kBins - 1, static_cast<int>(h * kBins))]++;
+                sum += h;
+                if (x > 0) equal_neighbours += h == pixel_hash(x - 1, y, seed);
+            }
+        const double expected = 65536.0 / kBins;  // 4096, sd ~ 62
+        double chi2 = 0.0;
+        for (int b = 0; b < kBins; ++b) {
+            CAPTURE(b);
+            CHECK(std::abs(bins[b] - expected) < 0.1 * expected);
+            chi2 += (bins[b] - expected) * (bins[b] - expected) / expected;
+        }
+        CHECK(chi2 < 50.0);  // 15 degrees of freedom: p(chi2 > 50) ~ 1e-5
+        CHECK(std::abs(sum / 65536.0 - 0.5) < 0.01);
+        CHECK(equal_neighbours < 10);
+    }
+    // The seed changes the pattern.
+    int same = 0;
+    for (uint32_t x = 0; x < 64; ++x) same += pixel_hash(x, 3, 1) == pixel_hash(x, 3, 2);
+    CHECK(same < 4);
+}

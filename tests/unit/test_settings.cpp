@@ -1,0 +1,327 @@
+// test_settings.cpp - resolution and validation of ssao_settings and the
+// presets (plugin/settings.h), against the field documentation in ssao.h.
+#include "settings.h"
+
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <functional>
+#include <limits>
+#include <random>
+#include <string>
+#include <vector>
+
+using ssao_impl::preset_settings;
+using ssao_impl::resolve_settings;
+
+namespace {
+
+const float kNaN = std::numeric_limits<float>::quiet_NaN();
+const float kInf = std::numeric_limits<float>::infinity();
+
+ssao_settings zeroed() {
+    ssao_settings s;
+    std::memset(&s, 0, sizeof s);
+    s.size = sizeof s;
+    return s;
+}
+
+// An `out` full of a recognisable pattern, to see whether a call touched it.
+ssao_settings sentinel() {
+    ssao_settings s;
+    std::memset(&s, 0xA5, sizeof s);
+    s.size = sizeof s;
+    return s;
+}
+
+bool same(const ssao_settings& a, const ssao_settings& b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+// Writes an arbitrary 32-bit value into an enum field without an
+// out-of-range enum conversion (which C++17 leaves undefined).
+template <typename E>
+void set_raw(E& field, int32_t value) {
+    static_assert(sizeof(E) == sizeof(int32_t), "enum fields are 4 bytes");
+    std::memcpy(&field, &value, sizeof value);
+}
+
+ssao_settings resolve_ok(const ssao_settings& in) {
+    ssao_settings out = sentinel();
+    std::string why;
+    const ssao_status st = resolve_settings(in, out, why);
+    CAPTURE(why);
+    REQUIRE(st == SSAO_OK);
+    return out;
+}
+
+struct BadCase {
+    const char* what;
+    std::function<void(ssao_settings&)> edit;
+    ssao_status expected;
+};
+
+}  // namespace
+
+TEST_CASE("settings: a zeroed struct resolves to the documented defaults") {
+    const ssao_settings r = resolve_ok(zeroed());
+    CHECK(r.size == sizeof(ssao_settings));
+    CHECK(r.sample_count == 16u);
+    CHECK(r.radius == 0.5f);
+    CHECK(r.bias == doctest::Approx(0.025 * 0.5));
+    CHECK(r.depth_step_bias == 2.0f);
+    CHECK(r.power == 1.0f);
+    CHECK(r.strength == 1.0f);
+    CHECK(r.kernel_shape == SSAO_KERNEL_HEMISPHERE);
+    CHECK(r.distribution == SSAO_DISTRIBUTION_ACCELERATING);
+    CHECK(r.rotation == SSAO_ROTATION_NOISE_4X4);
+    CHECK(r.seed == 1u);
+    CHECK(r.blur == SSAO_BLUR_DEPTH_AWARE);
+    CHECK(r.blur_radius == 2u);
+    CHECK(r.blur_sigma == 2.0f);
+    CHECK(r.blur_depth_tolerance == doctest::Approx(0.05));
+    CHECK(r.output_format == SSAO_OUTPUT_R8);
+}
+
+TEST_CASE("settings: derived defaults follow the fields they derive from") {
+    ssao_settings in = zeroed();
+    in.radius = 2.0f;
+    in.blur_radius = 5;
+    const ssao_settings r = resolve_ok(in);
+    CHECK(r.radius == 2.0f);
+    CHECK(r.bias == doctest::Approx(0.025 * 2.0));  // 0.025 * radius
+    CHECK(r.blur_radius == 5u);
+    CHECK(r.blur_sigma == 5.0f);  // = blur_radius
+
+    // Explicit values are kept as given.
+    in = zeroed();
+    in.sample_count = 64;
+    in.radius = 0.25f;
+    in.bias = 0.5f;
+    in.depth_step_bias = 7.0f;
+    in.power = 16.0f;
+    in.strength = 8.0f;
+    in.kernel_shape = SSAO_KERNEL_SPHERE;
+    in.distribution = SSAO_DISTRIBUTION_UNIFORM;
+    in.rotation = SSAO_ROTATION_NONE;
+    in.seed = 0xffffffffu;
+    in.blur = SSAO_BLUR_NONE;
+    in.blur_radius = 16;
+    in.blur_sigma = 64.0f;
+    in.blur_depth_tolerance = 1.0f;
+    in.output_format = SSAO_OUTPUT_R16F;
+    CHECK(same(resolve_ok(in), in));
+
+    // The smallest accepted values.
+    in = zeroed();
+    in.sample_count = 1;
+    in.blur_radius = 1;
+    in.radius = 1e-6f;
+    in.power = 1e-6f;
+    in.blur_sigma = 1e-6f;
+    in.blur_depth_tolerance = 1e-6f;
+    const ssao_settings small = resolve_ok(in);
+    CHECK(small.sample_count == 1u);
+    CHECK(small.blur_radius == 1u);
+    CHECK(small.radius == 1e-6f);
+    CHECK(small.power == 1e-6f);
+    CHECK(small.blur_sigma == 1e-6f);
+    CHECK(small.blur_depth_tolerance == 1e-6f);
+}
+
+TEST_CASE("settings: SSAO_STRENGTH_OFF is accepted and stays off") {
+    ssao_settings in = zeroed();
+    in.strength = SSAO_STRENGTH_OFF;
+    const ssao_settings r = resolve_ok(in);
+    CHECK(r.strength == SSAO_STRENGTH_OFF);
+    CHECK(ssao_impl::effective_strength(r) == 0.0f);
+    const ssao_settings rr = resolve_ok(r);
+    CHECK(rr.strength == SSAO_STRENGTH_OFF);
+    CHECK(same(r, rr));
+}
+
+TEST_CASE("settings: resolve is idempotent") {
+    std::mt19937 rng(1234);
+    auto pick = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
+    auto real = [&](float lo, float hi) {
+        // A quarter of the draws leave the field zero (= default).
+        return pick(0, 3) == 0 ? 0.0f : std::uniform_real_distribution<float>(lo, hi)(rng);
+    };
+    for (int trial = 0; trial < 2000; ++trial) {
+        ssao_settings in = zeroed();
+        in.sample_count = static_cast<uint32_t>(pick(0, 64));
+        in.radius = real(1e-3f, 10.0f);
+        in.bias = real(0.0f, 1.0f);
+        in.depth_step_bias = real(0.0f, 10.0f);
+        in.power = real(1e-3f, 16.0f);
+        in.strength = pick(0, 4) == 0 ? SSAO_STRENGTH_OFF : real(0.0f, 8.0f);
+        set_raw(in.kernel_shape, pick(0, 3));
+        set_raw(in.distribution, pick(0, 2));
+        set_raw(in.rotation, pick(0, 3));
+        in.seed = static_cast<uint32_t>(pick(0, 1 << 30));
+        set_raw(in.blur, pick(0, 4));
+        in.blur_radius = static_cast<uint32_t>(pick(0, 16));
+        in.blur_sigma = real(1e-3f, 64.0f);
+        in.blur_depth_tolerance = real(1e-3f, 1.0f);
+        set_raw(in.output_format, pick(0, 2));
+        CAPTURE(trial);
+        const ssao_settings once = resolve_ok(in);
+        const ssao_settings twice = resolve_ok(once);
+        CHECK(same(once, twice));
+        // Resolved settings hold no zero that means "default".
+        CHECK(once.sample_count != 0u);
+        CHECK(once.radius > 0.0f);
+        CHECK(once.bias > 0.0f);
+        CHECK(once.depth_step_bias > 0.0f);
+        CHECK(once.power > 0.0f);
+        CHECK(once.strength != 0.0f);
+        CHECK(once.kernel_shape != SSAO_KERNEL_DEFAULT);
+        CHECK(once.distribution != SSAO_DISTRIBUTION_DEFAULT);
+        CHECK(once.rotation != SSAO_ROTATION_DEFAULT);
+        CHECK(once.seed != 0u);
+        CHECK(once.blur != SSAO_BLUR_DEFAULT);
+        CHECK(once.blur_radius != 0u);
+        CHECK(once.blur_sigma > 0.0f);
+        CHECK(once.blur_depth_tolerance > 0.0f);
+        CHECK(once.output_format != SSAO_OUTPUT_DEFAULT);
+    }
+    const ssao_settings z = resolve_ok(zeroed());
+    CHECK(same(resolve_ok(z), z));
+}
+
+TEST_CASE("settings: every invalid field gives its documented status and leaves out untouched") {
+    std::vector<BadCase> cases = {
+        {"sample_count 65", [](ssao_settings& s) { s.sample_count = 65; }, SSAO_ERROR_INVALID_VALUE},
+        {"sample_count 1000", [](ssao_settings& s) { s.sample_count = 1000; }, SSAO_ERROR_INVALID_VALUE},
+        {"sample_count max", [](ssao_settings& s) { s.sample_count = 0xffffffffu; }, SSAO_ERROR_INVALID_VALUE},
+        {"radius -1", [](ssao_settings& s) { s.radius = -1.0f; }, SSAO_ERROR_INVALID_VALUE},
+        {"radius NaN", [](ssao_settings& s) { s.radius = kNaN; }, SSAO_ERROR_INVALID_VALUE},
+        {"radius inf", [](ssao_settings& s) { s.radius = kInf; }, SSAO_ERROR_INVALID_VALUE},
+        {"radius -inf", [](ssao_settings& s) { s.radius = -kInf; }, SSAO_ERROR_INVALID_VALUE},
+        {"bias -0.1", [](ssao_settings& s) { s.bias = -0.1f; }, SSAO_ERROR_INVALID_VALUE},
+        {"bias NaN", [](ssao_settings& s) { s.bias = kNaN; }, SSAO_ERROR_INVALID_VALUE},
+        {"bias inf", [](ssao_settings& s) { s.bias = kInf; }, SSAO_ERROR_INVALID_VALUE},
+        {"depth_step_bias -1", [](ssao_settings& s) { s.depth_step_bias = -1.0f; }, SSAO_ERROR_INVALID_VALUE},
+        {"depth_step_bias NaN", [](ssao_settings& s) { s.depth_step_bias = kNaN; }, SSAO_ERROR_INVALID_VALUE},
+        {"depth_step_bias inf", [](ssao_settings& s) { s.depth_step_bias = kInf; }, SSAO_ERROR_INVALID_VALUE},
+        {"power -1", [](ssao_settings& s) { s.power = -1.0f; }, SSAO_ERROR_INVALID_VALUE},
+        {"power 16.5", [](ssao_settings& s) { s.power = 16.5f; }, SSAO_ERROR_INVALID_VALUE},
+        {"power NaN", [](ssao_settings& s) { s.power = kNaN; }, SSAO_ERROR_INVALID_VALUE},
+        {"power inf", [](ssao_settings& s) { s.power = kInf; }, SSAO_ERROR_INVALID_VALUE},
+        {"strength -0.5", [](ssao_settings& s) { s.strength = -0.5f; }, SSAO_ERROR_INVALID_VALUE},
+        {"strength -2", [](ssao_settings& s) { s.strength = -2.0f; }, SSAO_ERROR_INVALID_VALUE},
+        {"strength 8.5", [](ssao_settings& s) { s.strength = 8.5f; }, SSAO_ERROR_INVALID_VALUE},
+        {"strength NaN", [](ssao_settings& s) { s.strength = kNaN; }, SSAO_ERROR_INVALID_VALUE},
+        {"strength inf", [](ssao_settings& s) { s.strength = kInf; }, SSAO_ERROR_INVALID_VALUE},
+        {"kernel_shape 4", [](ssao_settings& s) { set_raw(s.kernel_shape, 4); }, SSAO_ERROR_INVALID_ENUM},
+        {"kernel_shape -1", [](ssao_settings& s) { set_raw(s.kernel_shape, -1); }, SSAO_ERROR_INVALID_ENUM},
+        {"distribution 3", [](ssao_settings& s) { set_raw(s.distribution, 3); }, SSAO_ERROR_INVALID_ENUM},
+        {"distribution -1", [](ssao_settings& s) { set_raw(s.distribution, -1); }, SSAO_ERROR_INVALID_ENUM},
+        {"rotation 4", [](ssao_settings& s) { set_raw(s.rotation, 4); }, SSAO_ERROR_INVALID_ENUM},
+        {"rotation -1", [](ssao_settings& s) { set_raw(s.rotation, -1); }, SSAO_ERROR_INVALID_ENUM},
+        {"blur 5", [](ssao_settings& s) { set_raw(s.blur, 5); }, SSAO_ERROR_INVALID_ENUM},
+        {"blur -1", [](ssao_settings& s) { set_raw(s.blur, -1); }, SSAO_ERROR_INVALID_ENUM},
+        {"blur 0x7fffffff", [](ssao_settings& s) { set_raw(s.blur, 0x7fffffff); }, SSAO_ERROR_INVALID_ENUM},
+        {"blur_radius 17", [](ssao_settings& s) { s.blur_radius = 17; }, SSAO_ERROR_INVALID_VALUE},
+        {"blur_radius max", [](ssao_settings& s) { s.blur_radius = 0xffffffffu; }, SSAO_ERROR_INVALID_VALUE},
+        {"blur_sigma -1", [](ssao_settings& s) { s.blur_sigma = -1.0f; }, SSAO_ERROR_INVALID_VALUE},
+        {"blur_sigma 64.5", [](ssao_settings& s) { s.blur_sigma = 64.5f; }, SSAO_ERROR_INVALID_VALUE},
+        {"blur_sigma NaN", [](ssao_settings& s) { s.blur_sigma = kNaN; }, SSAO_ERROR_INVALID_VALUE},
+        {"blur_sigma inf", [](ssao_settings& s) { s.blur_sigma = kInf; }, SSAO_ERROR_INVALID_VALUE},
+        {"blur_depth_tolerance -0.1", [](ssao_settings& s) { s.blur_depth_tolerance = -0.1f; },
+         SSAO_ERROR_INVALID_VALUE},
+        {"blur_depth_tolerance 1.5", [](ssao_settings& s) { s.blur_depth_tolerance = 1.5f; },
+         SSAO_ERROR_INVALID_VALUE},
+        {"blur_depth_tolerance NaN", [](ssao_settings& s) { s.blur_depth_tolerance = kNaN; },
+         SSAO_ERROR_INVALID_VALUE},
+        {"blur_depth_tolerance inf", [](ssao_settings& s) { s.blur_depth_tolerance = kInf; },
+         SSAO_ERROR_INVALID_VALUE},
+        {"output_format 3", [](ssao_settings& s) { set_raw(s.output_format, 3); }, SSAO_ERROR_INVALID_ENUM},
+        {"output_format -1", [](ssao_settings& s) { set_raw(s.output_format, -1); }, SSAO_ERROR_INVALID_ENUM},
+        {"size 0", [](ssao_settings& s) { s.size = 0; }, SSAO_ERROR_STRUCT_SIZE},
+        {"size - 4", [](ssao_settings& s) { s.size = sizeof(ssao_settings) - 4; }, SSAO_ERROR_STRUCT_SIZE},
+        {"size + 4", [](ssao_settings& s) { s.size = sizeof(ssao_settings) + 4; }, SSAO_ERROR_STRUCT_SIZE},
+    };
+    for (const BadCase& c : cases) {
+        const std::string what_ = c.what;
+        CAPTURE(what_);
+        // On a zeroed struct and on an otherwise fully specified one.
+        for (int base = 0; base < 2; ++base) {
+            ssao_settings in = base == 0 ? zeroed() : resolve_ok(zeroed());
+            c.edit(in);
+            ssao_settings out = sentinel();
+            const ssao_settings before = out;
+            std::string why;
+            CHECK(resolve_settings(in, out, why) == c.expected);
+            CHECK(same(out, before));
+            CHECK_FALSE(why.empty());
+        }
+    }
+}
+
+TEST_CASE("settings: the message of a rejected field names the field") {
+    ssao_settings in = zeroed();
+    in.radius = kNaN;
+    ssao_settings out = sentinel();
+    std::string why;
+    REQUIRE(resolve_settings(in, out, why) == SSAO_ERROR_INVALID_VALUE);
+    CHECK(why.find("radius") != std::string::npos);
+    in = zeroed();
+    set_raw(in.blur, 9);
+    why.clear();
+    REQUIRE(resolve_settings(in, out, why) == SSAO_ERROR_INVALID_ENUM);
+    CHECK(why.find("blur") != std::string::npos);
+}
+
+TEST_CASE("settings: resolving in place works") {
+    ssao_settings s = zeroed();
+    s.radius = 3.0f;
+    std::string why;
+    REQUIRE(resolve_settings(s, s, why) == SSAO_OK);
+    CHECK(s.radius == 3.0f);
+    CHECK(s.sample_count == 16u);
+    CHECK(s.bias == doctest::Approx(0.075));
+}
+
+TEST_CASE("settings: every preset resolves and quality grows from LOW to ULTRA") {
+    const ssao_preset presets[] = {SSAO_PRESET_DEFAULT, SSAO_PRESET_LOW, SSAO_PRESET_MEDIUM, SSAO_PRESET_HIGH,
+                                   SSAO_PRESET_ULTRA};
+    ssao_settings got[5];
+    for (int i = 0; i < 5; ++i) {
+        CAPTURE(i);
+        ssao_settings out = sentinel();
+        std::string why;
+        REQUIRE(preset_settings(presets[i], out, why) == SSAO_OK);
+        CHECK(out.size == sizeof(ssao_settings));
+        // Already resolved: resolving again changes nothing.
+        CHECK(same(resolve_ok(out), out));
+        got[i] = out;
+    }
+    const ssao_settings& def = got[0];
+    const ssao_settings& low = got[1];
+    const ssao_settings& medium = got[2];
+    const ssao_settings& high = got[3];
+    const ssao_settings& ultra = got[4];
+    CHECK(same(def, medium));                    // DEFAULT = MEDIUM
+    CHECK(same(medium, resolve_ok(zeroed())));   // = a zeroed struct
+    CHECK(low.sample_count < medium.sample_count);
+    CHECK(medium.sample_count < high.sample_count);
+    CHECK(high.sample_count < ultra.sample_count);
+    CHECK(ultra.sample_count <= 64u);
+    CHECK(low.blur_radius <= ultra.blur_radius);
+    for (const ssao_settings* p : {&low, &medium, &high, &ultra}) CHECK(p->strength == 1.0f);
+}
+
+TEST_CASE("settings: an unknown preset is INVALID_ENUM and leaves out untouched") {
+    for (int32_t raw : {5, 6, 100, -1, 0x7fffffff}) {
+        CAPTURE(raw);
+        ssao_preset p;
+        set_raw(p, raw);
+        ssao_settings out = sentinel();
+        const ssao_settings before = out;
+        std::string why;
+        CHECK(preset_settings(p, out, why) == SSAO_ERROR_INVALID_ENUM);
+        CHECK(same(out, before));
+        CHECK_FALSE(why.empty());
+    }
+}
