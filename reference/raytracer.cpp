@@ -11,6 +11,8 @@
 #include <mutex>
 #include <thread>
 
+#include <unistd.h>
+
 namespace raytrace {
 namespace {
 
@@ -245,13 +247,14 @@ bool Tracer::render(const camera::Camera& cam, const RenderOptions& o, Image& ou
     img.ao.assign(n, 1.0f);
     img.std_error.assign(n, 0.0f);
     img.mask.assign(n, 0.0f);
-    img.depth.assign(n, 0.0f);
+    img.depth.assign(n, std::numeric_limits<float>::infinity());
     img.normal.assign(n * 3, 0.0f);
 
     const glm::mat3 view3 = glm::mat3(camera::view_matrix(cam));
     const uint32_t seed_hash = hash32(o.seed * 0x9E3779B1u + 0x85ebca6bu);
     std::atomic<int> next_row{0}, rows_done{0};
     std::atomic<uint64_t> rays{0};
+    std::atomic<int64_t> finish_ns{0};  // when the last worker finished (the progress bar may lag)
 
     auto unproject = [&](double x, double y, double z, bool& finite) {
         const glm::dvec4 h = inv * glm::dvec4(x, y, z, 1.0);
@@ -300,13 +303,33 @@ bool Tracer::render(const camera::Camera& cam, const RenderOptions& o, Image& ou
             rows_done.fetch_add(1);
         }
         rays.fetch_add(local_rays);
+        const int64_t now = std::chrono::duration_cast<std::chrono::nanoseconds>(
+                                std::chrono::steady_clock::now() - start).count();
+        int64_t prev = finish_ns.load();
+        while (now > prev && !finish_ns.compare_exchange_weak(prev, now)) {
+        }
     };
 
     int threads = o.threads > 0 ? o.threads : int(std::max(1u, std::thread::hardware_concurrency()));
     threads = std::min(threads, o.height);
     std::vector<std::thread> pool;
     for (int i = 0; i < threads; ++i) pool.emplace_back(worker);
-    if (o.progress) {
+    if (o.progress && !isatty(fileno(stderr))) {
+        // Not a terminal (a log file, CI): a line per 10% instead of a redrawn bar.
+        int reported = 0;
+        for (;;) {
+            const int done = rows_done.load();
+            const int tenth = done * 10 / o.height;
+            if (tenth > reported) {
+                reported = tenth;
+                const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+                std::fprintf(stderr, "traced %3d%% of the rows, %.1f s\n", tenth * 10, secs);
+                std::fflush(stderr);
+            }
+            if (done >= o.height) break;
+            std::this_thread::sleep_for(std::chrono::milliseconds(100));
+        }
+    } else if (o.progress) {
         for (;;) {
             const int done = rows_done.load();
             const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -323,7 +346,7 @@ bool Tracer::render(const camera::Camera& cam, const RenderOptions& o, Image& ou
         std::fprintf(stderr, "\n");
     }
     for (auto& t : pool) t.join();
-    img.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    img.seconds = double(finish_ns.load()) * 1e-9;
     img.rays = rays.load();
     out = std::move(img);
     return true;

@@ -34,13 +34,14 @@ struct RenderOptions {
 
 // One image. Row 0 is the top row of the picture; pixel (x, y) is traced
 // through its centre. Sky pixels (the primary ray hits nothing between the
-// near and far planes) have mask 0, ao 1, std_error 0, depth 0, normal 0.
+// near and far planes) have mask 0, ao 1, std_error 0, depth +infinity (as
+// ssao-host's view_depth.exr), normal 0.
 struct Image {
     int width = 0, height = 0;
     std::vector<float> ao;         // V_R
     std::vector<float> std_error;  // per-pixel standard error of ao
     std::vector<float> mask;       // 1 = geometry, 0 = sky
-    std::vector<float> depth;      // view depth: -z_view of the hit (positive), 0 for sky
+    std::vector<float> depth;      // view depth: -z_view of the hit (positive), +inf for sky
     std::vector<float> normal;     // 3 per pixel: view-space geometric normal facing the camera
     double seconds = 0.0;
     uint64_t rays = 0;             // primary + occlusion rays traced

@@ -8,7 +8,7 @@
 //   reference_stderr.exr  channel Y = per-pixel standard error of Y (0 for sky)
 //   reference_ao.png      8-bit grey of Y (sky white)
 //   with --dump-buffers:
-//   reference_depth.exr   channel Z = view depth (-z_view, positive; 0 for sky)
+//   reference_depth.exr   channel Z = view depth (-z_view, positive; +inf for sky, as ssao-host's view_depth.exr)
 //   reference_normal.exr  channels R,G,B = view-space geometric normal facing the camera (0 for sky)
 // Row 0 of every image is the top row of the picture.
 #include "camera.h"
