@@ -1,0 +1,234 @@
+#include "hc_util.h"
+
+#include <doctest/doctest.h>
+
+#include <chrono>
+#include <cmath>
+#include <limits>
+
+namespace hc {
+
+Out run(testgl::Fixture& fx, const analytic::GBuffer& g, const glm::dmat4& proj, ssao_clip_range clip,
+        const RunOptions& o) {
+    Out r;
+    const int W = g.width + o.pad_x + o.pad_right, H = g.height + o.pad_y + o.pad_top;
+    const std::vector<glm::vec3>& normals = o.normals ? *o.normals : g.normal;
+    std::vector<float> depth(static_cast<size_t>(W) * H);
+    std::vector<glm::vec3> nrm(static_cast<size_t>(W) * H);
+    // Padding holds geometry-like garbage: a near depth and a skewed normal,
+    // so anything read outside the viewport would show.
+    for (size_t i = 0; i < depth.size(); ++i) {
+        depth[i] = 0.37f;
+        nrm[i] = glm::vec3(0.6f, -0.8f, 0.0f);
+    }
+    glm::dmat3 to_world = glm::transpose(glm::dmat3(o.view_matrix));
+    for (int y = 0; y < g.height; ++y)
+        for (int x = 0; x < g.width; ++x) {
+            const size_t s = at(x, y, g.width), d = at(x + o.pad_x, y + o.pad_y, W);
+            depth[d] = g.depth[s];
+            glm::vec3 n = normals[s];
+            if (o.normal_space == SSAO_NORMAL_SPACE_WORLD) n = glm::vec3(to_world * glm::dvec3(n));
+            nrm[d] = n;
+        }
+    const GLuint dt = fx.make_depth(o.depth_format, W, H, depth);
+    const GLuint nt = fx.make_normals(o.normal_format, W, H, nrm);
+    ssao_inputs in = fx.inputs(dt, nt, proj, clip);
+    in.normal_space = o.normal_space;
+    in.normal_packing = o.normal_format == GL_RGBA8 ? SSAO_NORMAL_PACKING_UNORM : SSAO_NORMAL_PACKING_SIGNED;
+    if (o.normal_space == SSAO_NORMAL_SPACE_WORLD) analytic::to_floats(o.view_matrix, in.view_matrix);
+    if (W != g.width || H != g.height) {
+        in.viewport[0] = o.pad_x;
+        in.viewport[1] = o.pad_y;
+        in.viewport[2] = g.width;
+        in.viewport[3] = g.height;
+    }
+    r.output.size = sizeof r.output;
+    fx.gl().Finish();
+    const auto t0 = std::chrono::steady_clock::now();
+    r.status = fx.api().execute(fx.ctx(), &in, &r.output);
+    fx.gl().Finish();
+    r.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    if (r.status == SSAO_OK) r.ao = fx.read_red(r.output.texture, g.width, g.height);
+    return r;
+}
+
+int check_unit_finite(const std::vector<float>& ao, const char* what) {
+    int bad = 0;
+    for (float v : ao)
+        if (!(std::isfinite(v) && v >= 0.0f && v <= 1.0f)) ++bad;
+    INFO(what << ": " << bad << " of " << ao.size() << " pixels are not finite or outside [0,1]");
+    CHECK(bad == 0);
+    CHECK(!ao.empty());
+    return bad;
+}
+
+ssao_settings make(uint32_t samples, ssao_blur blur, ssao_rotation rotation, float radius) {
+    ssao_settings s{};
+    s.size = sizeof s;
+    s.sample_count = samples;
+    s.blur = blur;
+    s.rotation = rotation;
+    s.radius = radius;
+    s.output_format = SSAO_OUTPUT_R16F;
+    return s;
+}
+
+glm::dmat4 ortho_zo(double half_w, double half_h, double n, double f) {
+    glm::dmat4 m(1.0);
+    m[0][0] = 1.0 / half_w;
+    m[1][1] = 1.0 / half_h;
+    m[2][2] = -1.0 / (f - n);
+    m[3][2] = -n / (f - n);
+    return m;
+}
+
+glm::dmat4 ortho_reverse(double half_w, double half_h, double n, double f) {
+    glm::dmat4 m(1.0);
+    m[0][0] = 1.0 / half_w;
+    m[1][1] = 1.0 / half_h;
+    m[2][2] = 1.0 / (f - n);
+    m[3][2] = f / (f - n);
+    return m;
+}
+
+glm::dmat4 frustum(double l, double r, double b, double t, double n, double f) {
+    glm::dmat4 m(0.0);
+    m[0][0] = 2 * n / (r - l);
+    m[1][1] = 2 * n / (t - b);
+    m[2][0] = (r + l) / (r - l);
+    m[2][1] = (t + b) / (t - b);
+    m[2][2] = -(f + n) / (f - n);
+    m[2][3] = -1.0;
+    m[3][2] = -2 * f * n / (f - n);
+    return m;
+}
+
+glm::dmat4 pixel_shift(const glm::dmat4& proj, double px, double py, int w, int h) {
+    glm::dmat4 shift(1.0);
+    shift[3][0] = 2.0 * px / w;
+    shift[3][1] = 2.0 * py / h;
+    return shift * proj;
+}
+
+double depth_at(const glm::dmat4& proj, ssao_clip_range clip, double t) {
+    const glm::dvec4 c = proj * glm::dvec4(0, 0, -t, 1);
+    const double z = c.z / c.w;
+    return clip == SSAO_CLIP_ZERO_TO_ONE ? z : z * 0.5 + 0.5;
+}
+
+int format_bits(GLenum f) {
+    switch (f) {
+        case GL_DEPTH_COMPONENT16: return 16;
+        case GL_DEPTH_COMPONENT24:
+        case GL_DEPTH24_STENCIL8: return 24;
+        default: return 32;
+    }
+}
+
+namespace {
+double distance_of(const glm::dmat4& proj, ssao_clip_range clip, double d) {
+    const double ndc = clip == SSAO_CLIP_ZERO_TO_ONE ? d : d * 2 - 1;
+    const glm::dvec4 v = glm::inverse(proj) * glm::dvec4(0, 0, ndc, 1);
+    return -v.z / v.w;
+}
+}  // namespace
+
+double depth_step(const glm::dmat4& proj, ssao_clip_range clip, GLenum fmt, double t) {
+    const double d = depth_at(proj, clip, t);
+    const int bits = format_bits(fmt);
+    double step;
+    if (bits == 32) {
+        const float fd = static_cast<float>(d);
+        step = static_cast<double>(std::nextafter(fd, 2.0f)) - fd;
+    } else {
+        step = 1.0 / (std::ldexp(1.0, bits) - 1.0);
+    }
+    return std::abs(distance_of(proj, clip, d + step) - distance_of(proj, clip, d));
+}
+
+double design_step(GLenum fmt, bool reverse_zo, double n, double t) {
+    const int bits = format_bits(fmt);
+    if (bits == 16) return 1.5e-5 * t * t / n;
+    if (bits == 32 && reverse_zo) return 1.2e-7 * t;
+    return 6e-8 * t * t / n;
+}
+
+double quantise(double d, GLenum fmt) {
+    const int bits = format_bits(fmt);
+    if (bits == 32) return static_cast<float>(d);
+    const double m = std::ldexp(1.0, bits) - 1.0;
+    return std::round(d * m) / m;
+}
+
+glm::vec3 shader_view_position(const glm::dmat4& proj, ssao_clip_range clip, int px, int py, int w, int h,
+                               float depth) {
+    const glm::mat4 inv(glm::inverse(glm::dmat4(glm::mat4(proj))));  // float matrix in, double inverse, float out
+    const glm::vec2 ndc = (glm::vec2(static_cast<float>(px), static_cast<float>(py)) + 0.5f) /
+                              glm::vec2(static_cast<float>(w), static_cast<float>(h)) * 2.0f -
+                          1.0f;
+    const float z = clip == SSAO_CLIP_ZERO_TO_ONE ? depth : depth * 2.0f - 1.0f;
+    const glm::vec4 v = inv * glm::vec4(ndc, z, 1.0f);
+    return glm::vec3(v) / v.w;
+}
+
+double mean(const std::vector<float>& v, const std::function<bool(size_t)>& mask) {
+    double s = 0;
+    size_t n = 0;
+    for (size_t i = 0; i < v.size(); ++i)
+        if (!mask || mask(i)) {
+            s += v[i];
+            ++n;
+        }
+    return n ? s / static_cast<double>(n) : std::nan("");
+}
+
+}  // namespace hc
+
+namespace hc {
+
+glm::dmat4 crease_view(double scale, glm::dvec3 eye_offset) {
+    glm::dmat4 rot(1.0);
+    const double a = 0.436, c = std::cos(a), s = std::sin(a);
+    rot[1][1] = c; rot[1][2] = s; rot[2][1] = -s; rot[2][2] = c;  // rotate about x by a
+    glm::dmat4 tr(1.0);
+    tr[3] = glm::dvec4(-eye_offset - glm::dvec3(0, 2 * scale, 0), 1.0);
+    return rot * tr;
+}
+
+analytic::Scene crease_world(double k, bool boxes, glm::dvec3 o) {
+    analytic::Scene s;
+    s.add_quad(o + k * glm::dvec3(-50, 0, 50), k * glm::dvec3(100, 0, 0), k * glm::dvec3(0, 0, -56));
+    s.add_quad(o + k * glm::dvec3(-50, 0, -6), k * glm::dvec3(100, 0, 0), k * glm::dvec3(0, 50, 0));
+    if (boxes) {
+        s.add_box(o + k * glm::dvec3(-2.0, 0, -4.5), o + k * glm::dvec3(-0.8, 1.2, -3.3));
+        s.add_box(o + k * glm::dvec3(0.9, 0, -5.4), o + k * glm::dvec3(1.7, 2.0, -4.6));
+    }
+    return s;
+}
+
+analytic::Scene to_view(const analytic::Scene& world, const glm::dmat4& view) {
+    analytic::Scene s;
+    for (const auto& q : world.quads)
+        s.add_quad(glm::dvec3(view * glm::dvec4(q.origin, 1.0)), glm::dvec3(view * glm::dvec4(q.u, 0.0)),
+                   glm::dvec3(view * glm::dvec4(q.v, 0.0)));
+    return s;
+}
+
+Diff diff(const std::vector<float>& a, const std::vector<float>& b, const std::function<bool(size_t)>& mask,
+          double one_sample) {
+    Diff d;
+    double sum = 0;
+    for (size_t i = 0; i < a.size() && i < b.size(); ++i) {
+        if (mask && !mask(i)) continue;
+        const double e = std::abs(static_cast<double>(a[i]) - b[i]);
+        ++d.compared;
+        sum += e;
+        if (e > 1e-3) ++d.over_1e3;
+        if (e > one_sample + 2e-3) ++d.over_one_sample;
+        d.worst = std::max(d.worst, e);
+    }
+    d.mean_abs = d.compared ? sum / static_cast<double>(d.compared) : 0;
+    return d;
+}
+
+}  // namespace hc

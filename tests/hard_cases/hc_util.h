@@ -1,0 +1,98 @@
+// hc_util.h - helpers for the hard-case tests: one execute with any depth and
+// normal format, normal space, viewport padding and normal override; checks
+// that every output pixel is finite and in [0,1]; exact depth steps of each
+// format; the shader's view-position reconstruction emulated in float; a few
+// projections the shared support does not have.
+#pragma once
+
+#include "gl_fixture.h"
+
+#include <ssao/ssao.h>
+
+#include <glm/glm.hpp>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace hc {
+
+inline constexpr double kFov = 1.0471975512;  // 60 degrees
+
+struct RunOptions {
+    GLenum depth_format = GL_DEPTH_COMPONENT32F;
+    GLenum normal_format = GL_RGBA16F;
+    ssao_normal_space normal_space = SSAO_NORMAL_SPACE_VIEW;
+    glm::dmat4 view_matrix{1.0};                  // for world-space normals
+    const std::vector<glm::vec3>* normals = nullptr;  // overrides the G-buffer's normals
+    int pad_x = 0, pad_y = 0;                     // embed the G-buffer at this offset in a larger texture
+    int pad_right = 0, pad_top = 0;               // extra texels right of / above the viewport
+};
+
+struct Out {
+    ssao_status status = SSAO_OK;
+    std::vector<float> ao;   // viewport-sized, row-major from the bottom row
+    ssao_output output{};
+    double ms = 0.0;         // execute + glFinish wall time
+};
+
+Out run(testgl::Fixture& fx, const analytic::GBuffer& g, const glm::dmat4& proj, ssao_clip_range clip,
+        const RunOptions& o = {});
+
+// CHECKs that every value is finite and in [0,1]; returns how many were not.
+int check_unit_finite(const std::vector<float>& ao, const char* what = "");
+
+ssao_settings make(uint32_t samples, ssao_blur blur, ssao_rotation rotation, float radius);
+
+// Projections beyond the shared support's.
+glm::dmat4 ortho_zo(double half_w, double half_h, double n, double f);          // [0,1], near -> 0
+glm::dmat4 ortho_reverse(double half_w, double half_h, double n, double f);     // [0,1], near -> 1
+glm::dmat4 frustum(double l, double r, double b, double t, double n, double f); // GL [-1,1], off-centre
+// Shifts the image by (px, py) whole or fractional pixels of a w x h viewport.
+glm::dmat4 pixel_shift(const glm::dmat4& proj, double px, double py, int w, int h);
+
+// The depth-buffer value of view distance t along -z.
+double depth_at(const glm::dmat4& proj, ssao_clip_range clip, double t);
+// Bits of a depth format (16, 24, 32 = float).
+int format_bits(GLenum depth_format);
+// The view-distance change of one step of the format at distance t (exact,
+// in double): |t(d + step) - t(d)| with step = 1/(2^bits-1) or one float ulp.
+double depth_step(const glm::dmat4& proj, ssao_clip_range clip, GLenum depth_format, double t);
+// The DESIGN.md table's estimate of the same.
+double design_step(GLenum depth_format, bool reverse_zo, double n, double t);
+// The depth value the format stores for d (round to nearest unorm / float).
+double quantise(double d, GLenum depth_format);
+
+// The shader's view_position (shaders/common.glsl) emulated in float: the
+// inverse projection computed in double and stored as float, NDC from the
+// pixel centre in float, one float matrix-vector product and division.
+glm::vec3 shader_view_position(const glm::dmat4& proj, ssao_clip_range clip, int px, int py, int w, int h,
+                               float depth);
+
+// Row-major index helper.
+inline size_t at(int x, int y, int w) { return static_cast<size_t>(y) * w + x; }
+
+double mean(const std::vector<float>& v, const std::function<bool(size_t)>& mask = {});
+
+}  // namespace hc
+
+namespace hc {
+
+// World -> view for the crease scenes: 2 units (times scale) above the floor,
+// pitched 25 degrees down, camera at `eye_offset` in the world.
+glm::dmat4 crease_view(double scale = 1.0, glm::dvec3 eye_offset = glm::dvec3(0.0));
+// World-space floor y = 0 and wall z = -6 (times scale), optionally two boxes,
+// all moved by `offset`.
+analytic::Scene crease_world(double scale = 1.0, bool boxes = true, glm::dvec3 offset = glm::dvec3(0.0));
+// The scene's quads mapped into view space.
+analytic::Scene to_view(const analytic::Scene& world, const glm::dmat4& view);
+
+// Compares two AO images over a mask: counts and worst difference.
+struct Diff {
+    size_t compared = 0, over_1e3 = 0, over_one_sample = 0;
+    double worst = 0, mean_abs = 0;
+};
+Diff diff(const std::vector<float>& a, const std::vector<float>& b, const std::function<bool(size_t)>& mask,
+          double one_sample);
+
+}  // namespace hc

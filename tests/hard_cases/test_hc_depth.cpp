@@ -1,0 +1,445 @@
+// Depth conventions, formats and range: the same scene gives the same AO in
+// every convention, reconstruction matches the analytic hit within the
+// format's precision, frame info reports the projection right, a tilted plane
+// stays unoccluded out to the distance each format resolves, the bias scales
+// with the depth step, and view depths beyond the half-float range work.
+#include <doctest/doctest.h>
+
+#include "hc_util.h"
+#include "projection.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+using analytic::GBuffer;
+using analytic::Scene;
+
+namespace {
+
+struct Convention {
+    const char* name;
+    glm::dmat4 proj;
+    ssao_clip_range clip;
+    GLenum format;
+    bool ortho, reverse, infinite;
+    double n, f;
+};
+
+std::vector<Convention> perspective_conventions(double aspect, double n, double f) {
+    return {
+        {"GL [-1,1] D32F", analytic::perspective(hc::kFov, aspect, n, f), SSAO_CLIP_NEGATIVE_ONE_TO_ONE, GL_DEPTH_COMPONENT32F, false, false, false, n, f},
+        {"GL [-1,1] D24", analytic::perspective(hc::kFov, aspect, n, f), SSAO_CLIP_NEGATIVE_ONE_TO_ONE, GL_DEPTH_COMPONENT24, false, false, false, n, f},
+        {"GL [-1,1] D24S8", analytic::perspective(hc::kFov, aspect, n, f), SSAO_CLIP_NEGATIVE_ONE_TO_ONE, GL_DEPTH24_STENCIL8, false, false, false, n, f},
+        {"[0,1] D32F", analytic::perspective_zo(hc::kFov, aspect, n, f), SSAO_CLIP_ZERO_TO_ONE, GL_DEPTH_COMPONENT32F, false, false, false, n, f},
+        {"reverse-Z [0,1] D32F", analytic::reverse_z(hc::kFov, aspect, n, f), SSAO_CLIP_ZERO_TO_ONE, GL_DEPTH_COMPONENT32F, false, true, false, n, f},
+        {"reverse-Z [0,1] D32FS8", analytic::reverse_z(hc::kFov, aspect, n, f), SSAO_CLIP_ZERO_TO_ONE, GL_DEPTH32F_STENCIL8, false, true, false, n, f},
+        {"reverse-Z infinite D32F", analytic::reverse_z_infinite(hc::kFov, aspect, n), SSAO_CLIP_ZERO_TO_ONE, GL_DEPTH_COMPONENT32F, false, true, true, n, INFINITY},
+        {"GL infinite D32F", analytic::infinite(hc::kFov, aspect, n), SSAO_CLIP_NEGATIVE_ONE_TO_ONE, GL_DEPTH_COMPONENT32F, false, false, true, n, INFINITY},
+        {"GL infinite D24", analytic::infinite(hc::kFov, aspect, n), SSAO_CLIP_NEGATIVE_ONE_TO_ONE, GL_DEPTH_COMPONENT24, false, false, true, n, INFINITY},
+    };
+}
+
+std::vector<Convention> ortho_conventions(double hw, double hh, double n, double f) {
+    return {
+        {"ortho GL [-1,1] D32F", analytic::orthographic(hw, hh, n, f), SSAO_CLIP_NEGATIVE_ONE_TO_ONE, GL_DEPTH_COMPONENT32F, true, false, false, n, f},
+        {"ortho GL [-1,1] D24", analytic::orthographic(hw, hh, n, f), SSAO_CLIP_NEGATIVE_ONE_TO_ONE, GL_DEPTH_COMPONENT24, true, false, false, n, f},
+        {"ortho GL [-1,1] D16", analytic::orthographic(hw, hh, n, f), SSAO_CLIP_NEGATIVE_ONE_TO_ONE, GL_DEPTH_COMPONENT16, true, false, false, n, f},
+        {"ortho [0,1] D32F", hc::ortho_zo(hw, hh, n, f), SSAO_CLIP_ZERO_TO_ONE, GL_DEPTH_COMPONENT32F, true, false, false, n, f},
+        {"ortho reverse [0,1] D32F", hc::ortho_reverse(hw, hh, n, f), SSAO_CLIP_ZERO_TO_ONE, GL_DEPTH_COMPONENT32F, true, true, false, n, f},
+    };
+}
+
+void check_frame_info(testgl::Fixture& fx, const Convention& c) {
+    ssao_frame_info info{};
+    info.size = sizeof info;
+    REQUIRE(fx.api().get_frame_info(fx.ctx(), &info) == SSAO_OK);
+    const std::string cname = c.name; CAPTURE(cname);
+    CHECK(info.orthographic == (c.ortho ? 1u : 0u));
+    CHECK(info.reverse_z == (c.reverse ? 1u : 0u));
+    CHECK(info.infinite_far == (c.infinite ? 1u : 0u));
+    CHECK(info.depth_bits == static_cast<uint32_t>(hc::format_bits(c.format)));
+    // The matrix is float: its near and far are those of the rounded matrix,
+    // within float rounding amplified by f/n (the far plane of a float matrix
+    // moves by about 1e-7 * f/n relative).
+    CHECK(std::abs(info.near_distance - c.n) <= 1e-5 * c.n);
+    if (c.infinite) {
+        CHECK(std::isinf(info.far_distance));
+        CHECK(info.far_distance > 0);
+    } else {
+        CHECK(std::abs(info.far_distance - c.f) <= (1e-5 + 2e-7 * c.f / c.n) * c.f);
+    }
+}
+
+}  // namespace
+
+TEST_CASE("depth conventions: the same scene gives the same AO in every clip range, reverse-Z, infinite far, D16/D24/D32F") {
+    testgl::Fixture fx;
+    const int W = 64, H = 48;
+    const double n = 0.1, f = 100.0;
+    const Scene scene = hc::to_view(hc::crease_world(), hc::crease_view());
+    const ssao_settings s = fx.settings(hc::make(16, SSAO_BLUR_NONE, SSAO_ROTATION_HASH, 1.0f));
+    auto convs = perspective_conventions(double(W) / H, n, f);
+    std::vector<float> ref;
+    for (const auto& c : convs) {
+        const std::string cname = c.name; CAPTURE(cname);
+        const GBuffer g = analytic::render(scene, c.proj, c.clip, W, H);
+        hc::RunOptions o;
+        o.depth_format = c.format;
+        const auto r = hc::run(fx, g, c.proj, c.clip, o);
+        REQUIRE(r.status == SSAO_OK);
+        hc::check_unit_finite(r.ao, c.name);
+        check_frame_info(fx, c);
+        if (ref.empty()) { ref = r.ao; continue; }
+        const auto d = hc::diff(ref, r.ao, {}, 1.0 / s.sample_count);
+        MESSAGE(std::string(c.name) << " vs GL D32F: mean |diff| " << d.mean_abs << ", worst " << d.worst << ", " << d.over_1e3
+                       << " px > 1e-3, " << d.over_one_sample << " px > one sample, of " << d.compared);
+        // Depth precision only moves samples lying within a few depth steps of
+        // a comparison threshold: at most one sample flips at a pixel, rarely.
+        CHECK(d.mean_abs < 0.004);
+        CHECK(d.over_one_sample <= d.compared / 100);
+        CHECK(d.worst <= 2.0 / s.sample_count + 2e-3);
+    }
+    CHECK(fx.gl_errors().empty());
+}
+
+TEST_CASE("depth conventions: orthographic in [-1,1], [0,1] and reversed give the same AO") {
+    testgl::Fixture fx;
+    const int W = 64, H = 48;
+    const Scene scene = hc::to_view(hc::crease_world(), hc::crease_view());
+    const ssao_settings s = fx.settings(hc::make(16, SSAO_BLUR_NONE, SSAO_ROTATION_HASH, 1.0f));
+    std::vector<float> ref;
+    for (const auto& c : ortho_conventions(4.0, 3.0, 0.5, 60.0)) {
+        const std::string cname = c.name; CAPTURE(cname);
+        const GBuffer g = analytic::render(scene, c.proj, c.clip, W, H);
+        hc::RunOptions o;
+        o.depth_format = c.format;
+        const auto r = hc::run(fx, g, c.proj, c.clip, o);
+        REQUIRE(r.status == SSAO_OK);
+        hc::check_unit_finite(r.ao, c.name);
+        check_frame_info(fx, c);
+        if (ref.empty()) {
+            ref = r.ao;
+            // Orthographic AO is neither inverted nor absent: the crease darkens.
+            CHECK(*std::min_element(r.ao.begin(), r.ao.end()) < 0.8f);
+            CHECK(hc::mean(r.ao) < 0.995);
+            CHECK(hc::mean(r.ao) > 0.5);
+            continue;
+        }
+        const auto d = hc::diff(ref, r.ao, {}, 1.0 / s.sample_count);
+        MESSAGE(std::string(c.name) << " vs ortho GL D32F: mean |diff| " << d.mean_abs << ", worst " << d.worst << ", "
+                       << d.over_one_sample << " px > one sample, of " << d.compared);
+        CHECK(d.mean_abs < 0.004);
+        CHECK(d.over_one_sample <= d.compared / 100);
+        CHECK(d.worst <= 2.0 / s.sample_count + 2e-3);
+    }
+    CHECK(fx.gl_errors().empty());
+}
+
+TEST_CASE("depth conventions: an off-centre frustum gives the AO of the matching half of the symmetric one") {
+    testgl::Fixture fx;
+    const int W = 64, H = 48;
+    const double n = 0.1, f = 100, b = std::tan(hc::kFov / 2) * n, a = b * W / H;
+    const Scene scene = hc::to_view(hc::crease_world(), hc::crease_view());
+    fx.settings(hc::make(16, SSAO_BLUR_NONE, SSAO_ROTATION_NONE, 0.5f));
+    const auto full_proj = hc::frustum(-a, a, -b, b, n, f);
+    const auto right_proj = hc::frustum(0, a, -b, b, n, f);  // the right half: pixels W/2..W-1
+    const GBuffer full = analytic::render(scene, full_proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, W, H);
+    const GBuffer right = analytic::render(scene, right_proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, W / 2, H);
+    const auto rf = hc::run(fx, full, full_proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE);
+    const auto rr = hc::run(fx, right, right_proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE);
+    REQUIRE(rf.status == SSAO_OK);
+    REQUIRE(rr.status == SSAO_OK);
+    hc::check_unit_finite(rf.ao, "symmetric");
+    hc::check_unit_finite(rr.ao, "off-centre");
+    ssao_frame_info info{};
+    info.size = sizeof info;
+    REQUIRE(fx.api().get_frame_info(fx.ctx(), &info) == SSAO_OK);
+    CHECK(info.near_distance == doctest::Approx(n).epsilon(1e-5));
+    CHECK(info.far_distance == doctest::Approx(f).epsilon(1e-4));
+    // Kernel footprint: radius 0.5 at the nearest visible depth (> 2.5) spans
+    // at most 0.5 / 2.5 * H / (2 tan 30) ~ 8 pixels; stay 10 from the cut
+    // and from the top/bottom rows.
+    int compared = 0, off = 0;
+    double worst = 0;
+    for (int y = 10; y < H - 10; ++y)
+        for (int x = 10; x < W / 2 - 10; ++x) {
+            const double e = std::abs(rr.ao[hc::at(x, y, W / 2)] - rf.ao[hc::at(x + W / 2, y, W)]);
+            worst = std::max(worst, e);
+            ++compared;
+            if (e > 1e-3) ++off;
+        }
+    MESSAGE("off-centre vs symmetric: " << off << " of " << compared << " differ by > 1e-3, worst " << worst);
+    CHECK(off <= compared / 100);
+    CHECK(worst <= 1.0 / 16 + 2e-3);
+    CHECK(fx.gl_errors().empty());
+}
+
+TEST_CASE("depth conventions: a half-pixel jitter leaves the AO profile across the crease unchanged") {
+    testgl::Fixture fx;
+    const int W = 96, H = 96;
+    const glm::dmat4 view = hc::crease_view();
+    const Scene scene = hc::to_view(hc::crease_world(1.0, false), view);
+    fx.settings(hc::make(32, SSAO_BLUR_DEFAULT, SSAO_ROTATION_HASH, 1.5f));
+    const auto proj = analytic::reverse_z(hc::kFov, 1.0, 0.1, 100.0);
+    const double radius = 1.5;
+    std::vector<std::vector<double>> profiles;
+    for (double jitter : {0.0, 0.5, -0.5}) {
+        const auto p = hc::pixel_shift(proj, jitter, jitter * 0.5, W, H);
+        const GBuffer g = analytic::render(scene, p, SSAO_CLIP_ZERO_TO_ONE, W, H);
+        const auto r = hc::run(fx, g, p, SSAO_CLIP_ZERO_TO_ONE);
+        REQUIRE(r.status == SSAO_OK);
+        hc::check_unit_finite(r.ao, "jitter");
+        const int bins = 5;
+        std::vector<double> sum(bins, 0), cnt(bins, 0);
+        for (int y = 0; y < H; ++y)
+            for (int x = 8; x < W - 8; ++x) {
+                if (g.sky(x, y)) continue;
+                const glm::dvec3 w = glm::dvec3(glm::inverse(view) * glm::dvec4(g.position[hc::at(x, y, W)], 1.0));
+                if (std::abs(w.y) > 1e-6) continue;
+                const int b = static_cast<int>((w.z + 6.0) / (radius / 4));
+                if (b < 0 || b >= bins) continue;
+                sum[b] += r.ao[hc::at(x, y, W)];
+                cnt[b] += 1;
+            }
+        std::vector<double> prof(bins);
+        for (int b = 0; b < bins; ++b) {
+            CHECK(cnt[b] > 20);
+            prof[b] = sum[b] / cnt[b];
+        }
+        profiles.push_back(prof);
+    }
+    for (size_t j = 1; j < profiles.size(); ++j)
+        for (size_t b = 0; b < profiles[0].size(); ++b) {
+            CAPTURE(j);
+            CAPTURE(b);
+            CHECK(std::abs(profiles[j][b] - profiles[0][b]) < 0.03);
+        }
+    CHECK(fx.gl_errors().empty());
+}
+
+TEST_CASE("reconstruction: view positions rebuilt from float depth and a float matrix match the analytic ray-plane hit") {
+    // The shader's view_position (float) and ssao_impl::view_position (double,
+    // from the float-rounded matrix) against the exact hit, within the depth
+    // format's step at the hit (DESIGN.md table) plus float rounding.
+    const int W = 40, H = 30;
+    const Scene scene = hc::to_view(hc::crease_world(), hc::crease_view());
+    auto convs = perspective_conventions(double(W) / H, 0.1, 100.0);
+    for (auto& c : ortho_conventions(4.0, 3.0, 0.5, 60.0)) convs.push_back(c);
+    const double b = std::tan(hc::kFov / 2) * 0.1, a = b * W / H;
+    convs.push_back({"off-centre GL D32F", hc::frustum(-0.3 * a, 1.7 * a, -0.8 * b, 1.1 * b, 0.1, 100), SSAO_CLIP_NEGATIVE_ONE_TO_ONE,
+                     GL_DEPTH_COMPONENT32F, false, false, false, 0.1, 100});
+    convs.push_back({"jittered reverse-Z D32F", hc::pixel_shift(analytic::reverse_z(hc::kFov, double(W) / H, 0.1, 100), 0.5, -0.5, W, H),
+                     SSAO_CLIP_ZERO_TO_ONE, GL_DEPTH_COMPONENT32F, false, true, false, 0.1, 100});
+    for (const auto& c : convs) {
+        const std::string cname = c.name; CAPTURE(cname);
+        const GBuffer g = analytic::render(scene, c.proj, c.clip, W, H);
+        float m[16];
+        analytic::to_floats(c.proj, m);
+        ssao_impl::ProjectionInfo info;
+        std::string why;
+        REQUIRE(ssao_impl::analyse_projection(m, c.clip, info, why) == SSAO_OK);
+        CHECK(info.orthographic == c.ortho);
+        CHECK(info.reverse_z == c.reverse);
+        CHECK(info.infinite_far == c.infinite);
+        double worst_shader = 0, worst_core = 0;
+        int checked = 0;
+        for (int y = 0; y < H; ++y)
+            for (int x = 0; x < W; ++x) {
+                if (g.sky(x, y)) continue;
+                const glm::dvec3 exact = g.position[hc::at(x, y, W)];
+                const double t = -exact.z;
+                const float d = static_cast<float>(hc::quantise(g.depth[hc::at(x, y, W)], c.format));
+                // Allowed: the format's step (what the stored depth can say),
+                // its effect on x and y along the ray, and float rounding of
+                // the matrix and the arithmetic (a few ulps of |P|).
+                const double step = hc::depth_step(c.proj, c.clip, c.format, t);
+                const double ray = glm::length(exact) / t;  // |dP| per unit of dz along the ray
+                const double allowed = 1.0 * step * ray + 2e-6 * glm::length(exact);
+                const glm::dvec3 ps = glm::dvec3(hc::shader_view_position(c.proj, c.clip, x, y, W, H, d));
+                const double ndc_x = (x + 0.5) / W * 2 - 1, ndc_y = (y + 0.5) / H * 2 - 1;
+                const glm::dvec3 pc = ssao_impl::view_position(info, ndc_x, ndc_y, d);
+                worst_shader = std::max(worst_shader, glm::length(ps - exact) / allowed);
+                worst_core = std::max(worst_core, glm::length(pc - exact) / allowed);
+                ++checked;
+            }
+        MESSAGE(std::string(c.name) << ": " << checked << " px; worst error / allowed: shader (float) " << worst_shader
+                       << ", core (double) " << worst_core);
+        CHECK(checked > W * H / 2);
+        CHECK(worst_shader <= 1.0);
+        CHECK(worst_core <= 1.0);
+    }
+}
+
+namespace {
+
+struct Format {
+    const char* name;
+    GLenum format;
+    bool reverse_zo;  // reverse-Z with a [0,1] clip range (D32F only)
+};
+
+const Format kFormats[] = {
+    {"D16", GL_DEPTH_COMPONENT16, false},
+    {"D24", GL_DEPTH_COMPONENT24, false},
+    {"D32F", GL_DEPTH_COMPONENT32F, false},
+    {"D32F reverse-Z", GL_DEPTH_COMPONENT32F, true},
+};
+
+glm::dmat4 projection_for(const Format& fm, double n, double ratio, ssao_clip_range& clip) {
+    const bool inf = std::isinf(ratio);
+    clip = fm.reverse_zo ? SSAO_CLIP_ZERO_TO_ONE : SSAO_CLIP_NEGATIVE_ONE_TO_ONE;
+    if (fm.reverse_zo) return inf ? analytic::reverse_z_infinite(hc::kFov, 1.0, n) : analytic::reverse_z(hc::kFov, 1.0, n, n * ratio);
+    return inf ? analytic::infinite(hc::kFov, 1.0, n) : analytic::perspective(hc::kFov, 1.0, n, n * ratio);
+}
+
+// A plane through (0, 0, -z0) tilted by `tilt` about the view x axis (0 =
+// facing the camera, 89 = almost edge-on, seen at a grazing angle).
+Scene tilted_plane(double z0, double tilt_deg) {
+    const double a = tilt_deg * 3.14159265358979 / 180.0;
+    const glm::dvec3 c(0, 0, -z0), u(1, 0, 0), v(0, std::cos(a), -std::sin(a));
+    const double L = z0 * 1e3;
+    Scene s;
+    s.add_quad(c - u * L - v * L, u * (2 * L), v * (2 * L));
+    return s;
+}
+
+struct Acne {
+    int resolvable = 0, dark = 0;
+    float min_ao = 1.0f;
+};
+
+// AO of the tilted plane over the pixels whose distance the format resolves:
+// the depth step there is at most 1/16 of the radius (so the step-scaled
+// bias, 2 x 2 steps, stays below a quarter of the radius and real occluders
+// are still seen).
+Acne tilted_run(testgl::Fixture& fx, const Format& fm, double n, double ratio, double z0, double tilt,
+                double radius, int size = 32, double resolve_fraction = 1.0 / 16) {
+    ssao_clip_range clip;
+    const glm::dmat4 proj = projection_for(fm, n, ratio, clip);
+    const GBuffer g = analytic::render(tilted_plane(z0, tilt), proj, clip, size, size);
+    hc::RunOptions o;
+    o.depth_format = fm.format;
+    const auto r = hc::run(fx, g, proj, clip, o);
+    REQUIRE(r.status == SSAO_OK);
+    hc::check_unit_finite(r.ao, fm.name);
+    Acne a;
+    for (int y = 0; y < size; ++y)
+        for (int x = 0; x < size; ++x) {
+            if (g.sky(x, y)) continue;
+            const double t = -g.position[hc::at(x, y, size)].z;
+            if (hc::depth_step(proj, clip, fm.format, t) > radius * resolve_fraction) continue;
+            ++a.resolvable;
+            const float v = r.ao[hc::at(x, y, size)];
+            a.min_ao = std::min(a.min_ao, v);
+            if (v < 0.98f) ++a.dark;
+        }
+    return a;
+}
+
+}  // namespace
+
+TEST_CASE("depth formats and range: a plane tilted 0..89 degrees stays unoccluded wherever the format resolves its depth") {
+    testgl::Fixture fx;
+    fx.settings(hc::make(16, SSAO_BLUR_NONE, SSAO_ROTATION_HASH, 1.0f));  // radius set per run below
+    int runs = 0, total_resolvable = 0;
+    for (const Format& fm : kFormats)
+        for (double n : {1e-4, 1e-2, 1.0})
+            for (double ratio : {1e3, 1e6, double(INFINITY)})
+                for (double zr : {4.0, 40.0, 400.0, 4e4, 4e5}) {
+                    const double z0 = zr * n;
+                    if (!std::isinf(ratio) && z0 > 0.5 * n * ratio) continue;
+                    const double radius = 0.1 * z0;
+                    ssao_clip_range clip;
+                    const glm::dmat4 proj = projection_for(fm, n, ratio, clip);
+                    // Skip distances the format cannot resolve at all.
+                    if (hc::depth_step(proj, clip, fm.format, z0) > radius / 16) continue;
+                    ssao_settings s = hc::make(16, SSAO_BLUR_NONE, SSAO_ROTATION_HASH, static_cast<float>(radius));
+                    fx.settings(s);
+                    for (double tilt : {0.0, 30.0, 60.0, 80.0, 89.0}) {
+                        const std::string fname = fm.name; CAPTURE(fname);
+                        CAPTURE(n);
+                        CAPTURE(ratio);
+                        CAPTURE(z0);
+                        CAPTURE(tilt);
+                        const Acne a = tilted_run(fx, fm, n, ratio, z0, tilt, radius);
+                        ++runs;
+                        total_resolvable += a.resolvable;
+                        CHECK(a.dark == 0);
+                        CHECK(a.min_ao >= 0.98f);
+                    }
+                }
+    MESSAGE(runs << " runs, " << total_resolvable << " resolvable pixels checked");
+    CHECK(runs > 100);
+    CHECK(fx.gl_errors().empty());
+}
+
+TEST_CASE("depth formats: the bias follows the format's depth step (a tiny depth_step_bias shows acne where the default is clean)") {
+    // D16, near 0.01, a plane 1000 near-distances away: the depth step there is
+    // about 0.15 radius, far above the constant bias (0.025 radius). The
+    // default step-scaled bias keeps it clean; with depth_step_bias = 1e-4
+    // only the constant bias is left and the quantised plane shadows itself.
+    testgl::Fixture fx;
+    const Format d16 = kFormats[0];
+    const double n = 1e-2, ratio = 1e3, z0 = 1000 * n, radius = 0.1 * z0;
+    ssao_clip_range clip;
+    const glm::dmat4 proj = projection_for(d16, n, ratio, clip);
+    const double step = hc::depth_step(proj, clip, d16.format, z0);
+    ssao_settings s = hc::make(16, SSAO_BLUR_NONE, SSAO_ROTATION_HASH, static_cast<float>(radius));
+    const ssao_settings resolved = fx.settings(s);
+    MESSAGE("D16, near " << n << ", plane at " << z0 << ": depth step " << step << " (" << step / radius
+                         << " radius), constant bias " << resolved.bias << " (" << resolved.bias / step << " steps)");
+    REQUIRE(step > 4.0 * resolved.bias);  // the constant bias alone is far too small here
+    const double tilts[] = {10.0, 20.0, 40.0, 60.0};
+    int clean_dark = 0, acne_dark = 0, pixels = 0;
+    for (double tilt : tilts) {
+        const Acne a = tilted_run(fx, d16, n, ratio, z0, tilt, radius, 48, 0.5);
+        clean_dark += a.dark;
+        pixels += a.resolvable;
+        CHECK(a.resolvable > 500);
+    }
+    s.depth_step_bias = 1e-4f;
+    fx.settings(s);
+    for (double tilt : tilts) acne_dark += tilted_run(fx, d16, n, ratio, z0, tilt, radius, 48, 0.5).dark;
+    MESSAGE("of " << pixels << " plane pixels, below 0.98: default depth_step_bias " << clean_dark
+                  << ", depth_step_bias 1e-4 " << acne_dark);
+    CHECK(clean_dark == 0);
+    CHECK(acne_dark > pixels / 4);
+    CHECK(fx.gl_errors().empty());
+}
+
+TEST_CASE("depth range: view depths beyond the half-float range (> 65504) give the AO of the same scene at unit scale") {
+    testgl::Fixture fx;
+    const int W = 64, H = 48;
+    const double k = 1e5;  // the crease at 1e5..1e6 units
+    const ssao_settings s1 = fx.settings(hc::make(16, SSAO_BLUR_DEFAULT, SSAO_ROTATION_HASH, 1.0f));
+    const auto p1 = analytic::reverse_z_infinite(hc::kFov, double(W) / H, 0.1);
+    const GBuffer g1 = analytic::render(hc::to_view(hc::crease_world(), hc::crease_view()), p1, SSAO_CLIP_ZERO_TO_ONE, W, H);
+    const auto r1 = hc::run(fx, g1, p1, SSAO_CLIP_ZERO_TO_ONE);
+    REQUIRE(r1.status == SSAO_OK);
+    struct Case { const char* name; glm::dmat4 proj; };
+    const Case cases[] = {
+        {"reverse-Z infinite, near 0.1", analytic::reverse_z_infinite(hc::kFov, double(W) / H, 0.1)},
+        {"reverse-Z infinite, near 1e4", analytic::reverse_z_infinite(hc::kFov, double(W) / H, 1e4)},
+        {"reverse-Z, far 1e8", analytic::reverse_z(hc::kFov, double(W) / H, 0.1, 1e8)},
+    };
+    for (const Case& c : cases) {
+        const std::string cname = c.name; CAPTURE(cname);
+        fx.settings(hc::make(16, SSAO_BLUR_DEFAULT, SSAO_ROTATION_HASH, static_cast<float>(k)));
+        const GBuffer g = analytic::render(hc::to_view(hc::crease_world(k), hc::crease_view(k)), c.proj, SSAO_CLIP_ZERO_TO_ONE, W, H);
+        double zmax = 0;
+        for (const auto& p : g.position) if (!std::isnan(p.z)) zmax = std::max(zmax, -p.z);
+        REQUIRE(zmax > 65504.0 * 4);
+        const auto r = hc::run(fx, g, c.proj, SSAO_CLIP_ZERO_TO_ONE);
+        REQUIRE(r.status == SSAO_OK);
+        hc::check_unit_finite(r.ao, c.name);
+        const auto d = hc::diff(r1.ao, r.ao, {}, 1.0 / s1.sample_count);
+        MESSAGE(std::string(c.name) << " (depths to " << zmax << "): mean |diff| to unit scale " << d.mean_abs << ", worst " << d.worst);
+        CHECK(d.mean_abs < 0.004);
+        CHECK(d.worst < 0.05);
+        for (size_t i = 0; i < r.ao.size(); ++i)
+            if (g.sky(static_cast<int>(i % W), static_cast<int>(i / W))) CHECK(r.ao[i] == 1.0f);
+    }
+    CHECK(fx.gl_errors().empty());
+}
