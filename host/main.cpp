@@ -218,6 +218,33 @@ const Mode kModes[5] = {
     {'U', true, SSAO_ROTATION_NOISE_4X4, SSAO_DISTRIBUTION_ACCELERATING, SSAO_KERNEL_HEMISPHERE},
 };
 
+// Bytes of memory available (MemAvailable of /proc/meminfo), 0 if unknown.
+uint64_t available_memory() {
+    std::FILE* f = std::fopen("/proc/meminfo", "r");
+    if (!f) return 0;
+    char line[256];
+    uint64_t kib = 0;
+    while (std::fgets(line, sizeof line, f)) {
+        unsigned long long v = 0;
+        if (std::sscanf(line, "MemAvailable: %llu kB", &v) == 1) {
+            kib = v;
+            break;
+        }
+    }
+    std::fclose(f);
+    return kib * 1024;
+}
+
+// A generous estimate of the memory one run needs per pixel (GL textures,
+// which llvmpipe keeps in system memory, plus the read-backs and images).
+uint64_t bytes_needed(int w, int h, bool full, bool sheet) {
+    uint64_t per_pixel = 4 + 8 + 16 + 4 + 4;          // G-buffer, plugin's targets, AO read-back
+    if (full || sheet) per_pixel += 4 + 16 + 3 * 2;   // composite target, its read-back, lit images
+    if (full) per_pixel += 4 + 16 + 4 + 3 + 1;        // depth and normal read-backs, view depth, PNGs
+    if (sheet) per_pixel += 15 + 3;                   // the sheet and a panel
+    return per_pixel * static_cast<uint64_t>(w) * static_cast<uint64_t>(h);
+}
+
 // ------------------------------------------------------------------- run
 int run(const cli::Options& o) {
     const int W = o.width, H = o.height;
@@ -233,6 +260,14 @@ int run(const cli::Options& o) {
     }
     const bool full = !o.only_ao;
     const bool sheet = o.sheet.value_or(full);
+
+    if (const uint64_t available = available_memory()) {
+        const uint64_t needed = bytes_needed(W, H, full, sheet);
+        if (needed > available)
+            throw RunError("a " + std::to_string(W) + "x" + std::to_string(H) + " image needs about " +
+                           fmt(double(needed) / double(1ull << 30), 3) + " GiB of memory, but only " +
+                           fmt(double(available) / double(1ull << 30), 3) + " GiB are available; use a smaller --width/--height");
+    }
 
     // The plugin, through its C ABI only.
     plugin::Library library;
