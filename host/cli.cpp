@@ -251,7 +251,7 @@ ParseResult parse(int argc, const char* const* argv, Options& o, std::string& er
 
 std::string help_text(const ssao_settings* d, const std::string& default_scene) {
     auto def = [&](const std::function<std::string(const ssao_settings&)>& f) -> std::string {
-        return d ? f(*d) : std::string("plugin default (plugin not loaded)");
+        return d ? f(*d) : std::string("unknown: the plugin could not be loaded");
     };
     auto num = [](double v) {
         std::ostringstream s;
