@@ -515,22 +515,47 @@ TEST_CASE("abi: a valid execute runs the passes the settings call for") {
     CHECK(fi.far_distance == doctest::Approx(100.0).epsilon(1e-3));
 }
 
-TEST_CASE("abi: a host output texture is written at the viewport and returned") {
+TEST_CASE("abi: a host output texture is written at the viewport only and returned") {
     GlFixture f;
     const ssao_api& a = api();
     GladGLContext& gl = f.gl();
-    Scene scene(gl, 32, 32);
-    const GLuint host_out = make_color(gl, 32, 32, GL_RGBA8);
-    ssao_inputs in = scene.inputs;
-    in.output_texture = host_out;
+    constexpr int kSize = 32;
+    Scene scene(gl, kSize, kSize);
     const int32_t viewport[4] = {4, 6, 16, 12};
-    std::memcpy(in.viewport, viewport, sizeof viewport);
-    ssao_output out = sentinel<ssao_output>();
-    REQUIRE(a.execute(f.ctx, &in, &out) == SSAO_OK);
-    CHECK(out.texture == host_out);
-    CHECK(out.origin[0] == 4);
-    CHECK(out.origin[1] == 6);
-    CHECK(out.passes_run == (SSAO_PASS_AO | SSAO_PASS_BLUR_X | SSAO_PASS_BLUR_Y));
+    ssao_settings off = sized<ssao_settings>();
+    off.strength = SSAO_STRENGTH_OFF;
+    for (const ssao_settings& s : {sized<ssao_settings>(), off}) {
+        set_settings_ok(f, s);
+        // A host R8 texture filled with 0.25 everywhere.
+        const GLuint host_out = make_color(gl, kSize, kSize, GL_R8);
+        const std::vector<unsigned char> quarter(kSize * kSize, 64);
+        gl.PixelStorei(GL_UNPACK_ALIGNMENT, 1);
+        gl.TextureSubImage2D(host_out, 0, 0, 0, kSize, kSize, GL_RED, GL_UNSIGNED_BYTE, quarter.data());
+        ssao_inputs in = scene.inputs;
+        in.output_texture = host_out;
+        std::memcpy(in.viewport, viewport, sizeof viewport);
+        ssao_output out = sentinel<ssao_output>();
+        REQUIRE(a.execute(f.ctx, &in, &out) == SSAO_OK);
+        CHECK(out.texture == host_out);
+        CHECK(out.origin[0] == 4);
+        CHECK(out.origin[1] == 6);
+        CHECK(out.passes_run == (s.strength == SSAO_STRENGTH_OFF
+                                     ? uint32_t(SSAO_PASS_CLEAR)
+                                     : uint32_t(SSAO_PASS_AO | SSAO_PASS_BLUR_X | SSAO_PASS_BLUR_Y)));
+        const std::vector<float> px = read_red(gl, host_out, kSize, kSize);
+        int outside_changed = 0, inside_low = 0;
+        for (int y = 0; y < kSize; ++y)
+            for (int x = 0; x < kSize; ++x) {
+                const float v = px[static_cast<size_t>(y) * kSize + x];
+                const bool inside = x >= 4 && x < 4 + 16 && y >= 6 && y < 6 + 12;
+                if (inside)
+                    inside_low += v < 0.9f;  // a flat wall: AO ~ 1 (exactly 1 when off)
+                else
+                    outside_changed += std::abs(v - 64.0f / 255.0f) > 1e-3f;
+            }
+        CHECK(outside_changed == 0);
+        CHECK(inside_low == 0);
+    }
 }
 
 TEST_CASE("abi: the plugin-owned output follows the viewport size and does not leak") {
@@ -646,4 +671,101 @@ TEST_CASE("abi: create_context is GL_LOAD when one GL 3.3 function is missing" *
         CHECK_FALSE(crashed);
         CHECK(code == SSAO_ERROR_GL_LOAD);
     }
+}
+
+TEST_CASE("abi: frame info reports what execute read from the projection") {
+    GlFixture f;
+    const ssao_api& a = api();
+    Scene scene(f.gl(), kW, kH);
+    struct Case {
+        const char* what;
+        glm::mat4 m;
+        ssao_clip_range clip;
+        uint32_t ortho, reverse, infinite;
+        float near_d, far_d;
+    };
+    glm::mat4 rev_inf(0.0f);
+    const float g = 1.0f / std::tan(glm::radians(60.0f) * 0.5f);
+    rev_inf[0][0] = g;
+    rev_inf[1][1] = g;
+    rev_inf[2][3] = -1.0f;
+    rev_inf[3][2] = 0.05f;
+    const Case cases[] = {
+        {"perspective", glm::perspective(glm::radians(60.0f), 1.0f, 0.5f, 200.0f), SSAO_CLIP_NEGATIVE_ONE_TO_ONE, 0, 0,
+         0, 0.5f, 200.0f},
+        {"reverse-Z infinite", rev_inf, SSAO_CLIP_ZERO_TO_ONE, 0, 1, 1, 0.05f, kInf},
+        {"infinite", glm::infinitePerspective(glm::radians(60.0f), 1.0f, 0.25f), SSAO_CLIP_NEGATIVE_ONE_TO_ONE, 0, 0, 1,
+         0.25f, kInf},
+        {"ortho", glm::ortho(-5.0f, 5.0f, -5.0f, 5.0f, 1.0f, 30.0f), SSAO_CLIP_NEGATIVE_ONE_TO_ONE, 1, 0, 0, 1.0f,
+         30.0f},
+        {"ortho ZO reverse", glm::orthoRH_ZO(-5.0f, 5.0f, -5.0f, 5.0f, 30.0f, 1.0f), SSAO_CLIP_ZERO_TO_ONE, 1, 1, 0,
+         1.0f, 30.0f},
+    };
+    for (const Case& c : cases) {
+        const std::string what_ = c.what;
+        CAPTURE(what_);
+        ssao_inputs in = scene.inputs;
+        std::memcpy(in.projection, glm::value_ptr(c.m), sizeof in.projection);
+        in.clip_range = c.clip;
+        REQUIRE(a.execute(f.ctx, &in, nullptr) == SSAO_OK);
+        ssao_frame_info fi = sentinel<ssao_frame_info>();
+        REQUIRE(a.get_frame_info(f.ctx, &fi) == SSAO_OK);
+        CHECK(fi.orthographic == c.ortho);
+        CHECK(fi.reverse_z == c.reverse);
+        CHECK(fi.infinite_far == c.infinite);
+        CHECK(fi.near_distance == doctest::Approx(c.near_d).epsilon(1e-4));
+        if (c.infinite) {
+            CHECK(std::isinf(fi.far_distance));
+            CHECK(fi.far_distance > 0.0f);
+        } else {
+            CHECK(fi.far_distance == doctest::Approx(c.far_d).epsilon(1e-3));
+        }
+    }
+}
+
+TEST_CASE("abi: a sphere kernel sees a flat wall as half occluded") {
+    // ssao.h: "full sphere, normals only rotate it (Crytek look: flat = 0.5)".
+    GlFixture f;
+    GladGLContext& gl = f.gl();
+    Scene scene(gl, kW, kH);
+    ssao_settings s = sized<ssao_settings>();
+    s.kernel_shape = SSAO_KERNEL_SPHERE;
+    s.sample_count = 64;
+    s.distribution = SSAO_DISTRIBUTION_UNIFORM;
+    set_settings_ok(f, s);
+    ssao_output out = sized<ssao_output>();
+    REQUIRE(api().execute(f.ctx, &scene.inputs, &out) == SSAO_OK);
+    const std::vector<float> ao = read_red(gl, out.texture, kW, kH);
+    double mean = 0.0;
+    for (float v : ao) mean += v;
+    mean /= static_cast<double>(ao.size());
+    CHECK(mean > 0.35);
+    CHECK(mean < 0.65);
+}
+
+TEST_CASE("abi: get_timings has nothing before the first execute and a measured frame later") {
+    GlFixture f;
+    const ssao_api& a = api();
+    GladGLContext& gl = f.gl();
+    Scene scene(gl, kW, kH);
+    ssao_timings t = sentinel<ssao_timings>();
+    REQUIRE(a.get_timings(f.ctx, &t) == SSAO_OK);
+    CHECK(t.size == sizeof(ssao_timings));
+    CHECK(t.available == 0u);
+    bool measured = false;
+    for (int frame = 1; frame <= 8 && !measured; ++frame) {
+        REQUIRE(a.execute(f.ctx, &scene.inputs, nullptr) == SSAO_OK);
+        gl.Finish();
+        t = sentinel<ssao_timings>();
+        REQUIRE(a.get_timings(f.ctx, &t) == SSAO_OK);
+        measured = t.available == 1u;
+    }
+    REQUIRE(measured);
+    CHECK(t.frame >= 1u);
+    CHECK(t.frame <= 8u);
+    CHECK(t.ao_ms >= 0.0);
+    CHECK(t.blur_ms >= 0.0);
+    CHECK(t.total_ms >= t.ao_ms);
+    CHECK(t.total_ms == doctest::Approx(t.ao_ms + t.blur_ms).epsilon(1e-6));
+    CHECK(t.total_ms < 10000.0);
 }

@@ -106,6 +106,13 @@ std::vector<Case> all_cases() {
                          jittered(reverse_infinite(glm::radians(50.0f), 0.75f, nf), 640, 480), SSAO_CLIP_ZERO_TO_ONE,
                          false, true, true, n, kInfD});
     }
+    // A projection times a positive constant is the same projection.
+    cases.push_back({"perspective GL scaled x2", 2.0f * glm::perspective(glm::radians(45.0f), 1.3f, 0.2f, 300.0f),
+                     SSAO_CLIP_NEGATIVE_ONE_TO_ONE, false, false, false, 0.2, 300.0});
+    cases.push_back({"reverse-Z ZO scaled x0.25", 0.25f * reverse_zo(glm::radians(45.0f), 1.3f, 0.2f, 300.0f),
+                     SSAO_CLIP_ZERO_TO_ONE, false, true, false, 0.2, 300.0});
+    cases.push_back({"ortho scaled x3", 3.0f * glm::ortho(-4.0f, 4.0f, -3.0f, 3.0f, 2.0f, 40.0f),
+                     SSAO_CLIP_NEGATIVE_ONE_TO_ONE, true, false, false, 2.0, 40.0});
     struct O {
         float l, r, b, t, n, f;
     };
