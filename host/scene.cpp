@@ -459,7 +459,7 @@ bool load(const std::string& path, Scene& out, std::string& error) {
     }
     if (!ok) {
         err = trim_tinygltf_message(err);
-        error = path + ": tinygltf could not parse it" + (err.empty() ? std::string() : " (" + err + ")") + ".";
+        error = path + ": tinygltf could not load it" + (err.empty() ? std::string() : " (" + err + ")") + ".";
         return false;
     }
 
