@@ -147,8 +147,10 @@ ssao_status initialise(ssao_context& ctx, const ssao_context_desc& desc) {
     st = link(ctx, k_blur_frag, "blur.frag", ctx.program_blur);
     if (st != SSAO_OK) return st;
     ctx.blur_dir_location = gl.GetUniformLocation(ctx.program_blur, "u_blur_dir");
-    ctx.blur_target_origin_location = gl.GetUniformLocation(ctx.program_blur, "u_target_origin");
-    ctx.ao_target_origin_location = gl.GetUniformLocation(ctx.program_ao, "u_target_origin");
+    ctx.blur_uniforms = {gl.GetUniformLocation(ctx.program_blur, "u_target_origin"),
+                         gl.GetUniformLocation(ctx.program_blur, "u_pack_depth")};
+    ctx.ao_uniforms = {gl.GetUniformLocation(ctx.program_ao, "u_target_origin"),
+                       gl.GetUniformLocation(ctx.program_ao, "u_pack_depth")};
 
     // Object creation binds nothing here: buffers and textures are first bound
     // inside execute, under the state guard.

@@ -22,10 +22,14 @@ struct ssao_context {
     bool kernel_dirty = true;   // kernel / noise need uploading
 
     GLuint program_ao = 0, program_blur = 0;
-    GLint blur_dir_location = -1, ao_target_origin_location = -1, blur_target_origin_location = -1;
+    // Per-pass uniforms of each program (program state, not the host's).
+    struct PassUniforms {
+        GLint target_origin = -1, pack_depth = -1;
+    } ao_uniforms, blur_uniforms;
+    GLint blur_dir_location = -1;
     GLuint vao = 0, fbo = 0, ubo_frame = 0, ubo_kernel = 0, noise_texture = 0, sampler = 0;
 
-    // Intermediate (R16F) textures and the plugin-owned output, viewport-sized.
+    // Intermediate (RG32F: AO and view z) textures and the plugin-owned output, viewport-sized.
     GLuint temp[2] = {0, 0};
     int temp_width = 0, temp_height = 0;
     GLuint output = 0;

@@ -100,14 +100,16 @@ void reset_unpack(const GladGLContext& gl) {
 struct Target {
     GLuint texture = 0;
     int origin_x = 0, origin_y = 0;
+    bool intermediate = false;  // RG32F (ao, view z) for the next pass
 };
 
-void draw(ssao_context& ctx, GLuint program, GLint origin_location, const Target& t, int w, int h) {
+void draw(ssao_context& ctx, GLuint program, const ssao_context::PassUniforms& u, const Target& t, int w, int h) {
     const GladGLContext& gl = ctx.gl;
     gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, t.texture, 0);
     gl.Viewport(t.origin_x, t.origin_y, w, h);
     gl.UseProgram(program);
-    gl.Uniform2i(origin_location, t.origin_x, t.origin_y);
+    gl.Uniform2i(u.target_origin, t.origin_x, t.origin_y);
+    gl.Uniform1i(u.pack_depth, t.intermediate ? 1 : 0);
     gl.DrawArrays(GL_TRIANGLES, 0, 3);
 }
 
@@ -237,8 +239,8 @@ ssao_status execute(ssao_context& ctx, const ssao_inputs& in, ssao_output* out) 
     const bool blur = !strength_off && s.blur != SSAO_BLUR_NONE;
     const bool separable_blur = blur && s.blur != SSAO_BLUR_BOX_4X4;
     if (blur && (ctx.temp_width != vw || ctx.temp_height != vh || ctx.temp[0] == 0)) {
-        allocate(gl, ctx.temp[0], GL_R16F, GL_RED, GL_FLOAT, vw, vh);
-        allocate(gl, ctx.temp[1], GL_R16F, GL_RED, GL_FLOAT, vw, vh);
+        allocate(gl, ctx.temp[0], GL_RG32F, GL_RG, GL_FLOAT, vw, vh);
+        allocate(gl, ctx.temp[1], GL_RG32F, GL_RG, GL_FLOAT, vw, vh);
         ctx.temp_width = vw;
         ctx.temp_height = vh;
     }
@@ -318,20 +320,20 @@ ssao_status execute(ssao_context& ctx, const ssao_inputs& in, ssao_output* out) 
     } else {
         gl.ActiveTexture(GL_TEXTURE0 + SSAO_UNIT_AO);
         gl.BindTexture(GL_TEXTURE_2D, 0);  // never sample what we render into
-        const Target temp0{ctx.temp[0], 0, 0}, temp1{ctx.temp[1], 0, 0};
-        draw(ctx, ctx.program_ao, ctx.ao_target_origin_location, blur ? temp0 : final_target, vw, vh);
+        const Target temp0{ctx.temp[0], 0, 0, true}, temp1{ctx.temp[1], 0, 0, true};
+        draw(ctx, ctx.program_ao, ctx.ao_uniforms, blur ? temp0 : final_target, vw, vh);
         passes |= SSAO_PASS_AO;
         stamp(ctx, slot, 1);
         if (blur) {
             gl.BindTexture(GL_TEXTURE_2D, ctx.temp[0]);
             gl.UseProgram(ctx.program_blur);
             gl.Uniform2i(ctx.blur_dir_location, 1, 0);
-            draw(ctx, ctx.program_blur, ctx.blur_target_origin_location, separable_blur ? temp1 : final_target, vw, vh);
+            draw(ctx, ctx.program_blur, ctx.blur_uniforms, separable_blur ? temp1 : final_target, vw, vh);
             passes |= SSAO_PASS_BLUR_X;
             if (separable_blur) {
                 gl.BindTexture(GL_TEXTURE_2D, ctx.temp[1]);
                 gl.Uniform2i(ctx.blur_dir_location, 0, 1);
-                draw(ctx, ctx.program_blur, ctx.blur_target_origin_location, final_target, vw, vh);
+                draw(ctx, ctx.program_blur, ctx.blur_uniforms, final_target, vw, vh);
                 passes |= SSAO_PASS_BLUR_Y;
             }
         }

@@ -5,8 +5,11 @@
 
 uniform sampler2D u_normal_tex;
 uniform sampler2D u_noise_tex;
+uniform bool u_pack_depth;  // writing the blur's RG32F input: (ao, view z)
 
 out vec4 o_ao;
+
+vec4 result(float ao, float z) { return u_pack_depth ? vec4(ao, z, 0.0, 1.0) : vec4(ao, ao, ao, 1.0); }
 
 bool finite3(vec3 v) { return all(lessThan(abs(v), vec3(3.0e38))) && !any(isnan(v)); }
 
@@ -62,8 +65,9 @@ void main() {
     ivec2 vpx = ivec2(gl_FragCoord.xy) - u_target_origin;   // viewport-relative pixel
     ivec2 px = vpx + u_viewport.xy;                          // input texel
     float d = fetch_depth(px);
-    vec3 P = view_position(px, d);
-    if (is_sky(d) || !finite3(P)) { o_ao = vec4(1.0); return; }
+    vec4 Pw = view_position_w(px, d);
+    vec3 P = Pw.xyz;
+    if (is_sky(d) || !finite3(P)) { o_ao = result(1.0, SKY_Z); return; }
 
     bool ortho = u_depth.w > 0.5;
     vec3 to_eye = ortho ? vec3(0.0, 0.0, 1.0) : normalize(-P);
@@ -75,7 +79,7 @@ void main() {
     mat3 TBN = mat3(T, cross(n, T), n);
 
     float radius = u_ao.x;
-    float step_p = depth_step(px, d);
+    float step_p = depth_step(Pw, d);
     float occlusion = 0.0;
     float valid = 0.0;
     int count = u_counts.x;
@@ -89,7 +93,8 @@ void main() {
         valid += 1.0;
         float sd = fetch_depth(spx);
         if (is_sky(sd)) continue;                         // the sky occludes nothing
-        vec3 Q = view_position(spx, sd);
+        vec4 Qw = view_position_w(spx, sd);
+        vec3 Q = Qw.xyz;
         // Snap: the point on the ray through the fetched texel's centre that
         // lies on the plane through s parallel to the surface at P.
         float plane = dot(s, n);
@@ -101,11 +106,11 @@ void main() {
             if (abs(qn) > 1e-3 * length(Q)) sn = Q * (plane / qn);
         }
         if (distance(sn, s) > 0.5 * radius) sn = s;
-        float bias = u_ao.y + u_ao.z * (step_p + depth_step(spx, sd));
+        float bias = u_ao.y + u_ao.z * (step_p + depth_step(Qw, sd));
         float range = smoothstep(0.0, 1.0, radius / abs(P.z - Q.z));
         occlusion += (Q.z >= sn.z + bias ? 1.0 : 0.0) * range;
     }
     float o = valid > 0.0 ? occlusion / valid : 0.0;
     float ao = pow(clamp(1.0 - u_ao.w * o, 0.0, 1.0), u_ao2.x);
-    o_ao = vec4(ao, ao, ao, 1.0);
+    o_ao = result(ao, P.z);
 }

@@ -1,14 +1,18 @@
 // Blur passes over the raw AO: the chapter's 4x4 box, or one direction of a
 // separable gaussian, optionally depth-aware (taps whose view depth differs
 // from the centre's by more than the tolerance get no weight, so occlusion is
-// not carried across silhouettes; sky taps never count).
+// not carried across silhouettes; sky taps never count). The view depth comes
+// with the AO from the previous pass; the depth texture is not read.
 
-uniform sampler2D u_ao_tex;     // viewport-sized, texel (0,0) = viewport pixel (0,0)
+uniform sampler2D u_ao_tex;     // RG32F (ao, view z), viewport-sized, texel (0,0) = viewport pixel (0,0)
 uniform ivec2 u_blur_dir;       // (1,0) or (0,1); unused by the box
+uniform bool u_pack_depth;      // writing the next blur pass's input: (ao, view z)
 
 out vec4 o_ao;
 
 float ao_at(ivec2 vpx) { return texelFetch(u_ao_tex, vpx, 0).r; }
+
+vec4 result(float ao, float z) { return u_pack_depth ? vec4(ao, z, 0.0, 1.0) : vec4(ao, ao, ao, 1.0); }
 
 void main() {
     ivec2 vpx = ivec2(gl_FragCoord.xy) - u_target_origin;
@@ -20,15 +24,13 @@ void main() {
         for (int y = -2; y < 2; ++y)
             for (int x = -2; x < 2; ++x) sum += ao_at(clamp(vpx + ivec2(x, y), ivec2(0), size - 1));
         float v = sum / 16.0;
-        o_ao = vec4(v, v, v, 1.0);
+        o_ao = result(v, texelFetch(u_ao_tex, vpx, 0).g);
         return;
     }
-    float centre = ao_at(vpx);
-    ivec2 px = vpx + u_viewport.xy;
-    float d0 = fetch_depth(px);
-    if (is_sky(d0)) { o_ao = vec4(1.0); return; }
+    vec2 c = texelFetch(u_ao_tex, vpx, 0).rg;
+    float centre = c.r, z0 = c.g;
+    if (z0 == SKY_Z) { o_ao = result(1.0, SKY_Z); return; }
     bool aware = kind == SSAO_SHADER_BLUR_DEPTH_AWARE;
-    float z0 = view_position(px, d0).z;
     float tolerance = u_ao2.z * abs(z0);
     float inv2s2 = 0.5 / (u_ao2.y * u_ao2.y);
     float sum = centre, weight = 1.0;
@@ -37,15 +39,11 @@ void main() {
         ivec2 t = vpx + u_blur_dir * k;
         if (any(lessThan(t, ivec2(0))) || any(greaterThanEqual(t, size))) continue;  // no clamped repeats at borders
         float w = exp(-float(k * k) * inv2s2);
-        float d = fetch_depth(t + u_viewport.xy);
-        if (is_sky(d)) continue;
-        if (aware) {
-            float dz = abs(view_position(t + u_viewport.xy, d).z - z0);
-            w *= clamp(1.0 - dz / tolerance, 0.0, 1.0);
-        }
-        sum += ao_at(t) * w;
+        vec2 tap = texelFetch(u_ao_tex, t, 0).rg;
+        if (tap.g == SKY_Z) continue;
+        if (aware) w *= clamp(1.0 - abs(tap.g - z0) / tolerance, 0.0, 1.0);
+        sum += tap.r * w;
         weight += w;
     }
-    float v = sum / weight;
-    o_ao = vec4(v, v, v, 1.0);
+    o_ao = result(sum / weight, z0);
 }

@@ -17,23 +17,30 @@ float ndc_z_of(float d) { return u_ao2.w == 2.0 ? d * 2.0 - 1.0 : d; }
 
 vec2 ndc_xy_of(vec2 viewport_px) { return viewport_px / vec2(u_viewport.zw) * 2.0 - 1.0; }
 
-// View-space position of the centre of input pixel px holding depth d.
-vec3 view_position(ivec2 px, float d) {
+// View-space position of the centre of input pixel px holding depth d, in
+// xyz; w keeps the homogeneous w of the reconstruction for depth_step().
+vec4 view_position_w(ivec2 px, float d) {
     vec2 ndc = ndc_xy_of(vec2(px - u_viewport.xy) + 0.5);
     vec4 v = u_inv_proj * vec4(ndc, ndc_z_of(d), 1.0);
-    return v.xyz / v.w;
+    return vec4(v.xyz / v.w, v.w);
 }
 
-// View-space z change for one step of the depth format at depth d:
-// |dz/d(ndc)| * d(ndc)/d(depth) * step(depth). Analytic (no difference of two
+vec3 view_position(ivec2 px, float d) { return view_position_w(px, d).xyz; }
+
+// View-space z change for one step of the depth format at depth d, from the
+// point p = view_position_w(px, d): |dz/d(ndc)| * d(ndc)/d(depth) * step.
+// Analytic: with v = inv_proj * ndc, z = v.z / v.w and
+// dz/dndc = (inv_proj[2][2] - z * inv_proj[2][3]) / v.w (no difference of two
 // nearly equal reconstructions, which would cancel to 0 in float).
-float depth_step(ivec2 px, float d) {
-    vec2 ndc = ndc_xy_of(vec2(px - u_viewport.xy) + 0.5);
-    vec4 v = u_inv_proj * vec4(ndc, ndc_z_of(d), 1.0);
-    float dA = u_inv_proj[2][2], dB = u_inv_proj[2][3];
-    float dz_dndc = (dA * v.w - v.z * dB) / (v.w * v.w);
+float depth_step(vec4 p, float d) {
+    float dz_dndc = (u_inv_proj[2][2] - p.z * u_inv_proj[2][3]) / p.w;
     // unorm formats: a fixed step; float: one ulp of d (2^-23 relative), floored
     // at the smallest normal so reverse-Z's tiny far values stay meaningful.
     float ulp = u_depth.y > 0.0 ? u_depth.y : max(abs(d) * 1.1920929e-7, 1.1754944e-38);
     return abs(dz_dndc) * u_ao2.w * ulp;
 }
+
+// The AO pass hands the blur its view z beside the AO (the intermediate
+// targets are RG32F), so the blur fetches one texel per tap and rebuilds
+// nothing. Sky carries this marker instead of a depth.
+const float SKY_Z = 3.0e38;
