@@ -96,7 +96,11 @@ void main() {
         vec4 Qw = view_position_w(spx, sd);
         vec3 Q = Qw.xyz;
         // Snap: the point on the ray through the fetched texel's centre that
-        // lies on the plane through s parallel to the surface at P.
+        // lies on the plane through s parallel to the surface at P. It is
+        // within half a texel of s on screen; comparing against s itself
+        // would make flat receding planes occlude themselves by up to half a
+        // texel times their depth slope (no depth bias covers that). Rays
+        // almost parallel to that plane keep s.
         float plane = dot(s, n);
         vec3 sn = s;
         if (ortho) {
@@ -105,7 +109,6 @@ void main() {
             float qn = dot(Q, n);
             if (abs(qn) > 1e-3 * length(Q)) sn = Q * (plane / qn);
         }
-        if (distance(sn, s) > 0.5 * radius) sn = s;
         float bias = u_ao.y + u_ao.z * (step_p + depth_step(Qw, sd));
         float range = smoothstep(0.0, 1.0, radius / abs(P.z - Q.z));
         occlusion += (Q.z >= sn.z + bias ? 1.0 : 0.0) * range;
