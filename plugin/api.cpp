@@ -129,8 +129,10 @@ ssao_status SSAO_CALL api_set_settings(ssao_context* ctx, const ssao_settings* s
 }
 
 ssao_status SSAO_CALL api_get_settings(const ssao_context* ctx, ssao_settings* out) {
-    if (!ctx || !out) return SSAO_ERROR_NULL_POINTER;
-    if (out->size != sizeof(ssao_settings)) return SSAO_ERROR_STRUCT_SIZE;
+    if (!ctx) return SSAO_ERROR_NULL_POINTER;
+    if (!out) return ctx->fail(SSAO_ERROR_NULL_POINTER, "get_settings: out is NULL");
+    if (out->size != sizeof(ssao_settings))
+        return ctx->fail(SSAO_ERROR_STRUCT_SIZE, "get_settings: ssao_settings.size does not match this library");
     *out = ctx->settings;
     return SSAO_OK;
 }
@@ -158,8 +160,10 @@ ssao_status SSAO_CALL api_get_timings(ssao_context* ctx, ssao_timings* out) {
 }
 
 ssao_status SSAO_CALL api_get_frame_info(const ssao_context* ctx, ssao_frame_info* out) {
-    if (!ctx || !out) return SSAO_ERROR_NULL_POINTER;
-    if (out->size != sizeof(ssao_frame_info)) return SSAO_ERROR_STRUCT_SIZE;
+    if (!ctx) return SSAO_ERROR_NULL_POINTER;
+    if (!out) return ctx->fail(SSAO_ERROR_NULL_POINTER, "get_frame_info: out is NULL");
+    if (out->size != sizeof(ssao_frame_info))
+        return ctx->fail(SSAO_ERROR_STRUCT_SIZE, "get_frame_info: ssao_frame_info.size does not match this library");
     *out = ctx->info;
     out->size = sizeof(ssao_frame_info);
     return SSAO_OK;

@@ -11,7 +11,7 @@
 #include <cstring>
 #include <string>
 
-ssao_status ssao_context::fail(ssao_status status, const std::string& message) {
+ssao_status ssao_context::fail(ssao_status status, const std::string& message) const {
     last_error = message;
     if (log) log(log_user, SSAO_LOG_ERROR, message.c_str());
     return status;
@@ -102,6 +102,36 @@ ssao_status link(ssao_context& ctx, const char* fragment_body, const char* name,
     return SSAO_OK;
 }
 
+// Every GL 3.3 core function the plugin calls: a loader that hands back NULL
+// for any of them gets GL_LOAD at creation instead of a crash in execute.
+bool all_required_loaded(const GladGLContext& gl, std::string& missing) {
+#define SSAO_REQUIRE_GL(fn) if (!gl.fn) { missing = "gl" #fn; return false; }
+    SSAO_REQUIRE_GL(ActiveTexture) SSAO_REQUIRE_GL(AttachShader) SSAO_REQUIRE_GL(BindBuffer)
+    SSAO_REQUIRE_GL(BindBufferBase) SSAO_REQUIRE_GL(BindBufferRange) SSAO_REQUIRE_GL(BindFramebuffer)
+    SSAO_REQUIRE_GL(BindSampler) SSAO_REQUIRE_GL(BindTexture) SSAO_REQUIRE_GL(BindVertexArray)
+    SSAO_REQUIRE_GL(BufferData) SSAO_REQUIRE_GL(CheckFramebufferStatus) SSAO_REQUIRE_GL(ClearBufferfv)
+    SSAO_REQUIRE_GL(ColorMaski) SSAO_REQUIRE_GL(CompileShader) SSAO_REQUIRE_GL(CreateProgram)
+    SSAO_REQUIRE_GL(CreateShader) SSAO_REQUIRE_GL(DeleteBuffers) SSAO_REQUIRE_GL(DeleteFramebuffers)
+    SSAO_REQUIRE_GL(DeleteProgram) SSAO_REQUIRE_GL(DeleteQueries) SSAO_REQUIRE_GL(DeleteSamplers)
+    SSAO_REQUIRE_GL(DeleteShader) SSAO_REQUIRE_GL(DeleteTextures) SSAO_REQUIRE_GL(DeleteVertexArrays)
+    SSAO_REQUIRE_GL(DepthMask) SSAO_REQUIRE_GL(Disable) SSAO_REQUIRE_GL(Disablei) SSAO_REQUIRE_GL(DrawArrays)
+    SSAO_REQUIRE_GL(Enable) SSAO_REQUIRE_GL(Enablei) SSAO_REQUIRE_GL(FramebufferTexture2D)
+    SSAO_REQUIRE_GL(GenBuffers) SSAO_REQUIRE_GL(GenFramebuffers) SSAO_REQUIRE_GL(GenQueries)
+    SSAO_REQUIRE_GL(GenSamplers) SSAO_REQUIRE_GL(GenTextures) SSAO_REQUIRE_GL(GenVertexArrays)
+    SSAO_REQUIRE_GL(GetBooleani_v) SSAO_REQUIRE_GL(GetBooleanv) SSAO_REQUIRE_GL(GetInteger64i_v)
+    SSAO_REQUIRE_GL(GetIntegeri_v) SSAO_REQUIRE_GL(GetIntegerv) SSAO_REQUIRE_GL(GetProgramInfoLog)
+    SSAO_REQUIRE_GL(GetProgramiv) SSAO_REQUIRE_GL(GetQueryObjectuiv) SSAO_REQUIRE_GL(GetShaderInfoLog)
+    SSAO_REQUIRE_GL(GetShaderiv) SSAO_REQUIRE_GL(GetStringi) SSAO_REQUIRE_GL(GetTexLevelParameteriv)
+    SSAO_REQUIRE_GL(GetTexParameteriv) SSAO_REQUIRE_GL(GetUniformBlockIndex) SSAO_REQUIRE_GL(GetUniformLocation)
+    SSAO_REQUIRE_GL(IsEnabled) SSAO_REQUIRE_GL(IsEnabledi) SSAO_REQUIRE_GL(IsTexture) SSAO_REQUIRE_GL(LinkProgram)
+    SSAO_REQUIRE_GL(PixelStorei) SSAO_REQUIRE_GL(PolygonMode) SSAO_REQUIRE_GL(SamplerParameteri)
+    SSAO_REQUIRE_GL(Scissor) SSAO_REQUIRE_GL(ShaderSource) SSAO_REQUIRE_GL(StencilMaskSeparate)
+    SSAO_REQUIRE_GL(TexImage2D) SSAO_REQUIRE_GL(TexParameteri) SSAO_REQUIRE_GL(Uniform1i) SSAO_REQUIRE_GL(Uniform2i)
+    SSAO_REQUIRE_GL(UniformBlockBinding) SSAO_REQUIRE_GL(UseProgram) SSAO_REQUIRE_GL(Viewport)
+#undef SSAO_REQUIRE_GL
+    return true;
+}
+
 bool has_gl_extension(const GladGLContext& gl, const char* name) {
     GLint count = 0;
     gl.GetIntegerv(GL_NUM_EXTENSIONS, &count);
@@ -130,8 +160,10 @@ ssao_status initialise(ssao_context& ctx, const ssao_context_desc& desc) {
 
     LoaderUser user{desc.get_proc_address, desc.get_proc_address_user};
     const int loaded = gladLoadGLContextUserPtr(&ctx.gl, load_with_user, &user);
-    if (loaded == 0 || !ctx.gl.CreateShader || !ctx.gl.BindSampler || !ctx.gl.GetUniformBlockIndex)
-        return ctx.fail(SSAO_ERROR_GL_LOAD, "get_proc_address returned NULL for GL 3.3 core functions");
+    std::string missing;
+    if (loaded == 0 || !all_required_loaded(ctx.gl, missing))
+        return ctx.fail(SSAO_ERROR_GL_LOAD, "get_proc_address returned NULL for " +
+                                                (missing.empty() ? std::string("GL 3.3 core functions") : missing));
     GladGLContext& gl = ctx.gl;
     ctx.caps.major = major;
     ctx.caps.minor = minor;
@@ -168,7 +200,7 @@ ssao_status initialise(ssao_context& ctx, const ssao_context_desc& desc) {
     gl.SamplerParameteri(ctx.sampler, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
     gl.SamplerParameteri(ctx.sampler, GL_TEXTURE_COMPARE_MODE, GL_NONE);
 
-    ctx.timers = gl.QueryCounter != nullptr && gl.GetQueryObjectui64v != nullptr;
+    ctx.timers = gl.QueryCounter != nullptr && gl.GetQueryObjectui64v != nullptr && gl.GetQueryObjectuiv != nullptr;
     if (ctx.timers) gl.GenQueries(ssao_context::kFrames * ssao_context::kStamps, &ctx.queries[0][0]);
     return SSAO_OK;
 }

@@ -16,7 +16,7 @@ struct ssao_context {
     ssao_impl::GlCaps caps;
     ssao_log_fn log = nullptr;
     void* log_user = nullptr;
-    std::string last_error;
+    mutable std::string last_error;  // const getters report their failures too
 
     ssao_settings settings{};   // resolved
     bool kernel_dirty = true;   // kernel / noise need uploading
@@ -47,7 +47,7 @@ struct ssao_context {
     ssao_frame_info info{};
 
     // Records an error for last_error and the log callback; returns `status`.
-    ssao_status fail(ssao_status status, const std::string& message);
+    ssao_status fail(ssao_status status, const std::string& message) const;
 };
 
 namespace ssao_impl {
