@@ -4,6 +4,8 @@
 #include <doctest/doctest.h>
 
 #include <tinyexr.h>
+#define STB_IMAGE_IMPLEMENTATION
+#include <stb/stb_image.h>
 
 #include "plugin_loader.h"
 
@@ -194,6 +196,19 @@ std::map<std::string, std::string> snapshot(const std::string& dir) {
     return files;
 }
 
+struct Png {
+    int w = 0, h = 0, channels = 0;
+    std::vector<unsigned char> px;
+};
+Png load_png(const std::string& path) {
+    Png p;
+    unsigned char* data = stbi_load(path.c_str(), &p.w, &p.h, &p.channels, 0);
+    REQUIRE_MESSAGE(data != nullptr, "cannot read " << path);
+    p.px.assign(data, data + static_cast<size_t>(p.w) * static_cast<size_t>(p.h) * static_cast<size_t>(p.channels));
+    stbi_image_free(data);
+    return p;
+}
+
 bool has_png_signature(const std::string& path) { return read_file(path).rfind("\x89PNG\r\n\x1a\n", 0) == 0; }
 
 }  // namespace
@@ -227,6 +242,30 @@ TEST_CASE("the bundled scene renders every file and the report") {
     const float centre = depth.at(64, 60);
     CHECK(std::isfinite(centre));
     CHECK(centre > 0.0f);
+
+    // AO only darkens the ambient term: lit_ao <= lit_no_ao everywhere, and
+    // somewhere strictly.
+    const Png lit = load_png(dir + "/lit_ao.png"), unlit = load_png(dir + "/lit_no_ao.png");
+    REQUIRE(lit.px.size() == unlit.px.size());
+    CHECK((lit.w == 128 && lit.h == 96 && lit.channels == 3));
+    long darker = 0, brighter = 0;
+    for (size_t i = 0; i < lit.px.size(); ++i) {
+        if (lit.px[i] + 1 < unlit.px[i]) ++darker;   // 1 level of rounding allowed
+        if (lit.px[i] > unlit.px[i] + 1) ++brighter;
+    }
+    CHECK(darker > 50);
+    CHECK(brighter == 0);
+    // The mode sheet: five panels side by side; E (no SSAO) is lit_no_ao under its label.
+    const Png sheet = load_png(dir + "/modes.png");
+    CHECK(sheet.w == 5 * 128);
+    CHECK(sheet.h == 96);
+    long e_differs = 0;
+    for (int y = 40; y < 96; ++y)
+        for (int x = 0; x < 128; ++x)
+            for (int c = 0; c < 3; ++c)
+                e_differs += sheet.px[(static_cast<size_t>(y) * 640 + static_cast<size_t>(x)) * 3 + static_cast<size_t>(c)] !=
+                             unlit.px[(static_cast<size_t>(y) * 128 + static_cast<size_t>(x)) * 3 + static_cast<size_t>(c)];
+    CHECK(e_differs == 0);
 }
 
 TEST_CASE("the ground right beside the model is darker than open ground") {
