@@ -7,9 +7,11 @@
  *
  *   void* lib = dlopen("libssao.so", RTLD_NOW | RTLD_LOCAL);
  *   PFN_ssao_get_api get_api = (PFN_ssao_get_api)dlsym(lib, "ssao_get_api");
- *   ssao_api api = { sizeof(ssao_api) };
+ *   ssao_api api = {0};                     // {0}: no -Wmissing-field-initializers
+ *   api.size = sizeof(api);
  *   if (get_api(SSAO_API_VERSION, &api) != SSAO_OK) { ... }
- *   ssao_context_desc desc = { sizeof(desc) };
+ *   ssao_context_desc desc = {0};
+ *   desc.size = sizeof(desc);
  *   desc.get_proc_address = my_get_proc;   // eglGetProcAddress, glfwGetProcAddress, ...
  *   ssao_context* ctx = NULL;
  *   api.create_context(&desc, &ctx);        // GL context current on this thread
@@ -186,7 +188,7 @@ typedef struct ssao_settings {
                                     A bias proportional to the depth buffer's step at each
                                     pixel (depth_step_bias) is always added. */
     float depth_step_bias;       /* multiple of the depth format's step at the pixel's depth,
-                                    >= 0; default 2 */
+                                    [0, 1e6]; default 2 */
     float power;                 /* exponent applied to the result, (0, 16]; default 1 */
     float strength;              /* occlusion multiplier, [0, 8]; default 1.
                                     ao = pow(1 - strength * occlusion, power), clamped to [0,1].
