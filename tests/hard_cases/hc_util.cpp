@@ -91,6 +91,13 @@ glm::dmat4 ortho_reverse(double half_w, double half_h, double n, double f) {
     return m;
 }
 
+glm::dmat4 reverse_z_gl(double fovy, double aspect, double n, double f) {
+    glm::dmat4 m = analytic::perspective(fovy, aspect, n, f);
+    m[2][2] = (f + n) / (f - n);
+    m[3][2] = 2.0 * f * n / (f - n);
+    return m;
+}
+
 glm::dmat4 frustum(double l, double r, double b, double t, double n, double f) {
     glm::dmat4 m(0.0);
     m[0][0] = 2 * n / (r - l);

@@ -47,6 +47,7 @@ ssao_settings make(uint32_t samples, ssao_blur blur, ssao_rotation rotation, flo
 // Projections beyond the shared support's.
 glm::dmat4 ortho_zo(double half_w, double half_h, double n, double f);          // [0,1], near -> 0
 glm::dmat4 ortho_reverse(double half_w, double half_h, double n, double f);     // [0,1], near -> 1
+glm::dmat4 reverse_z_gl(double fovy, double aspect, double n, double f);    // GL [-1,1], near -> ndc 1, far -> -1
 glm::dmat4 frustum(double l, double r, double b, double t, double n, double f); // GL [-1,1], off-centre
 // Shifts the image by (px, py) whole or fractional pixels of a w x h viewport.
 glm::dmat4 pixel_shift(const glm::dmat4& proj, double px, double py, int w, int h);

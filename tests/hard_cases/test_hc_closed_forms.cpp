@@ -167,7 +167,7 @@ std::vector<Measured> measure(testgl::Fixture& fx, double alpha_deg, double R, s
 
 }  // namespace
 
-TEST_CASE("closed forms: the wall - the GPU lands on the estimator's converged limit; the bias to V_R is reported") {
+TEST_CASE("closed forms: the wall - the GPU lands on the estimator's converged limit - the bias to V_R is reported") {
     testgl::Fixture fx;
     const double R = 1.5;
     std::vector<Bin> bins;
@@ -191,7 +191,7 @@ TEST_CASE("closed forms: the wall - the GPU lands on the estimator's converged l
     CHECK(fx.gl_errors().empty());
 }
 
-TEST_CASE("closed forms: the wedge - the GPU lands on the estimator's converged limit; the bias to (1 - cos a) / 2 is reported") {
+TEST_CASE("closed forms: the wedge - the GPU lands on the estimator's converged limit - the bias to (1 - cos a) / 2 is reported") {
     testgl::Fixture fx;
     const double R = 1.5;
     for (double alpha : {60.0, 120.0}) {

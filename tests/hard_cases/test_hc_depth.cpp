@@ -37,6 +37,7 @@ std::vector<Convention> perspective_conventions(double aspect, double n, double 
         {"reverse-Z [0,1] D32FS8", analytic::reverse_z(hc::kFov, aspect, n, f), SSAO_CLIP_ZERO_TO_ONE, GL_DEPTH32F_STENCIL8, false, true, false, n, f},
         {"reverse-Z infinite D32F", analytic::reverse_z_infinite(hc::kFov, aspect, n), SSAO_CLIP_ZERO_TO_ONE, GL_DEPTH_COMPONENT32F, false, true, true, n, INFINITY},
         {"GL infinite D32F", analytic::infinite(hc::kFov, aspect, n), SSAO_CLIP_NEGATIVE_ONE_TO_ONE, GL_DEPTH_COMPONENT32F, false, false, true, n, INFINITY},
+        {"reverse-Z [-1,1] D32F", hc::reverse_z_gl(hc::kFov, aspect, n, f), SSAO_CLIP_NEGATIVE_ONE_TO_ONE, GL_DEPTH_COMPONENT32F, false, true, false, n, f},
         {"GL infinite D24", analytic::infinite(hc::kFov, aspect, n), SSAO_CLIP_NEGATIVE_ONE_TO_ONE, GL_DEPTH_COMPONENT24, false, false, true, n, INFINITY},
     };
 }
@@ -442,4 +443,34 @@ TEST_CASE("depth range: view depths beyond the half-float range (> 65504) give t
             if (g.sky(static_cast<int>(i % W), static_cast<int>(i / W))) CHECK(r.ao[i] == 1.0f);
     }
     CHECK(fx.gl_errors().empty());
+}
+
+TEST_CASE("depth precision: the DESIGN.md step table against the exact step of each format") {
+    // The exact view-distance change of one depth step (unorm 1/(2^b - 1) or
+    // one float ulp at the stored value) against the table's estimate: the
+    // table is a rule of thumb, within a factor of 2.5 wherever it applies
+    // (t well past the near plane; D32F standard Z: the float ulp near 1).
+    struct Row { const char* name; GLenum fmt; bool reverse; };
+    const Row rows[] = {
+        {"D16", GL_DEPTH_COMPONENT16, false},
+        {"D24", GL_DEPTH_COMPONENT24, false},
+        {"D32F standard", GL_DEPTH_COMPONENT32F, false},
+        {"D32F reverse-Z [0,1]", GL_DEPTH_COMPONENT32F, true},
+    };
+    for (const Row& r : rows)
+        for (double n : {1e-4, 1e-2, 1.0}) {
+            const double f = n * 1e6;
+            const glm::dmat4 proj = r.reverse ? analytic::reverse_z(hc::kFov, 1.0, n, f) : analytic::perspective(hc::kFov, 1.0, n, f);
+            const ssao_clip_range clip = r.reverse ? SSAO_CLIP_ZERO_TO_ONE : SSAO_CLIP_NEGATIVE_ONE_TO_ONE;
+            std::string line = std::string(r.name) + ", near " + std::to_string(n) + ": exact / table at t = ";
+            for (double k : {10.0, 100.0, 1e3, 1e4, 1e5}) {
+                const double t = k * n;
+                const double exact = hc::depth_step(proj, clip, r.fmt, t), table = hc::design_step(r.fmt, r.reverse, n, t);
+                line += std::to_string(static_cast<int>(k)) + "n: " + std::to_string(exact / table) + "  ";
+                CAPTURE(line);
+                CHECK(exact / table < 2.5);
+                CHECK(exact / table > 1.0 / 2.5);
+            }
+            MESSAGE(line);
+        }
 }

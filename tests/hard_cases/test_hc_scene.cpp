@@ -428,6 +428,10 @@ TEST_CASE("normals: zero, NaN, infinite, non-unit and back-facing normals stay f
         {"huge 1e4", [](glm::vec3 n) { return n * 1e4f; }, true},
         {"facing away", [](glm::vec3 n) { return -n; }, false},
     };
+    const Bad bads32[] = {
+        {"denormal-small 1e-25 (RGBA32F only)", [](glm::vec3 n) { return n * 1e-25f; }, false},
+        {"max float", [](glm::vec3) { return glm::vec3(3.4e38f, 3.4e38f, 0.0f); }, false},
+    };
     for (GLenum nf : {GLenum(GL_RGBA16F), GLenum(GL_RGBA32F)})
         for (ssao_blur blur : {SSAO_BLUR_NONE, SSAO_BLUR_DEPTH_AWARE, SSAO_BLUR_GAUSSIAN}) {
             ssao_settings s = hc::make(16, blur, SSAO_ROTATION_HASH, 1.0f);
@@ -438,7 +442,12 @@ TEST_CASE("normals: zero, NaN, infinite, non-unit and back-facing normals stay f
             const auto clean = hc::run(fx, g, proj, SSAO_CLIP_ZERO_TO_ONE, o);
             REQUIRE(clean.status == SSAO_OK);
             const int spread = blur == SSAO_BLUR_NONE ? 0 : static_cast<int>(rs.blur_radius);
-            for (const Bad& b : bads) {
+            std::vector<const Bad*> list;
+            for (const Bad& b : bads) list.push_back(&b);
+            if (nf == GL_RGBA32F)
+                for (const Bad& b : bads32) list.push_back(&b);
+            for (const Bad* bp : list) {
+                const Bad& b = *bp;
                 const std::string bname = b.name;
                 CAPTURE(bname);
                 CAPTURE(nf);
@@ -480,7 +489,7 @@ TEST_CASE("normals: zero, NaN, infinite, non-unit and back-facing normals stay f
     CHECK(fx.gl_errors().empty());
 }
 
-TEST_CASE("radius: as the radius goes to 0 the AO goes to 1 monotonically; a huge radius stays finite and fast") {
+TEST_CASE("radius: as the radius goes to 0 the AO goes to 1 monotonically - a huge radius stays finite and fast") {
     testgl::Fixture fx;
     const int W = 64, H = 48;
     const auto proj = analytic::perspective(hc::kFov, double(W) / H, 0.1, 100.0);
@@ -652,7 +661,7 @@ TEST_CASE("sizes: swapping width and height with the camera rolled 90 degrees ro
     CHECK(fx.gl_errors().empty());
 }
 
-TEST_CASE("float16 inputs: RGBA16F and RGB16F normals give the AO of RGBA32F normals; R16F output matches R8") {
+TEST_CASE("float16 inputs: RGBA16F and RGB16F normals give the AO of RGBA32F normals - R16F output matches R8") {
     testgl::Fixture fx;
     const int W = 64, H = 48;
     const auto proj = analytic::reverse_z(hc::kFov, double(W) / H, 0.1, 100.0);
@@ -685,5 +694,32 @@ TEST_CASE("float16 inputs: RGBA16F and RGB16F normals give the AO of RGBA32F nor
     REQUIRE(r16.status == SSAO_OK);
     const auto d = hc::diff(r16.ao, r8.ao, {}, 1.0);
     CHECK(d.worst <= 0.5 / 255 + 1e-3);
+    CHECK(fx.gl_errors().empty());
+}
+
+TEST_CASE("normals: a huge but finite normal (x 1e20, RGBA32F) is the same direction as the unit one") {
+    // Finding F2: dot(n, n) overflows to +inf for |n| > ~1.8e19, and the
+    // shader then treats the normal as broken (falls back to the direction
+    // towards the camera) instead of normalising it.
+    testgl::Fixture fx;
+    const int W = 64, H = 48;
+    const auto proj = analytic::reverse_z(hc::kFov, double(W) / H, 0.1, 100.0);
+    const GBuffer g = analytic::render(hc::to_view(hc::crease_world(), hc::crease_view()), proj, SSAO_CLIP_ZERO_TO_ONE, W, H);
+    fx.settings(hc::make(16, SSAO_BLUR_NONE, SSAO_ROTATION_HASH, 1.0f));
+    hc::RunOptions o;
+    o.normal_format = GL_RGBA32F;
+    const auto clean = hc::run(fx, g, proj, SSAO_CLIP_ZERO_TO_ONE, o);
+    for (float scale : {1e16f, 1e20f, 1e30f}) {
+        CAPTURE(scale);
+        std::vector<glm::vec3> normals = g.normal;
+        for (auto& n : normals) n *= scale;
+        o.normals = &normals;
+        const auto r = hc::run(fx, g, proj, SSAO_CLIP_ZERO_TO_ONE, o);
+        REQUIRE(r.status == SSAO_OK);
+        hc::check_unit_finite(r.ao, "huge normals");
+        const auto d = hc::diff(clean.ao, r.ao, {}, 1.0 / 16);
+        MESSAGE("normals x " << scale << ": " << d.over_1e3 << " of " << d.compared << " px differ from unit normals, worst " << d.worst);
+        CHECK(d.over_1e3 <= d.compared / 100);
+    }
     CHECK(fx.gl_errors().empty());
 }
