@@ -140,11 +140,20 @@ ssao_settings build_settings(const ssao_api& api, const cli::Options& o, const s
 }
 
 // ------------------------------------------------------------------ camera
+const glm::vec3 kBundledEye(2.3f, 1.6f, -2.6f), kBundledTarget(0.0f, 0.65f, 0.0f);
+
 camera::Camera build_camera(const cli::Options& o, const scene::Scene& sc, float aspect, bool& from_scene) {
     from_scene = sc.camera.has_value();
     camera::Overrides ov;
     ov.eye = o.eye;
     ov.target = o.target;
+    // The bundled scene's bounds are dominated by its 8 x 8 ground, so framing
+    // them shows a small cow: without a scene argument and without camera
+    // flags, look at the cow from a three-quarter view instead.
+    if (o.scene_path.empty() && !o.eye && !o.target && !o.ortho_half_height) {
+        ov.eye = kBundledEye;
+        ov.target = kBundledTarget;
+    }
     ov.fov_deg = o.fov_deg;
     ov.znear = o.znear;
     ov.zfar = o.zfar;
