@@ -2,6 +2,7 @@
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -147,6 +148,13 @@ double depth_step(const glm::dmat4& proj, ssao_clip_range clip, GLenum fmt, doub
     if (bits == 32) {
         const float fd = static_cast<float>(d);
         step = static_cast<double>(std::nextafter(fd, 2.0f)) - fd;
+        // With GL's [-1,1] clip range the rasteriser holds NDC z in float
+        // before depth = ndc * 0.5 + 0.5: the stored value cannot be finer
+        // than half an ulp of NDC z (this is why reverse-Z needs [0,1]).
+        if (clip != SSAO_CLIP_ZERO_TO_ONE) {
+            const float ndc = static_cast<float>(d * 2.0 - 1.0);
+            step = std::max(step, 0.5 * (static_cast<double>(std::nextafter(ndc, 2.0f)) - ndc));
+        }
     } else {
         step = 1.0 / (std::ldexp(1.0, bits) - 1.0);
     }
@@ -176,6 +184,15 @@ glm::vec3 shader_view_position(const glm::dmat4& proj, ssao_clip_range clip, int
     const float z = clip == SSAO_CLIP_ZERO_TO_ONE ? depth : depth * 2.0f - 1.0f;
     const glm::vec4 v = inv * glm::vec4(ndc, z, 1.0f);
     return glm::vec3(v) / v.w;
+}
+
+void gl_window_depth(analytic::GBuffer& g, ssao_clip_range clip, GLenum depth_format) {
+    if (clip == SSAO_CLIP_ZERO_TO_ONE || format_bits(depth_format) != 32) return;
+    for (size_t i = 0; i < g.depth.size(); ++i) {
+        if (std::isnan(g.position[i].x)) continue;  // sky: the clear value, exact
+        const float ndc = static_cast<float>(static_cast<double>(g.depth[i]) * 2.0 - 1.0);
+        g.depth[i] = ndc * 0.5f + 0.5f;
+    }
 }
 
 double mean(const std::vector<float>& v, const std::function<bool(size_t)>& mask) {

@@ -57,7 +57,8 @@ double depth_at(const glm::dmat4& proj, ssao_clip_range clip, double t);
 // Bits of a depth format (16, 24, 32 = float).
 int format_bits(GLenum depth_format);
 // The view-distance change of one step of the format at distance t (exact,
-// in double): |t(d + step) - t(d)| with step = 1/(2^bits-1) or one float ulp.
+// in double): |t(d + step) - t(d)| with step = 1/(2^bits-1) or one float ulp
+// (for D32F with a [-1,1] clip range: at least half an ulp of NDC z).
 double depth_step(const glm::dmat4& proj, ssao_clip_range clip, GLenum depth_format, double t);
 // The DESIGN.md table's estimate of the same.
 double design_step(GLenum depth_format, bool reverse_zo, double n, double t);
@@ -69,6 +70,11 @@ double quantise(double d, GLenum depth_format);
 // pixel centre in float, one float matrix-vector product and division.
 glm::vec3 shader_view_position(const glm::dmat4& proj, ssao_clip_range clip, int px, int py, int w, int h,
                                float depth);
+
+// What a GL rasteriser stores in a float depth buffer with the [-1,1] clip
+// range: NDC z is a float, then depth = ndc * 0.5 + 0.5 in float. (The
+// analytic G-buffer rounds the exact depth once; this adds the NDC rounding.)
+void gl_window_depth(analytic::GBuffer& g, ssao_clip_range clip, GLenum depth_format);
 
 // Row-major index helper.
 inline size_t at(int x, int y, int w) { return static_cast<size_t>(y) * w + x; }

@@ -278,7 +278,8 @@ namespace {
 struct Format {
     const char* name;
     GLenum format;
-    bool reverse_zo;  // reverse-Z with a [0,1] clip range (D32F only)
+    bool reverse_zo;          // reverse-Z with a [0,1] clip range (D32F only)
+    bool reverse_gl = false;  // reverse-Z left in GL's [-1,1] clip range (D32F only)
 };
 
 const Format kFormats[] = {
@@ -286,11 +287,17 @@ const Format kFormats[] = {
     {"D24", GL_DEPTH_COMPONENT24, false},
     {"D32F", GL_DEPTH_COMPONENT32F, false},
     {"D32F reverse-Z", GL_DEPTH_COMPONENT32F, true},
+    {"D32F reverse-Z in [-1,1]", GL_DEPTH_COMPONENT32F, false, true},
 };
 
 glm::dmat4 projection_for(const Format& fm, double n, double ratio, ssao_clip_range& clip) {
     const bool inf = std::isinf(ratio);
     clip = fm.reverse_zo ? SSAO_CLIP_ZERO_TO_ONE : SSAO_CLIP_NEGATIVE_ONE_TO_ONE;
+    if (fm.reverse_gl) {
+        glm::dmat4 m = hc::reverse_z_gl(hc::kFov, 1.0, n, inf ? n * 1e12 : n * ratio);
+        if (inf) { m[2][2] = 1.0; m[3][2] = 2.0 * n; }  // ndc = -1 + 2n/t
+        return m;
+    }
     if (fm.reverse_zo) return inf ? analytic::reverse_z_infinite(hc::kFov, 1.0, n) : analytic::reverse_z(hc::kFov, 1.0, n, n * ratio);
     return inf ? analytic::infinite(hc::kFov, 1.0, n) : analytic::perspective(hc::kFov, 1.0, n, n * ratio);
 }
@@ -319,7 +326,8 @@ Acne tilted_run(testgl::Fixture& fx, const Format& fm, double n, double ratio, d
                 double radius, int size = 32, double resolve_fraction = 1.0 / 16) {
     ssao_clip_range clip;
     const glm::dmat4 proj = projection_for(fm, n, ratio, clip);
-    const GBuffer g = analytic::render(tilted_plane(z0, tilt), proj, clip, size, size);
+    GBuffer g = analytic::render(tilted_plane(z0, tilt), proj, clip, size, size);
+    hc::gl_window_depth(g, clip, fm.format);
     hc::RunOptions o;
     o.depth_format = fm.format;
     const auto r = hc::run(fx, g, proj, clip, o);
