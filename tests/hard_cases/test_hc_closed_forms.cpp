@@ -211,3 +211,4 @@ TEST_CASE("closed forms: the wedge - the GPU lands on the estimator's converged 
     }
     CHECK(fx.gl_errors().empty());
 }
+

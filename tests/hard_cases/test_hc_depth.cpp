@@ -80,27 +80,32 @@ TEST_CASE("depth conventions: the same scene gives the same AO in every clip ran
     const int W = 64, H = 48;
     const double n = 0.1, f = 100.0;
     const Scene scene = hc::to_view(hc::crease_world(), hc::crease_view());
-    const ssao_settings s = fx.settings(hc::make(16, SSAO_BLUR_NONE, SSAO_ROTATION_HASH, 1.0f));
-    auto convs = perspective_conventions(double(W) / H, n, f);
-    std::vector<float> ref;
-    for (const auto& c : convs) {
-        const std::string cname = c.name; CAPTURE(cname);
-        const GBuffer g = analytic::render(scene, c.proj, c.clip, W, H);
-        hc::RunOptions o;
-        o.depth_format = c.format;
-        const auto r = hc::run(fx, g, c.proj, c.clip, o);
-        REQUIRE(r.status == SSAO_OK);
-        hc::check_unit_finite(r.ao, c.name);
-        check_frame_info(fx, c);
-        if (ref.empty()) { ref = r.ao; continue; }
-        const auto d = hc::diff(ref, r.ao, {}, 1.0 / s.sample_count);
-        MESSAGE(std::string(c.name) << " vs GL D32F: mean |diff| " << d.mean_abs << ", worst " << d.worst << ", " << d.over_1e3
-                       << " px > 1e-3, " << d.over_one_sample << " px > one sample, of " << d.compared);
-        // Depth precision only moves samples lying within a few depth steps of
-        // a comparison threshold: at most one sample flips at a pixel, rarely.
-        CHECK(d.mean_abs < 0.004);
-        CHECK(d.over_one_sample <= d.compared / 100);
-        CHECK(d.worst <= 2.0 / s.sample_count + 2e-3);
+    for (ssao_kernel_shape shape : {SSAO_KERNEL_HEMISPHERE, SSAO_KERNEL_SPHERE, SSAO_KERNEL_SEPARABLE}) {
+        CAPTURE(shape);
+        ssao_settings want = hc::make(16, SSAO_BLUR_NONE, SSAO_ROTATION_HASH, 1.0f);
+        want.kernel_shape = shape;
+        const ssao_settings s = fx.settings(want);
+        std::vector<float> ref;
+        for (const auto& c : perspective_conventions(double(W) / H, n, f)) {
+            const std::string cname = c.name;
+            CAPTURE(cname);
+            const GBuffer g = analytic::render(scene, c.proj, c.clip, W, H);
+            hc::RunOptions o;
+            o.depth_format = c.format;
+            const auto r = hc::run(fx, g, c.proj, c.clip, o);
+            REQUIRE(r.status == SSAO_OK);
+            hc::check_unit_finite(r.ao, c.name);
+            check_frame_info(fx, c);
+            if (ref.empty()) { ref = r.ao; continue; }
+            const auto d = hc::diff(ref, r.ao, {}, 1.0 / s.sample_count);
+            MESSAGE("kernel " << shape << ", " << cname << " vs GL D32F: mean |diff| " << d.mean_abs << ", worst " << d.worst
+                              << ", " << d.over_1e3 << " px > 1e-3, " << d.over_one_sample << " px > one sample, of " << d.compared);
+            // Depth precision only moves samples lying within a few depth steps of
+            // a comparison threshold: at most one sample flips at a pixel, rarely.
+            CHECK(d.mean_abs < 0.004);
+            CHECK(d.over_one_sample <= d.compared / 100);
+            CHECK(d.worst <= 2.0 / s.sample_count + 2e-3);
+        }
     }
     CHECK(fx.gl_errors().empty());
 }
@@ -481,4 +486,53 @@ TEST_CASE("depth precision: the DESIGN.md step table against the exact step of e
             }
             MESSAGE(line);
         }
+}
+
+TEST_CASE("depth formats and range: orthographic - a plane tilted 0..89 degrees stays unoccluded wherever the format resolves its depth") {
+    testgl::Fixture fx;
+    int runs = 0;
+    struct OrthoFormat { const char* name; GLenum fmt; int kind; };  // kind 0: GL [-1,1], 1: [0,1], 2: reversed [0,1]
+    const OrthoFormat fmts[] = {{"D16 GL", GL_DEPTH_COMPONENT16, 0}, {"D24 GL", GL_DEPTH_COMPONENT24, 0},
+                                {"D32F [0,1]", GL_DEPTH_COMPONENT32F, 1}, {"D32F reversed", GL_DEPTH_COMPONENT32F, 2}};
+    for (const auto& fm : fmts)
+        for (double n : {1e-3, 1.0})
+            for (double ratio : {1e2, 1e4})
+                for (double zr : {4.0, 40.0}) {
+                    const double z0 = zr * n, f = n * ratio;
+                    if (z0 > 0.5 * f) continue;
+                    const double hw = 0.577 * z0, radius = 0.1 * z0;
+                    const ssao_clip_range clip = fm.kind == 0 ? SSAO_CLIP_NEGATIVE_ONE_TO_ONE : SSAO_CLIP_ZERO_TO_ONE;
+                    const glm::dmat4 proj = fm.kind == 0 ? analytic::orthographic(hw, hw, n, f)
+                                            : fm.kind == 1 ? hc::ortho_zo(hw, hw, n, f) : hc::ortho_reverse(hw, hw, n, f);
+                    fx.settings(hc::make(16, SSAO_BLUR_NONE, SSAO_ROTATION_HASH, static_cast<float>(radius)));
+                    for (double tilt : {0.0, 30.0, 60.0, 80.0, 89.0}) {
+                        const std::string fname = fm.name;
+                        CAPTURE(fname);
+                        CAPTURE(n);
+                        CAPTURE(ratio);
+                        CAPTURE(z0);
+                        CAPTURE(tilt);
+                        GBuffer g = analytic::render(tilted_plane(z0, tilt), proj, clip, 32, 32);
+                        hc::gl_window_depth(g, clip, fm.fmt);
+                        hc::RunOptions o;
+                        o.depth_format = fm.fmt;
+                        const auto r = hc::run(fx, g, proj, clip, o);
+                        REQUIRE(r.status == SSAO_OK);
+                        hc::check_unit_finite(r.ao, fm.name);
+                        int dark = 0, checked = 0;
+                        for (int y = 0; y < 32; ++y)
+                            for (int x = 0; x < 32; ++x) {
+                                if (g.sky(x, y)) continue;
+                                const double t = -g.position[hc::at(x, y, 32)].z;
+                                if (hc::depth_step(proj, clip, fm.fmt, t) > radius / 16) continue;
+                                ++checked;
+                                if (r.ao[hc::at(x, y, 32)] < 0.98f) ++dark;
+                            }
+                        ++runs;
+                        CHECK(dark == 0);
+                    }
+                }
+    MESSAGE(runs << " orthographic runs");
+    CHECK(runs > 50);
+    CHECK(fx.gl_errors().empty());
 }

@@ -723,3 +723,45 @@ TEST_CASE("normals: a huge but finite normal (x 1e20, RGBA32F) is the same direc
     }
     CHECK(fx.gl_errors().empty());
 }
+
+TEST_CASE("depth: NaN, infinite and out-of-range values in a D32F input stay finite, in [0,1] and contained") {
+    // A float depth buffer can hold anything the host writes (or uploads).
+    // Whatever GL keeps of such values, the output must stay finite and in
+    // range, and pixels farther than the kernel footprint + blur radius from
+    // the bad ones must be unchanged.
+    testgl::Fixture fx;
+    const int W = 64, H = 48;
+    const auto proj = analytic::reverse_z(hc::kFov, double(W) / H, 0.1, 100.0);
+    const GBuffer g = analytic::render(hc::to_view(hc::crease_world(), hc::crease_view()), proj, SSAO_CLIP_ZERO_TO_ONE, W, H);
+    const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
+    for (ssao_blur blur : {SSAO_BLUR_NONE, SSAO_BLUR_DEPTH_AWARE, SSAO_BLUR_GAUSSIAN, SSAO_BLUR_BOX_4X4}) {
+        ssao_settings s = hc::make(16, blur, SSAO_ROTATION_HASH, 0.5f);
+        s.blur_radius = 2;
+        fx.settings(s);
+        const auto clean = hc::run(fx, g, proj, SSAO_CLIP_ZERO_TO_ONE);
+        REQUIRE(clean.status == SSAO_OK);
+        for (float bad : {nan, inf, -inf, 2.0f, -1.0f, 1e-45f}) {
+            CAPTURE(blur);
+            CAPTURE(bad);
+            GBuffer b = g;
+            std::vector<char> mask(W * H, 0);
+            for (int y = 22; y < 25; ++y)
+                for (int x = 30; x < 33; ++x) {
+                    b.depth[hc::at(x, y, W)] = bad;
+                    mask[hc::at(x, y, W)] = 1;
+                }
+            const auto r = hc::run(fx, b, proj, SSAO_CLIP_ZERO_TO_ONE);
+            REQUIRE(r.status == SSAO_OK);
+            hc::check_unit_finite(r.ao, "bad depth");
+            // Kernel footprint: radius 0.5 at depth > 2.5 is < 8 px; + blur 2.
+            int changed_far = 0;
+            for (int y = 0; y < H; ++y)
+                for (int x = 0; x < W; ++x) {
+                    const bool near_bad = std::abs(x - 31) <= 1 + 12 && std::abs(y - 23) <= 1 + 12;
+                    if (!near_bad && r.ao[hc::at(x, y, W)] != clean.ao[hc::at(x, y, W)]) ++changed_far;
+                }
+            CHECK(changed_far == 0);
+        }
+    }
+    CHECK(fx.gl_errors().empty());
+}
