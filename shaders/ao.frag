@@ -19,9 +19,12 @@ vec3 load_normal(ivec2 px, vec3 to_eye) {
     vec3 n = texelFetch(u_normal_tex, px, 0).xyz;
     if (u_modes.w == SSAO_SHADER_PACKING_UNORM) n = n * 2.0 - 1.0;
     if (u_modes.z == SSAO_SHADER_NORMAL_WORLD) n = mat3(u_normal_to_view) * n;
-    float len2 = dot(n, n);
-    if (!(len2 > 1e-12 && len2 < 1e30)) return to_eye;
-    n *= inversesqrt(len2);
+    // Scale by the largest component first: a huge but finite normal (1e20)
+    // would overflow dot(n, n) and a tiny one underflow it.
+    float m = max(abs(n.x), max(abs(n.y), abs(n.z)));
+    if (!(m > 1e-30 && m < 3.0e38)) return to_eye;  // zero, NaN or infinite
+    n /= m;
+    n *= inversesqrt(dot(n, n));
     // Facing away (back faces, interpolation at silhouettes): remove the part
     // pointing away, continuously, instead of flipping.
     float away = dot(n, to_eye);
