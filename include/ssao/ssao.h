@@ -205,13 +205,17 @@ typedef struct ssao_settings {
     ssao_output_format output_format;           /* plugin-owned output format; default R8 */
 } ssao_settings;
 
-/* Named quality presets (accuracy against time; see the README's benchmark). */
+/* Named quality presets, picked from the Pareto front of error against GPU
+ * time that ssao-bench measures (README, "Accuracy against time"). Each keeps
+ * the radius, bias and every other field at its default; set the radius for
+ * your scene after taking a preset. A zeroed ssao_settings is not a preset: it
+ * is the classic configuration (16 accelerating samples, depth-aware blur). */
 typedef enum ssao_preset {
-    SSAO_PRESET_DEFAULT = 0,    /* = SSAO_PRESET_MEDIUM; the same as a zeroed ssao_settings */
-    SSAO_PRESET_LOW = 1,
-    SSAO_PRESET_MEDIUM = 2,
-    SSAO_PRESET_HIGH = 3,
-    SSAO_PRESET_ULTRA = 4
+    SSAO_PRESET_DEFAULT = 0,    /* = SSAO_PRESET_MEDIUM, the recommended default */
+    SSAO_PRESET_LOW = 1,        /* 4 samples, uniform, no blur */
+    SSAO_PRESET_MEDIUM = 2,     /* 4 samples, uniform, 4x4 box blur */
+    SSAO_PRESET_HIGH = 3,       /* 32 samples, uniform, no blur */
+    SSAO_PRESET_ULTRA = 4       /* 64 samples, uniform, no blur */
 } ssao_preset;
 
 /* ----------------------------------------------------------------- inputs */

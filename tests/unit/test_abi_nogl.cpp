@@ -135,7 +135,11 @@ TEST_CASE("abi: resolve_settings and preset_settings through the library") {
     CHECK(out.blur == SSAO_BLUR_DEPTH_AWARE);
     ssao_settings medium = sentinel<ssao_settings>();
     REQUIRE(a.preset_settings(SSAO_PRESET_MEDIUM, &medium) == SSAO_OK);
-    CHECK(same_bytes(medium, out));
+    ssao_settings def = sentinel<ssao_settings>();
+    REQUIRE(a.preset_settings(SSAO_PRESET_DEFAULT, &def) == SSAO_OK);
+    CHECK(same_bytes(medium, def));
+    CHECK(medium.sample_count == 4u);
+    CHECK(medium.blur == SSAO_BLUR_BOX_4X4);
 
     in.radius = kNaN;
     ssao_settings o = sentinel<ssao_settings>();

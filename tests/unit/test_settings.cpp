@@ -283,7 +283,7 @@ TEST_CASE("settings: resolving in place works") {
     CHECK(s.bias == doctest::Approx(0.075));
 }
 
-TEST_CASE("settings: every preset resolves and quality grows from LOW to ULTRA") {
+TEST_CASE("settings: every preset resolves to the documented table") {
     const ssao_preset presets[] = {SSAO_PRESET_DEFAULT, SSAO_PRESET_LOW, SSAO_PRESET_MEDIUM, SSAO_PRESET_HIGH,
                                    SSAO_PRESET_ULTRA};
     ssao_settings got[5];
@@ -302,14 +302,30 @@ TEST_CASE("settings: every preset resolves and quality grows from LOW to ULTRA")
     const ssao_settings& medium = got[2];
     const ssao_settings& high = got[3];
     const ssao_settings& ultra = got[4];
-    CHECK(same(def, medium));                    // DEFAULT = MEDIUM
-    CHECK(same(medium, resolve_ok(zeroed())));   // = a zeroed struct
-    CHECK(low.sample_count < medium.sample_count);
+    CHECK(same(def, medium));  // DEFAULT = MEDIUM
+    // The table in ssao.h and the README (chosen by ssao-bench).
+    CHECK(low.sample_count == 4u);
+    CHECK(low.blur == SSAO_BLUR_NONE);
+    CHECK(medium.sample_count == 4u);
+    CHECK(medium.blur == SSAO_BLUR_BOX_4X4);
+    CHECK(high.sample_count == 32u);
+    CHECK(high.blur == SSAO_BLUR_NONE);
+    CHECK(ultra.sample_count == 64u);
+    CHECK(ultra.blur == SSAO_BLUR_NONE);
+    // More samples never cost less: cost grows from LOW to ULTRA.
+    CHECK(low.sample_count <= medium.sample_count);
     CHECK(medium.sample_count < high.sample_count);
     CHECK(high.sample_count < ultra.sample_count);
-    CHECK(ultra.sample_count <= 64u);
-    CHECK(low.blur_radius <= ultra.blur_radius);
-    for (const ssao_settings* p : {&low, &medium, &high, &ultra}) CHECK(p->strength == 1.0f);
+    // Presets change only the cost and accuracy fields; the rest stay defaults.
+    const ssao_settings zero = resolve_ok(zeroed());
+    for (const ssao_settings* p : {&low, &medium, &high, &ultra}) {
+        CHECK(p->strength == 1.0f);
+        CHECK(p->distribution == SSAO_DISTRIBUTION_UNIFORM);
+        CHECK(p->radius == zero.radius);
+        CHECK(p->bias == zero.bias);
+        CHECK(p->kernel_shape == zero.kernel_shape);
+        CHECK(p->rotation == zero.rotation);
+    }
 }
 
 TEST_CASE("settings: an unknown preset is INVALID_ENUM and leaves out untouched") {
