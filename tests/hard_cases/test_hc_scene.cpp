@@ -765,3 +765,39 @@ TEST_CASE("depth: NaN, infinite and out-of-range values in a D32F input stay fin
     }
     CHECK(fx.gl_errors().empty());
 }
+
+TEST_CASE("normals: every broken normal (zero, NaN in any component, inf) takes the same documented fallback") {
+    // ao.frag: "a broken normal (zero, NaN, inf) falls back to the direction
+    // towards the camera". Whole-image runs, RGBA32F, no blur: each kind of
+    // broken normal must give the AO of the all-zero normal buffer.
+    testgl::Fixture fx;
+    const int W = 64, H = 48;
+    const auto proj = analytic::reverse_z(hc::kFov, double(W) / H, 0.1, 100.0);
+    const GBuffer g = analytic::render(hc::to_view(hc::crease_world(), hc::crease_view()), proj, SSAO_CLIP_ZERO_TO_ONE, W, H);
+    fx.settings(hc::make(16, SSAO_BLUR_NONE, SSAO_ROTATION_HASH, 1.0f));
+    hc::RunOptions o;
+    o.normal_format = GL_RGBA32F;
+    const std::vector<glm::vec3> zero(g.normal.size(), glm::vec3(0.0f));
+    o.normals = &zero;
+    const auto ref = hc::run(fx, g, proj, SSAO_CLIP_ZERO_TO_ONE, o);
+    REQUIRE(ref.status == SSAO_OK);
+    CHECK(hc::mean(ref.ao) < 0.95);  // the fallback normal does see the crease
+    const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
+    const struct { const char* name; glm::vec3 n; } kinds[] = {
+        {"(NaN, 0, 1)", {nan, 0.0f, 1.0f}}, {"(0, 1, NaN)", {0.0f, 1.0f, nan}}, {"all NaN", {nan, nan, nan}},
+        {"(inf, 1, 0)", {inf, 1.0f, 0.0f}}, {"(0, -inf, 1)", {0.0f, -inf, 1.0f}}, {"(1e-35, 0, 0)", {1e-35f, 0.0f, 0.0f}},
+    };
+    for (const auto& k : kinds) {
+        const std::string kname = k.name;
+        CAPTURE(kname);
+        const std::vector<glm::vec3> bad(g.normal.size(), k.n);
+        o.normals = &bad;
+        const auto r = hc::run(fx, g, proj, SSAO_CLIP_ZERO_TO_ONE, o);
+        REQUIRE(r.status == SSAO_OK);
+        hc::check_unit_finite(r.ao, k.name);
+        const auto d = hc::diff(ref.ao, r.ao, {}, 1.0 / 16);
+        MESSAGE(kname << ": " << d.over_1e3 << " of " << d.compared << " px differ from the zero-normal fallback, mean AO " << hc::mean(r.ao));
+        CHECK(d.over_1e3 == 0);
+    }
+    CHECK(fx.gl_errors().empty());
+}
