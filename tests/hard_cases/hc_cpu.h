@@ -10,7 +10,9 @@ namespace hccpu {
 using cpu::Input;
 
 struct Variant {
-    bool snap_guard = true;  // ao.frag: `if (distance(sn, s) > 0.5 * radius) sn = s;`
+    // ao.frag before b112e72: `if (distance(sn, s) > 0.5 * radius) sn = s;`
+    // (finding F1). Off by default, as the shader is now.
+    bool snap_guard = false;
 };
 
 float ao(const Input& in, const ssao_settings& s, int x, int y, const Variant& var = {});

@@ -5,6 +5,7 @@
 // with the depth step, and view depths beyond the half-float range work.
 #include <doctest/doctest.h>
 
+#include "hc_cpu.h"
 #include "hc_util.h"
 #include "projection.h"
 
@@ -534,5 +535,44 @@ TEST_CASE("depth formats and range: orthographic - a plane tilted 0..89 degrees 
                 }
     MESSAGE(runs << " orthographic runs");
     CHECK(runs > 50);
+    CHECK(fx.gl_errors().empty());
+}
+
+TEST_CASE("finding F1, kept executable: the old snap guard is what made tilted planes self-occlude, and the GPU follows the guard-free formula") {
+    // hc_cpu is tests/support/cpu_ssao with the removed line switchable.
+    testgl::Fixture fx;
+    const Format d16 = kFormats[0];
+    const double n = 1.0, ratio = 1e3, z0 = 4.0, tilt = 60.0, radius = 0.4;
+    ssao_clip_range clip;
+    const glm::dmat4 proj = projection_for(d16, n, ratio, clip);
+    GBuffer g = analytic::render(tilted_plane(z0, tilt), proj, clip, 32, 32);
+    for (auto& d : g.depth) d = static_cast<float>(hc::quantise(d, d16.format));
+    const ssao_settings rs = fx.settings(hc::make(16, SSAO_BLUR_NONE, SSAO_ROTATION_HASH, static_cast<float>(radius)));
+    hc::RunOptions o;
+    o.depth_format = d16.format;
+    const auto r = hc::run(fx, g, proj, clip, o);
+    REQUIRE(r.status == SSAO_OK);
+    hccpu::Input in;
+    in.gbuffer = &g;
+    analytic::to_floats(proj, in.projection);
+    in.clip = clip;
+    in.depth_step = 1.0 / 65535.0;
+    hccpu::Variant old_shader;
+    old_shader.snap_guard = true;
+    int dark_old = 0, dark_now = 0, gpu_off = 0, plane = 0;
+    for (int y = 0; y < 32; ++y)
+        for (int x = 0; x < 32; ++x) {
+            if (g.sky(x, y)) continue;
+            ++plane;
+            const float now = hccpu::ao(in, rs, x, y), old = hccpu::ao(in, rs, x, y, old_shader);
+            dark_now += now < 0.98f;
+            dark_old += old < 0.98f;
+            gpu_off += std::abs(now - r.ao[hc::at(x, y, 32)]) > 2e-3f;
+        }
+    MESSAGE("D16 plane at 4, tilt 60, " << plane << " px: below 0.98 with the old guard " << dark_old << ", without " << dark_now
+                                        << "; GPU differs from the guard-free CPU at " << gpu_off);
+    CHECK(dark_old > plane / 10);
+    CHECK(dark_now == 0);
+    CHECK(gpu_off <= plane / 50);
     CHECK(fx.gl_errors().empty());
 }
