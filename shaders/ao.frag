@@ -22,7 +22,10 @@ vec3 load_normal(ivec2 px, vec3 to_eye) {
     // Scale by the largest component first: a huge but finite normal (1e20)
     // would overflow dot(n, n) and a tiny one underflow it.
     float m = max(abs(n.x), max(abs(n.y), abs(n.z)));
-    if (!(m > 1e-30 && m < 3.0e38)) return to_eye;  // zero, NaN or infinite
+    // max() need not propagate NaN (llvmpipe's does not), the sum does: a NaN
+    // in any component fails the comparison.
+    float sum = abs(n.x) + abs(n.y) + abs(n.z);
+    if (!(m > 1e-30 && m < 3.0e38 && sum < 3.0e38)) return to_eye;  // zero, NaN or infinite
     n /= m;
     n *= inversesqrt(dot(n, n));
     // Facing away (back faces, interpolation at silhouettes): remove the part

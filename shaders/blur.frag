@@ -10,7 +10,6 @@ uniform bool u_pack_depth;      // writing the next blur pass's input: (ao, view
 
 out vec4 o_ao;
 
-float ao_at(ivec2 vpx) { return texelFetch(u_ao_tex, vpx, 0).r; }
 
 vec4 result(float ao, float z) { return u_pack_depth ? vec4(ao, z, 0.0, 1.0) : vec4(ao, ao, ao, 1.0); }
 
@@ -18,18 +17,23 @@ void main() {
     ivec2 vpx = ivec2(gl_FragCoord.xy) - u_target_origin;
     ivec2 size = u_viewport.zw;
     int kind = u_counts.w;
-    if (kind == SSAO_SHADER_BLUR_BOX) {
-        // The chapter's blur: offsets -2..1 in x and y, clamped at the edges.
-        float sum = 0.0;
-        for (int y = -2; y < 2; ++y)
-            for (int x = -2; x < 2; ++x) sum += ao_at(clamp(vpx + ivec2(x, y), ivec2(0), size - 1));
-        float v = sum / 16.0;
-        o_ao = result(v, texelFetch(u_ao_tex, vpx, 0).g);
-        return;
-    }
     vec2 c = texelFetch(u_ao_tex, vpx, 0).rg;
     float centre = c.r, z0 = c.g;
-    if (z0 == SKY_Z) { o_ao = result(1.0, SKY_Z); return; }
+    if (z0 == SKY_Z) { o_ao = result(1.0, SKY_Z); return; }  // the sky stays exactly 1
+    if (kind == SSAO_SHADER_BLUR_BOX) {
+        // The chapter's blur: offsets -2..1 in x and y, clamped at the edges;
+        // sky taps take no part in the average (the centre never is sky).
+        float sum = 0.0, count = 0.0;
+        for (int y = -2; y < 2; ++y)
+            for (int x = -2; x < 2; ++x) {
+                vec2 tap = texelFetch(u_ao_tex, clamp(vpx + ivec2(x, y), ivec2(0), size - 1), 0).rg;
+                if (tap.g == SKY_Z) continue;
+                sum += tap.r;
+                count += 1.0;
+            }
+        o_ao = result(sum / count, z0);
+        return;
+    }
     bool aware = kind == SSAO_SHADER_BLUR_DEPTH_AWARE;
     float tolerance = u_ao2.z * abs(z0);
     float inv2s2 = 0.5 / (u_ao2.y * u_ao2.y);

@@ -47,7 +47,8 @@ float ao(const Input& in, const ssao_settings& s, int x, int y) {
     const glm::dvec3 to_eye = p.orthographic ? glm::dvec3(0, 0, 1) : glm::normalize(-P);
     glm::dvec3 n = glm::dvec3(g.normal[static_cast<size_t>(y) * g.width + x]);
     const double m = std::max(std::abs(n.x), std::max(std::abs(n.y), std::abs(n.z)));
-    n = (m > 1e-30 && m < 3.0e38) ? glm::normalize(n / m) : to_eye;
+    const double sum = std::abs(n.x) + std::abs(n.y) + std::abs(n.z);  // NaN-propagating, unlike max
+    n = (m > 1e-30 && m < 3.0e38 && sum < 3.0e38) ? glm::normalize(n / m) : to_eye;
     const double away = glm::dot(n, to_eye);
     if (away < 0.0) n = glm::normalize(n - to_eye * (away * 1.01));
 
