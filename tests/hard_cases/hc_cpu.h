@@ -13,6 +13,9 @@ struct Variant {
     // ao.frag before b112e72: `if (distance(sn, s) > 0.5 * radius) sn = s;`
     // (finding F1). Off by default, as the shader is now.
     bool snap_guard = false;
+    // Finding F5 (proposed): the float depth step in the [-1,1] clip range is
+    // at least half an ulp of NDC z.
+    bool ndc_ulp = false;
 };
 
 float ao(const Input& in, const ssao_settings& s, int x, int y, const Variant& var = {});
