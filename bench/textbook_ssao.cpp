@@ -1,9 +1,10 @@
 #include "textbook_ssao.h"
 
+#include "gl_util.h"
+
 #include <glm/gtc/type_ptr.hpp>
 
 #include <random>
-#include <stdexcept>
 #include <string>
 
 namespace textbook {
@@ -86,33 +87,6 @@ void main() {
     FragColor = result / (4.0 * 4.0);
 })";
 
-GLuint compile(GladGLContext& gl, GLenum type, const char* src) {
-    const GLuint s = gl.CreateShader(type);
-    gl.ShaderSource(s, 1, &src, nullptr);
-    gl.CompileShader(s);
-    GLint ok = 0;
-    gl.GetShaderiv(s, GL_COMPILE_STATUS, &ok);
-    if (!ok) {
-        char log[2048] = {};
-        gl.GetShaderInfoLog(s, sizeof log, nullptr, log);
-        throw std::runtime_error(std::string("textbook shader: ") + log);
-    }
-    return s;
-}
-
-GLuint program(GladGLContext& gl, const char* vs, const char* fs) {
-    const GLuint p = gl.CreateProgram(), v = compile(gl, GL_VERTEX_SHADER, vs), f = compile(gl, GL_FRAGMENT_SHADER, fs);
-    gl.AttachShader(p, v);
-    gl.AttachShader(p, f);
-    gl.LinkProgram(p);
-    gl.DeleteShader(v);
-    gl.DeleteShader(f);
-    GLint ok = 0;
-    gl.GetProgramiv(p, GL_LINK_STATUS, &ok);
-    if (!ok) throw std::runtime_error("textbook program failed to link");
-    return p;
-}
-
 GLuint texture(GladGLContext& gl, GLenum internal, GLenum format, int w, int h, GLenum filter, const void* data) {
     GLuint t = 0;
     gl.GenTextures(1, &t);
@@ -185,9 +159,9 @@ Pass::Pass(GladGLContext& gl, const scene::Mesh& mesh, int width, int height, fl
     gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
     gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
 
-    geometry_program_ = program(gl, kGeometryVs, kGeometryFs);
-    ssao_program_ = program(gl, kQuadVs, kSsaoFs);
-    blur_program_ = program(gl, kQuadVs, kBlurFs);
+    geometry_program_ = gl_util::make_program(gl, "textbook geometry", kGeometryVs, kGeometryFs);
+    ssao_program_ = gl_util::make_program(gl, "textbook SSAO", kQuadVs, kSsaoFs);
+    blur_program_ = gl_util::make_program(gl, "textbook blur", kQuadVs, kBlurFs);
     gl.UseProgram(ssao_program_);
     gl.Uniform1i(gl.GetUniformLocation(ssao_program_, "gPosition"), 0);
     gl.Uniform1i(gl.GetUniformLocation(ssao_program_, "gNormal"), 1);

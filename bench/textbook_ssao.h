@@ -17,7 +17,7 @@ namespace textbook {
 class Pass {
 public:
     // Uploads the mesh and makes the position G-buffer, the SSAO and blur
-    // targets (RED float) and programs. Throws std::runtime_error.
+    // targets (RED float) and programs. Throws gl_util::Error (a std::runtime_error).
     Pass(GladGLContext& gl, const scene::Mesh& mesh, int width, int height, float radius);
     ~Pass();
     Pass(const Pass&) = delete;
