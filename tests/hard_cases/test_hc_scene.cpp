@@ -801,3 +801,37 @@ TEST_CASE("normals: every broken normal (zero, NaN in any component, inf) takes 
     }
     CHECK(fx.gl_errors().empty());
 }
+
+TEST_CASE("settings extremes: 1 or 64 samples, strength off..8, power 0.01..16, every blur: finite, in [0,1], monotone in strength and power") {
+    testgl::Fixture fx;
+    const int W = 48, H = 36;
+    const auto proj = analytic::reverse_z_infinite(hc::kFov, double(W) / H, 0.1);
+    const GBuffer g = analytic::render(hc::to_view(hc::crease_world(), hc::crease_view()), proj, SSAO_CLIP_ZERO_TO_ONE, W, H);
+    for (uint32_t samples : {1u, 64u})
+        for (ssao_blur blur : {SSAO_BLUR_NONE, SSAO_BLUR_DEPTH_AWARE, SSAO_BLUR_GAUSSIAN, SSAO_BLUR_BOX_4X4})
+            for (float power : {0.01f, 1.0f, 16.0f}) {
+                CAPTURE(samples);
+                CAPTURE(blur);
+                CAPTURE(power);
+                std::vector<float> prev;
+                for (float strength : {SSAO_STRENGTH_OFF, 0.5f, 1.0f, 8.0f}) {
+                    CAPTURE(strength);
+                    ssao_settings s = hc::make(samples, blur, SSAO_ROTATION_HASH, 1.0f);
+                    s.power = power;
+                    s.strength = strength;
+                    s.blur_radius = 16;
+                    fx.settings(s);
+                    const auto r = hc::run(fx, g, proj, SSAO_CLIP_ZERO_TO_ONE);
+                    REQUIRE(r.status == SSAO_OK);
+                    hc::check_unit_finite(r.ao, "extremes");
+                    if (strength == SSAO_STRENGTH_OFF) CHECK(*std::min_element(r.ao.begin(), r.ao.end()) == 1.0f);
+                    if (!prev.empty() && blur == SSAO_BLUR_NONE) {
+                        int rose = 0;
+                        for (size_t i = 0; i < r.ao.size(); ++i) rose += r.ao[i] > prev[i] + 1e-3f;
+                        CHECK(rose == 0);  // more strength never lightens a pixel
+                    }
+                    prev = r.ao;
+                }
+            }
+    CHECK(fx.gl_errors().empty());
+}
