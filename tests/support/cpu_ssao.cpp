@@ -37,7 +37,8 @@ float ao(const Input& in, const ssao_settings& s, int x, int y) {
         const double ndc_z = p.ndc_per_depth == 2.0 ? d * 2.0 - 1.0 : d;
         const glm::dvec4 v = p.inverse * glm::dvec4(n, ndc_z, 1.0);
         const double dz = (p.inverse[2][2] * v.w - v.z * p.inverse[2][3]) / (v.w * v.w);
-        const double ulp = in.depth_step > 0 ? in.depth_step : std::max(std::abs(d) * 1.1920929e-7, 1.1754944e-38);
+        double ulp = in.depth_step > 0 ? in.depth_step : std::max(std::abs(d) * 1.1920929e-7, 1.1754944e-38);
+        if (in.depth_step == 0 && p.ndc_per_depth == 2.0) ulp = std::max(ulp, std::abs(d * 2.0 - 1.0) * 0.5 * 1.1920929e-7);
         return std::abs(dz) * p.ndc_per_depth * ulp;
     };
 
