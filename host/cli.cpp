@@ -1,5 +1,8 @@
 #include "cli.h"
 
+#include "camera.h"
+#include "flags.h"
+
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -11,50 +14,8 @@ namespace cli {
 
 namespace {
 
-struct Fail {
-    std::string message;
-};
-
-[[noreturn]] void fail(const std::string& message) { throw Fail{message}; }
-
-std::string quoted(const std::string& s) { return "'" + s + "'"; }
-
-double parse_number(const std::string& flag, const std::string& text, bool allow_inf = false) {
-    if (allow_inf && (text == "inf" || text == "infinity" || text == "+inf"))
-        return std::numeric_limits<double>::infinity();
-    const char* begin = text.c_str();
-    char* end = nullptr;
-    errno = 0;
-    const double v = std::strtod(begin, &end);
-    if (text.empty() || end == begin || *end != '\0' || errno == ERANGE || !std::isfinite(v))
-        fail(flag + " expects a finite number" + std::string(allow_inf ? " or 'inf'" : "") +
-             ", got " + quoted(text));
-    return v;
-}
-
-long long parse_integer(const std::string& flag, const std::string& text, long long lo, long long hi) {
-    const char* begin = text.c_str();
-    char* end = nullptr;
-    errno = 0;
-    const long long v = std::strtoll(begin, &end, 10);
-    if (text.empty() || end == begin || *end != '\0' || errno == ERANGE)
-        fail(flag + " expects a whole number, got " + quoted(text));
-    if (v < lo || v > hi)
-        fail(flag + " " + text + " is out of range " + std::to_string(lo) + ".." + std::to_string(hi));
-    return v;
-}
-
-glm::vec3 parse_vec3(const std::string& flag, const std::string& text) {
-    std::vector<std::string> parts;
-    std::string part;
-    std::istringstream in(text);
-    while (std::getline(in, part, ',')) parts.push_back(part);
-    if (parts.size() != 3 || (!text.empty() && text.back() == ','))
-        fail(flag + " expects three comma-separated numbers x,y,z, got " + quoted(text));
-    glm::vec3 v;
-    for (int i = 0; i < 3; ++i) v[i] = static_cast<float>(parse_number(flag, parts[static_cast<size_t>(i)]));
-    return v;
-}
+using flags::fail;
+using flags::quoted;
 
 template <typename T>
 T parse_choice(const std::string& flag, const std::string& text, const std::vector<std::pair<const char*, T>>& choices) {
@@ -90,7 +51,7 @@ const char* choice_name(T v, const std::vector<std::pair<const char*, T>>& choic
 
 // A number with a range, written once for the parser and the help text.
 float ranged(const std::string& flag, const std::string& text, double lo, bool lo_open, double hi, bool hi_open) {
-    const double v = parse_number(flag, text);
+    const double v = flags::number(flag, text);
     const bool below = lo_open ? v <= lo : v < lo;
     const bool above = hi_open ? v >= hi : v > hi;
     if (below || above) {
@@ -119,9 +80,8 @@ std::optional<ssao_blur> parse_blur(const std::string& s) {
 }
 
 ParseResult parse(int argc, const char* const* argv, Options& o, std::string& error) {
-    using Handler = std::function<void(const std::string& flag, const std::string& value)>;
     // Flags that take a value.
-    const std::map<std::string, Handler> valued = {
+    const flags::Valued valued = {
         {"--out", [&](const std::string& f, const std::string& v) {
              if (v.empty()) fail(f + " expects a directory");
              o.out_dir = v;
@@ -131,20 +91,20 @@ ParseResult parse(int argc, const char* const* argv, Options& o, std::string& er
              o.plugin_path = v;
          }},
         {"--width", [&](const std::string& f, const std::string& v) {
-             o.width = static_cast<int>(parse_integer(f, v, 1, SSAO_MAX_DIMENSION));
+             o.width = static_cast<int>(flags::integer(f, v, 1, SSAO_MAX_DIMENSION));
          }},
         {"--height", [&](const std::string& f, const std::string& v) {
-             o.height = static_cast<int>(parse_integer(f, v, 1, SSAO_MAX_DIMENSION));
+             o.height = static_cast<int>(flags::integer(f, v, 1, SSAO_MAX_DIMENSION));
          }},
         {"--frames", [&](const std::string& f, const std::string& v) {
-             o.frames = static_cast<int>(parse_integer(f, v, 1, 1000));
+             o.frames = static_cast<int>(flags::integer(f, v, 1, 1000));
          }},
-        {"--eye", [&](const std::string& f, const std::string& v) { o.eye = parse_vec3(f, v); }},
-        {"--target", [&](const std::string& f, const std::string& v) { o.target = parse_vec3(f, v); }},
+        {"--eye", [&](const std::string& f, const std::string& v) { o.eye = flags::vec3(f, v); }},
+        {"--target", [&](const std::string& f, const std::string& v) { o.target = flags::vec3(f, v); }},
         {"--fov", [&](const std::string& f, const std::string& v) { o.fov_deg = ranged(f, v, 0, true, 180, true); }},
         {"--near", [&](const std::string& f, const std::string& v) { o.znear = ranged(f, v, 0, true, kBig, false); }},
         {"--far", [&](const std::string& f, const std::string& v) {
-             const double d = parse_number(f, v, true);
+             const double d = flags::number(f, v, true);
              if (!(d > 0)) fail(f + " " + v + " must be > 0 (or 'inf')");
              o.zfar = static_cast<float>(d);
          }},
@@ -163,7 +123,7 @@ ParseResult parse(int argc, const char* const* argv, Options& o, std::string& er
          }},
         {"--preset", [&](const std::string& f, const std::string& v) { o.preset = parse_choice(f, v, kPresets); }},
         {"--samples", [&](const std::string& f, const std::string& v) {
-             o.samples = static_cast<int>(parse_integer(f, v, 1, SSAO_MAX_SAMPLES));
+             o.samples = static_cast<int>(flags::integer(f, v, 1, SSAO_MAX_SAMPLES));
          }},
         {"--radius", [&](const std::string& f, const std::string& v) { o.radius = ranged(f, v, 0, true, kBig, false); }},
         {"--bias", [&](const std::string& f, const std::string& v) { o.bias = ranged(f, v, 0, false, kBig, false); }},
@@ -178,11 +138,11 @@ ParseResult parse(int argc, const char* const* argv, Options& o, std::string& er
          }},
         {"--rotation", [&](const std::string& f, const std::string& v) { o.rotation = parse_choice(f, v, kRotations); }},
         {"--seed", [&](const std::string& f, const std::string& v) {
-             o.seed = static_cast<uint32_t>(parse_integer(f, v, 0, 4294967295LL));
+             o.seed = static_cast<uint32_t>(flags::integer(f, v, 0, 4294967295LL));
          }},
         {"--blur", [&](const std::string& f, const std::string& v) { o.blur = parse_choice(f, v, kBlurs); }},
         {"--blur-radius", [&](const std::string& f, const std::string& v) {
-             o.blur_radius = static_cast<int>(parse_integer(f, v, 1, SSAO_MAX_BLUR_RADIUS));
+             o.blur_radius = static_cast<int>(flags::integer(f, v, 1, SSAO_MAX_BLUR_RADIUS));
          }},
         {"--blur-sigma", [&](const std::string& f, const std::string& v) { o.blur_sigma = ranged(f, v, 0, true, 64, false); }},
         {"--blur-tolerance", [&](const std::string& f, const std::string& v) {
@@ -191,7 +151,7 @@ ParseResult parse(int argc, const char* const* argv, Options& o, std::string& er
         {"--output-format", [&](const std::string& f, const std::string& v) { o.output_format = parse_choice(f, v, kOutputs); }},
     };
     // Flags without a value.
-    const std::map<std::string, std::function<void()>> switches = {
+    const flags::Switches switches = {
         {"--gl33", [&] { o.gl33 = true; }},
         {"--reverse-z", [&] { o.reverse_z = true; }},
         {"--sheet", [&] { o.sheet = true; }},
@@ -199,50 +159,16 @@ ParseResult parse(int argc, const char* const* argv, Options& o, std::string& er
     };
 
     try {
-        bool help = false;
-        bool scene_seen = false;
-        for (int i = 1; i < argc; ++i) {
-            std::string arg = argv[i];
-            if (arg == "--help" || arg == "-h") {
-                help = true;
-                continue;
-            }
-            if (arg.size() > 1 && arg[0] == '-') {
-                std::string value;
-                bool has_value = false;
-                const size_t eq = arg.find('=');
-                if (arg.rfind("--", 0) == 0 && eq != std::string::npos) {
-                    value = arg.substr(eq + 1);
-                    arg = arg.substr(0, eq);
-                    has_value = true;
-                }
-                if (auto s = switches.find(arg); s != switches.end()) {
-                    if (has_value) fail(arg + " takes no value");
-                    s->second();
-                    continue;
-                }
-                auto h = valued.find(arg);
-                if (h == valued.end()) fail("unknown flag " + quoted(arg) + " (see --help)");
-                if (!has_value) {
-                    if (i + 1 >= argc) fail(arg + " needs a value");
-                    value = argv[++i];
-                }
-                h->second(arg, value);
-                continue;
-            }
-            if (scene_seen) fail("more than one scene file given: " + quoted(o.scene_path) + " and " + quoted(arg));
-            o.scene_path = arg;
-            scene_seen = true;
-        }
-        if (help) return ParseResult::Help;
-        if (o.ortho_half_height && o.fov_deg) fail("--ortho and --fov exclude each other");
-        if (o.ortho_half_height && o.zfar && std::isinf(*o.zfar))
-            fail("--far inf needs a perspective camera (not --ortho)");
-        if (o.znear && o.zfar && !(*o.zfar > *o.znear))
-            fail("--far must be greater than --near");
-        if (o.eye && o.target && glm::all(glm::equal(*o.eye, *o.target)))
-            fail("--eye and --target are the same point");
-    } catch (const Fail& f) {
+        if (flags::walk(argc, argv, valued, switches, o.scene_path)) return ParseResult::Help;
+        camera::Overrides cam;
+        cam.eye = o.eye;
+        cam.target = o.target;
+        cam.fov_deg = o.fov_deg;
+        cam.znear = o.znear;
+        cam.zfar = o.zfar;
+        cam.ortho_half_height = o.ortho_half_height;
+        flags::check_camera(cam);
+    } catch (const flags::Error& f) {
         error = f.message;
         return ParseResult::Error;
     }

@@ -12,6 +12,7 @@
 //   reference_normal.exr  channels R,G,B = view-space geometric normal facing the camera (0 for sky)
 // Row 0 of every image is the top row of the picture.
 #include "camera.h"
+#include "flags.h"
 #include "image_io.h"
 #include "raytracer.h"
 #include "scene.h"
@@ -36,49 +37,13 @@
 
 namespace {
 
-struct Fail {
-    std::string message;
-};
-[[noreturn]] void fail(const std::string& m) { throw Fail{m}; }
-std::string quoted(const std::string& s) { return "'" + s + "'"; }
-
-double parse_number(const std::string& flag, const std::string& text, bool allow_inf = false) {
-    if (allow_inf && (text == "inf" || text == "infinity" || text == "+inf")) return std::numeric_limits<double>::infinity();
-    const char* b = text.c_str();
-    char* e = nullptr;
-    errno = 0;
-    const double v = std::strtod(b, &e);
-    if (text.empty() || e == b || *e != '\0' || errno == ERANGE || !std::isfinite(v))
-        fail(flag + " expects a finite number" + std::string(allow_inf ? " or 'inf'" : "") + ", got " + quoted(text));
-    return v;
-}
-
-long long parse_integer(const std::string& flag, const std::string& text, long long lo, long long hi) {
-    const char* b = text.c_str();
-    char* e = nullptr;
-    errno = 0;
-    const long long v = std::strtoll(b, &e, 10);
-    if (text.empty() || e == b || *e != '\0' || errno == ERANGE) fail(flag + " expects a whole number, got " + quoted(text));
-    if (v < lo || v > hi) fail(flag + " " + text + " is out of range " + std::to_string(lo) + ".." + std::to_string(hi));
-    return v;
-}
+using flags::fail;
+using flags::quoted;
 
 float positive(const std::string& flag, const std::string& text) {
-    const double v = parse_number(flag, text);
+    const double v = flags::number(flag, text);
     if (!(v > 0.0) || v > 1e30) fail(flag + " " + text + " must be greater than 0");
     return float(v);
-}
-
-glm::vec3 parse_vec3(const std::string& flag, const std::string& text) {
-    std::vector<std::string> parts;
-    std::string part;
-    std::istringstream in(text);
-    while (std::getline(in, part, ',')) parts.push_back(part);
-    if (parts.size() != 3 || (!text.empty() && text.back() == ','))
-        fail(flag + " expects three comma-separated numbers x,y,z, got " + quoted(text));
-    glm::vec3 v;
-    for (int i = 0; i < 3; ++i) v[i] = float(parse_number(flag, parts[size_t(i)]));
-    return v;
 }
 
 struct Options {
@@ -126,24 +91,23 @@ const char* kHelp =
 enum class Parse { Run, Help, Error };
 
 Parse parse(int argc, char** argv, Options& o, std::string& error) {
-    using Handler = std::function<void(const std::string&, const std::string&)>;
-    const std::map<std::string, Handler> valued = {
-        {"--width", [&](const std::string& f, const std::string& v) { o.width = int(parse_integer(f, v, 1, 16384)); }},
-        {"--height", [&](const std::string& f, const std::string& v) { o.height = int(parse_integer(f, v, 1, 16384)); }},
+    const flags::Valued valued = {
+        {"--width", [&](const std::string& f, const std::string& v) { o.width = int(flags::integer(f, v, 1, 16384)); }},
+        {"--height", [&](const std::string& f, const std::string& v) { o.height = int(flags::integer(f, v, 1, 16384)); }},
         {"--radius", [&](const std::string& f, const std::string& v) { o.radius = positive(f, v); }},
-        {"--samples", [&](const std::string& f, const std::string& v) { o.samples = int(parse_integer(f, v, 1, 1 << 20)); }},
-        {"--seed", [&](const std::string& f, const std::string& v) { o.seed = uint32_t(parse_integer(f, v, 0, 4294967295LL)); }},
-        {"--threads", [&](const std::string& f, const std::string& v) { o.threads = int(parse_integer(f, v, 1, 1024)); }},
-        {"--eye", [&](const std::string& f, const std::string& v) { o.cam.eye = parse_vec3(f, v); }},
-        {"--target", [&](const std::string& f, const std::string& v) { o.cam.target = parse_vec3(f, v); }},
+        {"--samples", [&](const std::string& f, const std::string& v) { o.samples = int(flags::integer(f, v, 1, 1 << 20)); }},
+        {"--seed", [&](const std::string& f, const std::string& v) { o.seed = uint32_t(flags::integer(f, v, 0, 4294967295LL)); }},
+        {"--threads", [&](const std::string& f, const std::string& v) { o.threads = int(flags::integer(f, v, 1, 1024)); }},
+        {"--eye", [&](const std::string& f, const std::string& v) { o.cam.eye = flags::vec3(f, v); }},
+        {"--target", [&](const std::string& f, const std::string& v) { o.cam.target = flags::vec3(f, v); }},
         {"--fov", [&](const std::string& f, const std::string& v) {
-             const double d = parse_number(f, v);
+             const double d = flags::number(f, v);
              if (!(d > 0.0 && d < 180.0)) fail(f + " " + v + " is out of range (0, 180)");
              o.cam.fov_deg = float(d);
          }},
         {"--near", [&](const std::string& f, const std::string& v) { o.cam.znear = positive(f, v); }},
         {"--far", [&](const std::string& f, const std::string& v) {
-             const double d = parse_number(f, v, true);
+             const double d = flags::number(f, v, true);
              if (!(d > 0.0)) fail(f + " " + v + " must be greater than 0");
              o.cam.zfar = float(d);
          }},
@@ -153,56 +117,17 @@ Parse parse(int argc, char** argv, Options& o, std::string& error) {
              o.out_dir = v;
          }},
     };
-    const std::map<std::string, std::function<void()>> switches = {
+    const flags::Switches switches = {
         {"--dump-buffers", [&] { o.dump_buffers = true; }},
         {"--quiet", [&] { o.quiet = true; }},
         {"--reverse-z", [&] { o.cam.reverse_z = true; }},
     };
     try {
-        bool help = false, scene_seen = false;
-        for (int i = 1; i < argc; ++i) {
-            std::string arg = argv[i];
-            if (arg == "--help" || arg == "-h") {
-                help = true;
-                continue;
-            }
-            if (arg.size() > 1 && arg[0] == '-') {
-                std::string value;
-                bool has_value = false;
-                const size_t eq = arg.find('=');
-                if (arg.rfind("--", 0) == 0 && eq != std::string::npos) {
-                    value = arg.substr(eq + 1);
-                    arg = arg.substr(0, eq);
-                    has_value = true;
-                }
-                if (auto s = switches.find(arg); s != switches.end()) {
-                    if (has_value) fail(arg + " takes no value");
-                    s->second();
-                    continue;
-                }
-                auto h = valued.find(arg);
-                if (h == valued.end()) fail("unknown flag " + quoted(arg) + " (see --help)");
-                if (!has_value) {
-                    if (i + 1 >= argc) fail(arg + " needs a value");
-                    value = argv[++i];
-                }
-                h->second(arg, value);
-                continue;
-            }
-            if (scene_seen) fail("more than one scene file given: " + quoted(o.scene_path) + " and " + quoted(arg));
-            o.scene_path = arg;
-            scene_seen = true;
-        }
-        if (help) return Parse::Help;
-        if (o.cam.ortho_half_height && o.cam.fov_deg) fail("--ortho and --fov exclude each other");
-        if (o.cam.ortho_half_height && o.cam.zfar && std::isinf(*o.cam.zfar))
-            fail("--far inf needs a perspective camera (not --ortho)");
-        if (o.cam.znear && o.cam.zfar && !(*o.cam.zfar > *o.cam.znear)) fail("--far must be greater than --near");
-        if (o.cam.eye && o.cam.target && glm::all(glm::equal(*o.cam.eye, *o.cam.target)))
-            fail("--eye and --target are the same point");
+        if (flags::walk(argc, argv, valued, switches, o.scene_path)) return Parse::Help;
+        flags::check_camera(o.cam);
         if (double(o.width) * double(o.height) * double(o.samples) > 4e12)
             fail("--width x --height x --samples is absurdly large (more than 4e12 rays)");
-    } catch (const Fail& f) {
+    } catch (const flags::Error& f) {
         error = f.message;
         return Parse::Error;
     }

@@ -1,0 +1,97 @@
+#include "flags.h"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <limits>
+#include <sstream>
+#include <vector>
+
+namespace flags {
+
+void fail(const std::string& message) { throw Error{message}; }
+
+std::string quoted(const std::string& s) { return "'" + s + "'"; }
+
+double number(const std::string& flag, const std::string& text, bool allow_inf) {
+    if (allow_inf && (text == "inf" || text == "infinity" || text == "+inf"))
+        return std::numeric_limits<double>::infinity();
+    const char* begin = text.c_str();
+    char* end = nullptr;
+    errno = 0;
+    const double v = std::strtod(begin, &end);
+    if (text.empty() || end == begin || *end != '\0' || errno == ERANGE || !std::isfinite(v))
+        fail(flag + " expects a finite number" + std::string(allow_inf ? " or 'inf'" : "") + ", got " + quoted(text));
+    return v;
+}
+
+long long integer(const std::string& flag, const std::string& text, long long lo, long long hi) {
+    const char* begin = text.c_str();
+    char* end = nullptr;
+    errno = 0;
+    const long long v = std::strtoll(begin, &end, 10);
+    if (text.empty() || end == begin || *end != '\0' || errno == ERANGE)
+        fail(flag + " expects a whole number, got " + quoted(text));
+    if (v < lo || v > hi)
+        fail(flag + " " + text + " is out of range " + std::to_string(lo) + ".." + std::to_string(hi));
+    return v;
+}
+
+glm::vec3 vec3(const std::string& flag, const std::string& text) {
+    std::vector<std::string> parts;
+    std::string part;
+    std::istringstream in(text);
+    while (std::getline(in, part, ',')) parts.push_back(part);
+    if (parts.size() != 3 || (!text.empty() && text.back() == ','))
+        fail(flag + " expects three comma-separated numbers x,y,z, got " + quoted(text));
+    glm::vec3 v;
+    for (int i = 0; i < 3; ++i) v[i] = static_cast<float>(number(flag, parts[static_cast<size_t>(i)]));
+    return v;
+}
+
+bool walk(int argc, const char* const* argv, const Valued& valued, const Switches& switches, std::string& scene_path) {
+    bool help = false, scene_seen = false;
+    for (int i = 1; i < argc; ++i) {
+        std::string arg = argv[i];
+        if (arg == "--help" || arg == "-h") {
+            help = true;
+            continue;
+        }
+        if (arg.size() > 1 && arg[0] == '-') {
+            std::string value;
+            bool has_value = false;
+            const size_t eq = arg.find('=');
+            if (arg.rfind("--", 0) == 0 && eq != std::string::npos) {
+                value = arg.substr(eq + 1);
+                arg = arg.substr(0, eq);
+                has_value = true;
+            }
+            if (auto s = switches.find(arg); s != switches.end()) {
+                if (has_value) fail(arg + " takes no value");
+                s->second();
+                continue;
+            }
+            auto h = valued.find(arg);
+            if (h == valued.end()) fail("unknown flag " + quoted(arg) + " (see --help)");
+            if (!has_value) {
+                if (i + 1 >= argc) fail(arg + " needs a value");
+                value = argv[++i];
+            }
+            h->second(arg, value);
+            continue;
+        }
+        if (scene_seen) fail("more than one scene file given: " + quoted(scene_path) + " and " + quoted(arg));
+        scene_path = arg;
+        scene_seen = true;
+    }
+    return help;
+}
+
+void check_camera(const camera::Overrides& o) {
+    if (o.ortho_half_height && o.fov_deg) fail("--ortho and --fov exclude each other");
+    if (o.ortho_half_height && o.zfar && std::isinf(*o.zfar)) fail("--far inf needs a perspective camera (not --ortho)");
+    if (o.znear && o.zfar && !(*o.zfar > *o.znear)) fail("--far must be greater than --near");
+    if (o.eye && o.target && glm::all(glm::equal(*o.eye, *o.target))) fail("--eye and --target are the same point");
+}
+
+}  // namespace flags
