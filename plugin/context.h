@@ -37,7 +37,7 @@ struct ssao_context {
     ssao_output_format output_format = SSAO_OUTPUT_DEFAULT;
 
     // Timestamp queries: kFrames frames in flight, kStamps per frame.
-    static constexpr int kFrames = 4, kStamps = 3;
+    static constexpr int kFrames = 8, kStamps = 3;  // a CPU up to 8 frames ahead is still measured
     GLuint queries[kFrames][kStamps] = {};
     uint64_t query_frame[kFrames] = {};  // which execute filled the slot; 0 = empty
     bool timers = false;
