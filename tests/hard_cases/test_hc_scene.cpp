@@ -835,3 +835,28 @@ TEST_CASE("settings extremes: 1 or 64 samples, strength off..8, power 0.01..16, 
             }
     CHECK(fx.gl_errors().empty());
 }
+
+TEST_CASE("orthographic with the near plane behind the camera: surfaces at view z = 0 stay finite through the depth-aware blur") {
+    // Orthographic cameras (CAD, shadow-style views) may put the near plane
+    // behind the eye; a surface through z = 0 then has zero view depth, and
+    // the blur's relative tolerance (0.05 * |z|) becomes 0 there.
+    testgl::Fixture fx;
+    const int W = 48, H = 36;
+    const auto proj = analytic::orthographic(4.0, 3.0, -10.0, 10.0);
+    Scene facing, tilted;
+    facing.add_quad({-20, -20, 0}, {40, 0, 0}, {0, 40, 0});            // exactly at z = 0
+    tilted.add_quad({-20, -20, -5}, {40, 0, 0}, {0, 40, 10});          // crosses z = 0
+    tilted.add_box({-1, -1, -1}, {1, 1, 1});                           // straddles z = 0
+    for (const Scene* sc : {&facing, &tilted})
+        for (ssao_blur blur : {SSAO_BLUR_DEPTH_AWARE, SSAO_BLUR_GAUSSIAN, SSAO_BLUR_BOX_4X4, SSAO_BLUR_NONE}) {
+            CAPTURE(blur);
+            CAPTURE(sc == &facing);
+            const GBuffer g = analytic::render(*sc, proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, W, H);
+            fx.settings(hc::make(16, blur, SSAO_ROTATION_HASH, 0.5f));
+            const auto r = hc::run(fx, g, proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE);
+            REQUIRE(r.status == SSAO_OK);
+            hc::check_unit_finite(r.ao, "ortho z = 0");
+            if (sc == &facing) CHECK(*std::min_element(r.ao.begin(), r.ao.end()) >= 0.98f);
+        }
+    CHECK(fx.gl_errors().empty());
+}
