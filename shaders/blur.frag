@@ -35,7 +35,9 @@ void main() {
         return;
     }
     bool aware = kind == SSAO_SHADER_BLUR_DEPTH_AWARE;
-    float tolerance = u_ao2.z * abs(z0);
+    // Floored: an orthographic camera whose near plane lies behind the eye
+    // has surfaces at view z = 0, where 0/0 would be undefined.
+    float tolerance = max(u_ao2.z * abs(z0), 1e-30);
     float inv2s2 = 0.5 / (u_ao2.y * u_ao2.y);
     float sum = centre, weight = 1.0;
     for (int k = -u_counts.z; k <= u_counts.z; ++k) {

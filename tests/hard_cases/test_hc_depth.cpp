@@ -5,7 +5,7 @@
 // with the depth step, and view depths beyond the half-float range work.
 #include <doctest/doctest.h>
 
-#include "hc_cpu.h"
+#include "cpu_ssao.h"
 #include "hc_util.h"
 #include "projection.h"
 
@@ -571,7 +571,7 @@ TEST_CASE("depth formats and range: orthographic - a plane tilted 0..89 degrees 
 }
 
 TEST_CASE("finding F1, kept executable: the old snap guard is what made tilted planes self-occlude, and the GPU follows the guard-free formula") {
-    // hc_cpu is tests/support/cpu_ssao with the removed line switchable.
+    // tests/support/cpu_ssao with and without the removed line (Input::legacy_snap_guard).
     testgl::Fixture fx;
     const Format d16 = kFormats[0];
     const double n = 1.0, ratio = 1e3, z0 = 4.0, tilt = 60.0, radius = 0.4;
@@ -584,19 +584,19 @@ TEST_CASE("finding F1, kept executable: the old snap guard is what made tilted p
     o.depth_format = d16.format;
     const auto r = hc::run(fx, g, proj, clip, o);
     REQUIRE(r.status == SSAO_OK);
-    hccpu::Input in;
+    cpu::Input in;
     in.gbuffer = &g;
     analytic::to_floats(proj, in.projection);
     in.clip = clip;
     in.depth_step = 1.0 / 65535.0;
-    hccpu::Variant old_shader;
-    old_shader.snap_guard = true;
+    cpu::Input old_shader = in;
+    old_shader.legacy_snap_guard = true;
     int dark_old = 0, dark_now = 0, gpu_off = 0, plane = 0;
     for (int y = 0; y < 32; ++y)
         for (int x = 0; x < 32; ++x) {
             if (g.sky(x, y)) continue;
             ++plane;
-            const float now = hccpu::ao(in, rs, x, y), old = hccpu::ao(in, rs, x, y, old_shader);
+            const float now = cpu::ao(in, rs, x, y), old = cpu::ao(old_shader, rs, x, y);
             dark_now += now < 0.98f;
             dark_old += old < 0.98f;
             gpu_off += std::abs(now - r.ao[hc::at(x, y, 32)]) > 2e-3f;

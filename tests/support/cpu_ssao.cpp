@@ -90,6 +90,7 @@ float ao(const Input& in, const ssao_settings& s, int x, int y) {
             const double qn = glm::dot(Q, n);
             if (std::abs(qn) > 1e-3 * glm::length(Q)) sn = Q * (plane / qn);
         }
+        if (in.legacy_snap_guard && glm::distance(sn, sp) > 0.5 * radius) sn = sp;
         const double bias = s.bias + s.depth_step_bias * (step_p + step(sx, sy, sd));
         const double range = smoothstep01(radius / std::abs(P.z - Q.z));
         occlusion += (Q.z >= sn.z + bias ? 1.0 : 0.0) * range;

@@ -15,6 +15,10 @@ struct Input {
     float projection[16] = {};
     ssao_clip_range clip = SSAO_CLIP_NEGATIVE_ONE_TO_ONE;
     double depth_step = 0.0;  // unorm step of the depth format; 0 = float
+    // The shader before hard-case finding F1 fell back to the raw sample when
+    // the snapped one lay more than half a radius away; kept switchable so a
+    // test can show that this line is what made tilted planes self-occlude.
+    bool legacy_snap_guard = false;
 };
 
 // AO of pixel (x, y) before any blur, with resolved settings `s`.
