@@ -12,6 +12,7 @@ add_custom_command(
   OUTPUT ${GLAD_DIR}/src/gl.c ${GLAD_DIR}/include/glad/gl.h
   COMMAND ${SSAO_SYSTEM_PYTHON} -m glad --quiet --reproducible --api gl:core=4.5
           --extensions ${GLAD_EXTENSIONS} --out-path ${GLAD_DIR} c --mx
+  DEPENDS ${CMAKE_CURRENT_LIST_FILE}
   COMMENT "Generating the GL loader with glad 2"
   VERBATIM)
 add_library(ssao_glad STATIC ${GLAD_DIR}/src/gl.c)

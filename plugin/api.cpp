@@ -4,6 +4,7 @@
 #include "context.h"
 #include "settings.h"
 
+#include <memory>
 #include <new>
 #include <string>
 
@@ -42,6 +43,7 @@ const char* SSAO_CALL status_string(ssao_status status) {
         case SSAO_ERROR_FRAMEBUFFER: return "an internal framebuffer is incomplete";
         case SSAO_ERROR_OUT_OF_MEMORY: return "out of memory";
         case SSAO_ERROR_INTERNAL: return "internal error";
+        case SSAO_STATUS_MAX_ENUM: break;
     }
     return "unknown status";
 }
@@ -95,18 +97,20 @@ ssao_status SSAO_CALL api_create_context(const ssao_context_desc* desc, ssao_con
         } else {
             resolve_settings(settings, settings, why);
         }
-        ssao_context* ctx = new (std::nothrow) ssao_context();
+        // Owned until handed out: a failure, or an exception out of
+        // initialise, releases whatever GL objects were made so far.
+        auto destroy = [](ssao_context* c) {
+            ssao_impl::release(*c);
+            delete c;
+        };
+        std::unique_ptr<ssao_context, decltype(destroy)> ctx(new (std::nothrow) ssao_context(), destroy);
         if (!ctx) return report(SSAO_ERROR_OUT_OF_MEMORY, "out of memory");
         ctx->log = desc->log;
         ctx->log_user = desc->log_user;
         ctx->settings = settings;
         const ssao_status st = ssao_impl::initialise(*ctx, *desc);
-        if (st != SSAO_OK) {
-            ssao_impl::release(*ctx);
-            delete ctx;
-            return st;  // initialise already sent the message to the log
-        }
-        *out = ctx;
+        if (st != SSAO_OK) return st;  // initialise already sent the message to the log
+        *out = ctx.release();
         return SSAO_OK;
     });
 }

@@ -7,6 +7,7 @@
 #include "uniforms.h"
 #include <ssao_shaders_embedded.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstring>
 #include <string>
@@ -164,6 +165,7 @@ ssao_status initialise(ssao_context& ctx, const ssao_context_desc& desc) {
     if (loaded == 0 || !all_required_loaded(ctx.gl, missing))
         return ctx.fail(SSAO_ERROR_GL_LOAD, "get_proc_address returned NULL for " +
                                                 (missing.empty() ? std::string("GL 3.3 core functions") : missing));
+    ctx.gl_ready = true;
     GladGLContext& gl = ctx.gl;
     ctx.caps.major = major;
     ctx.caps.minor = minor;
@@ -171,6 +173,10 @@ ssao_status initialise(ssao_context& ctx, const ssao_context_desc& desc) {
     ctx.caps.clip_control = gl.ClipControl != nullptr && (v >= 45 || has_gl_extension(gl, "GL_ARB_clip_control"));
     ctx.caps.depth_stencil_mode = v >= 43;
     ctx.caps.texture_target_query = v >= 45 && gl.GetTextureParameteriv != nullptr;
+    if (v >= 41 && gl.GetFloati_v && gl.ViewportIndexedfv && gl.ScissorIndexedv) {
+        gl.GetIntegerv(GL_MAX_VIEWPORTS, &ctx.caps.viewports);
+        ctx.caps.viewports = std::max(1, std::min(ctx.caps.viewports, 16));
+    }
     gl.GetIntegerv(GL_MAX_DRAW_BUFFERS, &ctx.caps.max_draw_buffers);
     gl.GetIntegerv(GL_MAX_CLIP_DISTANCES, &ctx.caps.max_clip_distances);
 
@@ -207,7 +213,7 @@ ssao_status initialise(ssao_context& ctx, const ssao_context_desc& desc) {
 
 void release(ssao_context& ctx) {
     GladGLContext& gl = ctx.gl;
-    if (!gl.DeleteProgram) return;  // GL never loaded
+    if (!ctx.gl_ready) return;  // GL never (fully) loaded: nothing was made
     if (ctx.program_ao) gl.DeleteProgram(ctx.program_ao);
     if (ctx.program_blur) gl.DeleteProgram(ctx.program_blur);
     if (ctx.vao) gl.DeleteVertexArrays(1, &ctx.vao);
@@ -216,7 +222,7 @@ void release(ssao_context& ctx) {
     if (ctx.ubo_kernel) gl.DeleteBuffers(1, &ctx.ubo_kernel);
     if (ctx.noise_texture) gl.DeleteTextures(1, &ctx.noise_texture);
     if (ctx.sampler) gl.DeleteSamplers(1, &ctx.sampler);
-    gl.DeleteTextures(2, ctx.temp);
+    if (ctx.temp[0] || ctx.temp[1]) gl.DeleteTextures(2, ctx.temp);
     if (ctx.output) gl.DeleteTextures(1, &ctx.output);
     if (ctx.timers) gl.DeleteQueries(ssao_context::kFrames * ssao_context::kStamps, &ctx.queries[0][0]);
 }

@@ -13,6 +13,7 @@
 
 struct ssao_context {
     GladGLContext gl{};
+    bool gl_ready = false;      // every required GL function was loaded
     ssao_impl::GlCaps caps;
     ssao_log_fn log = nullptr;
     void* log_user = nullptr;

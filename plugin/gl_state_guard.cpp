@@ -22,6 +22,13 @@ GlStateGuard::GlStateGuard(const GladGLContext& gl, const GlCaps& caps, GLuint u
     gl.GetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &draw_fbo_);
     gl.GetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &read_fbo_);
     gl.GetIntegerv(GL_CURRENT_PROGRAM, &program_);
+    if (program_ != 0) {
+        // A program the host flagged for deletion while current is deleted as
+        // soon as the passes bind theirs: it cannot be made current again.
+        GLint flagged = GL_FALSE;
+        gl.GetProgramiv(static_cast<GLuint>(program_), GL_DELETE_STATUS, &flagged);
+        if (flagged) program_ = 0;
+    }
     gl.GetIntegerv(GL_VERTEX_ARRAY_BINDING, &vao_);
     gl.GetIntegerv(GL_ACTIVE_TEXTURE, &active_texture_);
     for (int u = 0; u < kUnits; ++u) {
@@ -43,6 +50,12 @@ GlStateGuard::GlStateGuard(const GladGLContext& gl, const GlCaps& caps, GLuint u
     gl.GetIntegerv(GL_VIEWPORT, viewport_);
     gl.GetIntegerv(GL_SCISSOR_BOX, scissor_);
     scissor_test_ = gl.IsEnabled(GL_SCISSOR_TEST);
+    for (int i = 1; i < std::min(caps.viewports, kMaxViewports); ++i) {
+        const GLuint v = static_cast<GLuint>(i);
+        gl.GetFloati_v(GL_VIEWPORT, v, viewport_array_[i]);
+        gl.GetIntegeri_v(GL_SCISSOR_BOX, v, scissor_array_[i]);
+        scissor_test_array_[i] = gl.IsEnabledi(GL_SCISSOR_TEST, v);
+    }
     depth_test_ = gl.IsEnabled(GL_DEPTH_TEST);
     stencil_test_ = gl.IsEnabled(GL_STENCIL_TEST);
     cull_face_ = gl.IsEnabled(GL_CULL_FACE);
@@ -72,16 +85,17 @@ GlStateGuard::GlStateGuard(const GladGLContext& gl, const GlCaps& caps, GLuint u
     for (int i = 0; i < 8; ++i) gl.GetIntegerv(kUnpackParams[i], &unpack_[i]);
 }
 
-void GlStateGuard::save_depth_stencil_mode(GLuint texture) {
+void GlStateGuard::save_depth_stencil_mode(GLuint texture, GLuint unit) {
     if (!caps_.depth_stencil_mode) return;
     ds_texture_ = texture;
+    ds_unit_ = unit;
     gl_.GetTexParameteriv(GL_TEXTURE_2D, GL_DEPTH_STENCIL_TEXTURE_MODE, &ds_mode_);
 }
 
 GlStateGuard::~GlStateGuard() {
     const GladGLContext& gl = gl_;
     if (ds_texture_ != 0) {
-        gl.ActiveTexture(GL_TEXTURE0);
+        gl.ActiveTexture(GL_TEXTURE0 + ds_unit_);
         gl.BindTexture(GL_TEXTURE_2D, ds_texture_);
         gl.TexParameteri(GL_TEXTURE_2D, GL_DEPTH_STENCIL_TEXTURE_MODE, ds_mode_);
     }
@@ -107,9 +121,17 @@ GlStateGuard::~GlStateGuard() {
     gl.BindBuffer(GL_UNIFORM_BUFFER, static_cast<GLuint>(uniform_buffer_));
     gl.BindBuffer(GL_ARRAY_BUFFER, static_cast<GLuint>(array_buffer_));
     gl.BindBuffer(GL_PIXEL_UNPACK_BUFFER, static_cast<GLuint>(unpack_buffer_));
+    // Index 0 through the plain calls (which also set every other index),
+    // then the other indices of a viewport array.
     gl.Viewport(viewport_[0], viewport_[1], viewport_[2], viewport_[3]);
     gl.Scissor(scissor_[0], scissor_[1], scissor_[2], scissor_[3]);
     set_enabled(gl, GL_SCISSOR_TEST, scissor_test_);
+    for (int i = 1; i < std::min(caps_.viewports, kMaxViewports); ++i) {
+        const GLuint v = static_cast<GLuint>(i);
+        gl.ViewportIndexedfv(v, viewport_array_[i]);
+        gl.ScissorIndexedv(v, scissor_array_[i]);
+        if (scissor_test_array_[i]) gl.Enablei(GL_SCISSOR_TEST, v); else gl.Disablei(GL_SCISSOR_TEST, v);
+    }
     set_enabled(gl, GL_DEPTH_TEST, depth_test_);
     set_enabled(gl, GL_STENCIL_TEST, stencil_test_);
     set_enabled(gl, GL_CULL_FACE, cull_face_);
@@ -129,8 +151,14 @@ GlStateGuard::~GlStateGuard() {
     }
     for (int i = 0; i < std::min(caps_.max_clip_distances, 8); ++i)
         set_enabled(gl, GL_CLIP_DISTANCE0 + static_cast<GLenum>(i), clip_distance_[i]);
-    // Core profile: front and back polygon modes are always set together.
-    gl.PolygonMode(GL_FRONT_AND_BACK, static_cast<GLenum>(polygon_mode_[0]));
+    // Core profile: front and back are always equal and only GL_FRONT_AND_BACK
+    // is accepted; a compatibility profile may hold two different modes.
+    if (polygon_mode_[0] == polygon_mode_[1]) {
+        gl.PolygonMode(GL_FRONT_AND_BACK, static_cast<GLenum>(polygon_mode_[0]));
+    } else {
+        gl.PolygonMode(GL_FRONT, static_cast<GLenum>(polygon_mode_[0]));
+        gl.PolygonMode(GL_BACK, static_cast<GLenum>(polygon_mode_[1]));
+    }
     gl.DepthMask(depth_mask_);
     gl.StencilMaskSeparate(GL_FRONT, static_cast<GLuint>(stencil_mask_front_));
     gl.StencilMaskSeparate(GL_BACK, static_cast<GLuint>(stencil_mask_back_));

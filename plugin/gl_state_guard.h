@@ -12,6 +12,7 @@ struct GlCaps {
     bool clip_control = false;        // GL 4.5 or ARB_clip_control
     bool depth_stencil_mode = false;  // GL 4.3: GL_DEPTH_STENCIL_TEXTURE_MODE
     bool texture_target_query = false;// GL 4.5: GL_TEXTURE_TARGET
+    int viewports = 1;                // GL 4.1 viewport arrays: how many indices to save (<= 16)
     int max_draw_buffers = 8;
     int max_clip_distances = 8;
 };
@@ -23,13 +24,14 @@ public:
     GlStateGuard(const GlStateGuard&) = delete;
     GlStateGuard& operator=(const GlStateGuard&) = delete;
 
-    // Remember and later restore the depth-stencil texture mode of `texture`
-    // (bound to GL_TEXTURE_2D on the active unit when called).
-    void save_depth_stencil_mode(GLuint texture);
+    // Remember and later restore the depth-stencil texture mode of `texture`,
+    // bound to GL_TEXTURE_2D on texture unit `unit` (the active one) when called.
+    void save_depth_stencil_mode(GLuint texture, GLuint unit);
 
 private:
     static constexpr int kUnits = 4;
     static constexpr int kMaxBuffers = 16;
+    static constexpr int kMaxViewports = 16;
     const GladGLContext& gl_;
     const GlCaps& caps_;
     GLint draw_fbo_ = 0, read_fbo_ = 0, program_ = 0, vao_ = 0, active_texture_ = 0;
@@ -39,18 +41,23 @@ private:
     GLint ubo_binding_[2] = {};
     GLint64 ubo_start_[2] = {}, ubo_size_[2] = {};
     GLint viewport_[4] = {}, scissor_[4] = {};
+    // Viewport arrays (GL 4.1+): glViewport, glScissor and the scissor enable
+    // set every index, so each one is saved.
+    GLfloat viewport_array_[kMaxViewports][4] = {};
+    GLint scissor_array_[kMaxViewports][4] = {};
+    GLboolean scissor_test_array_[kMaxViewports] = {};
     GLboolean scissor_test_ = 0, depth_test_ = 0, stencil_test_ = 0, cull_face_ = 0, rasterizer_discard_ = 0,
               polygon_offset_fill_ = 0, color_logic_op_ = 0, sample_mask_ = 0, dither_ = 0, framebuffer_srgb_ = 0,
               multisample_ = 0, sample_alpha_to_coverage_ = 0;
     GLboolean blend_[kMaxBuffers] = {};
     GLboolean color_mask_[kMaxBuffers][4] = {};
     GLboolean clip_distance_[8] = {};
-    GLint polygon_mode_[2] = {};
+    GLint polygon_mode_[2] = {};  // front, back (they differ only in a compatibility profile)
     GLboolean depth_mask_ = 0;
     GLint stencil_mask_front_ = 0, stencil_mask_back_ = 0;
     GLint clip_origin_ = 0, clip_depth_mode_ = 0;
     GLint unpack_[8] = {};
-    GLuint ds_texture_ = 0;
+    GLuint ds_texture_ = 0, ds_unit_ = 0;
     GLint ds_mode_ = 0;
 };
 

@@ -44,6 +44,29 @@ bool is_texture_2d(ssao_context& ctx, GLuint name) {
     return true;
 }
 
+// Binds `name` to GL_TEXTURE_2D on `unit` and says whether it took: below GL
+// 4.5 a name of another target cannot be recognised beforehand, the bind then
+// fails (raising GL_INVALID_OPERATION) and leaves the previous binding.
+bool bind_2d(const GladGLContext& gl, GLuint unit, GLuint name) {
+    gl.ActiveTexture(GL_TEXTURE0 + unit);
+    gl.BindTexture(GL_TEXTURE_2D, name);
+    GLint bound = 0;
+    gl.GetIntegerv(GL_TEXTURE_BINDING_2D, &bound);
+    return static_cast<GLuint>(bound) == name;
+}
+
+// Leaves the plugin's framebuffer without an attachment on every way out of
+// execute, so it never keeps a host texture alive (declared after the state
+// guard, so it runs first, while the plugin's framebuffer is still bound).
+struct DetachOnExit {
+    const GladGLContext& gl;
+    GLuint fbo;
+    ~DetachOnExit() {
+        gl.BindFramebuffer(GL_FRAMEBUFFER, fbo);
+        gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, 0, 0);
+    }
+};
+
 void level0_size(const GladGLContext& gl, int& w, int& h) {
     gl.GetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_WIDTH, &w);
     gl.GetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_HEIGHT, &h);
@@ -171,12 +194,15 @@ ssao_status execute(ssao_context& ctx, const ssao_inputs& in, ssao_output* out) 
         return ctx.fail(SSAO_ERROR_INVALID_TEXTURE, "inputs.normal_texture is not the name of a GL_TEXTURE_2D");
     if (in.output_texture != 0 && !is_texture_2d(ctx, in.output_texture))
         return ctx.fail(SSAO_ERROR_INVALID_TEXTURE, "inputs.output_texture is not the name of a GL_TEXTURE_2D");
+    if (in.output_texture != 0 && (in.output_texture == in.depth_texture || in.output_texture == in.normal_texture))
+        return ctx.fail(SSAO_ERROR_INVALID_TEXTURE, "inputs.output_texture is also an input (a feedback loop)");
 
     GlStateGuard guard(gl, ctx.caps, SSAO_UBO_FRAME, SSAO_UBO_KERNEL);
+    const DetachOnExit detach{gl, ctx.fbo};
 
     // ---- inspect the textures (binds them: from here on the guard restores)
-    gl.ActiveTexture(GL_TEXTURE0 + SSAO_UNIT_DEPTH);
-    gl.BindTexture(GL_TEXTURE_2D, in.depth_texture);
+    if (!bind_2d(gl, SSAO_UNIT_DEPTH, in.depth_texture))
+        return ctx.fail(SSAO_ERROR_INVALID_TEXTURE, "inputs.depth_texture is not a GL_TEXTURE_2D (it did not bind)");
     int dw = 0, dh = 0;
     level0_size(gl, dw, dh);
     DepthFormat fmt;
@@ -194,22 +220,27 @@ ssao_status execute(ssao_context& ctx, const ssao_inputs& in, ssao_output* out) 
                         "inputs.depth_texture has " + std::to_string(fmt.bits) + (fmt.is_float ? "-bit float" : "-bit") +
                             " depth; D16, D24, D24S8, D32F or D32FS8 is required");
     if (fmt.has_stencil) {
-        guard.save_depth_stencil_mode(in.depth_texture);
+        guard.save_depth_stencil_mode(in.depth_texture, SSAO_UNIT_DEPTH);
         if (ctx.caps.depth_stencil_mode)
             gl.TexParameteri(GL_TEXTURE_2D, GL_DEPTH_STENCIL_TEXTURE_MODE, GL_DEPTH_COMPONENT);
     }
-    gl.ActiveTexture(GL_TEXTURE0 + SSAO_UNIT_NORMAL);
-    gl.BindTexture(GL_TEXTURE_2D, in.normal_texture);
+    if (!bind_2d(gl, SSAO_UNIT_NORMAL, in.normal_texture))
+        return ctx.fail(SSAO_ERROR_INVALID_TEXTURE, "inputs.normal_texture is not a GL_TEXTURE_2D (it did not bind)");
     int nw = 0, nh = 0;
     level0_size(gl, nw, nh);
-    GLint red_bits = 0;
+    GLint red_bits = 0, blue_bits = 0, red_type = 0;
     gl.GetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_RED_SIZE, &red_bits);
+    gl.GetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_BLUE_SIZE, &blue_bits);
+    gl.GetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_RED_TYPE, &red_type);
     if (nw != dw || nh != dh)
         return ctx.fail(SSAO_ERROR_INVALID_TEXTURE, "inputs.normal_texture is " + std::to_string(nw) + "x" +
                                                         std::to_string(nh) + " but the depth texture is " +
                                                         std::to_string(dw) + "x" + std::to_string(dh));
-    if (red_bits <= 0)
-        return ctx.fail(SSAO_ERROR_UNSUPPORTED_FORMAT, "inputs.normal_texture has no colour channels");
+    if (red_bits <= 0 || blue_bits <= 0)
+        return ctx.fail(SSAO_ERROR_UNSUPPORTED_FORMAT, "inputs.normal_texture needs three colour channels (x, y, z)");
+    if (red_type == GL_INT || red_type == GL_UNSIGNED_INT)
+        return ctx.fail(SSAO_ERROR_UNSUPPORTED_FORMAT,
+                        "inputs.normal_texture has an integer format; a float, unorm or snorm one is needed");
 
     int vx = in.viewport[0], vy = in.viewport[1], vw = in.viewport[2], vh = in.viewport[3];
     if (vx == 0 && vy == 0 && vw == 0 && vh == 0) { vw = dw; vh = dh; }
@@ -221,14 +252,20 @@ ssao_status execute(ssao_context& ctx, const ssao_inputs& in, ssao_output* out) 
                                                      std::to_string(dh) + " input textures");
 
     Target final_target;
+    gl.BindFramebuffer(GL_FRAMEBUFFER, ctx.fbo);
     if (in.output_texture != 0) {
-        gl.ActiveTexture(GL_TEXTURE0 + SSAO_UNIT_AO);
-        gl.BindTexture(GL_TEXTURE_2D, in.output_texture);
+        if (!bind_2d(gl, SSAO_UNIT_AO, in.output_texture))
+            return ctx.fail(SSAO_ERROR_INVALID_TEXTURE, "inputs.output_texture is not a GL_TEXTURE_2D (it did not bind)");
         int ow = 0, oh = 0;
         level0_size(gl, ow, oh);
         if (ow < vx + vw || oh < vy + vh)
             return ctx.fail(SSAO_ERROR_INVALID_SIZE, "inputs.output_texture (" + std::to_string(ow) + "x" +
                                                          std::to_string(oh) + ") does not contain the viewport");
+        // Checked before anything of the library's changes: a refused call
+        // leaves the library's own output as it was.
+        gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, in.output_texture, 0);
+        if (gl.CheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+            return ctx.fail(SSAO_ERROR_UNSUPPORTED_FORMAT, "inputs.output_texture is not colour-renderable");
         final_target = {in.output_texture, vx, vy};
     }
 
@@ -258,13 +295,9 @@ ssao_status execute(ssao_context& ctx, const ssao_inputs& in, ssao_output* out) 
     }
     if (ctx.kernel_dirty) upload_kernel(ctx);
 
-    gl.BindFramebuffer(GL_FRAMEBUFFER, ctx.fbo);
     gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, final_target.texture, 0);
-    const GLenum fb = gl.CheckFramebufferStatus(GL_FRAMEBUFFER);
-    if (fb != GL_FRAMEBUFFER_COMPLETE)
-        return ctx.fail(in.output_texture != 0 ? SSAO_ERROR_UNSUPPORTED_FORMAT : SSAO_ERROR_FRAMEBUFFER,
-                        in.output_texture != 0 ? "inputs.output_texture is not colour-renderable"
-                                               : "the library's output framebuffer is incomplete");
+    if (in.output_texture == 0 && gl.CheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+        return ctx.fail(SSAO_ERROR_FRAMEBUFFER, "the library's output framebuffer is incomplete");
 
     // ---- frame constants
     SsaoFrame frame{};
@@ -326,7 +359,7 @@ ssao_status execute(ssao_context& ctx, const ssao_inputs& in, ssao_output* out) 
         stamp(ctx, slot, 1);
         if (blur) {
             gl.BindTexture(GL_TEXTURE_2D, ctx.temp[0]);
-            gl.UseProgram(ctx.program_blur);
+            gl.UseProgram(ctx.program_blur);  // for u_blur_dir; draw() binds it too
             gl.Uniform2i(ctx.blur_dir_location, 1, 0);
             draw(ctx, ctx.program_blur, ctx.blur_uniforms, separable_blur ? temp1 : final_target, vw, vh);
             passes |= SSAO_PASS_BLUR_X;
@@ -340,7 +373,6 @@ ssao_status execute(ssao_context& ctx, const ssao_inputs& in, ssao_output* out) 
     }
     stamp(ctx, slot, 2);
     if (slot >= 0) ctx.query_frame[slot] = ctx.frame;
-    gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, 0, 0);
 
     ctx.info.size = sizeof(ssao_frame_info);
     ctx.info.orthographic = proj.orthographic;

@@ -116,7 +116,10 @@ void main() {
             if (abs(qn) > 1e-3 * length(Q)) sn = Q * (plane / qn);
         }
         float bias = u_ao.y + u_ao.z * (step_p + depth_step(Qw, sd));
-        float range = smoothstep(0.0, 1.0, radius / abs(P.z - Q.z));
+        // The chapter's range check smoothstep(0, 1, radius / |dz|), which is 1
+        // for |dz| <= radius: written so that dz = 0 divides nothing.
+        float dz = abs(P.z - Q.z);
+        float range = dz <= radius ? 1.0 : smoothstep(0.0, 1.0, radius / dz);
         occlusion += (Q.z >= sn.z + bias ? 1.0 : 0.0) * range;
     }
     float o = valid > 0.0 ? occlusion / valid : 0.0;

@@ -25,8 +25,6 @@ vec4 view_position_w(ivec2 px, float d) {
     return vec4(v.xyz / v.w, v.w);
 }
 
-vec3 view_position(ivec2 px, float d) { return view_position_w(px, d).xyz; }
-
 // View-space z change for one step of the depth format at depth d, from the
 // point p = view_position_w(px, d): |dz/d(ndc)| * d(ndc)/d(depth) * step.
 // Analytic: with v = inv_proj * ndc, z = v.z / v.w and

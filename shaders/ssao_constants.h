@@ -57,8 +57,9 @@ SSAO_BLOCK(SsaoFrame) {
     SSAO_MAT4 u_inv_proj;      /* clip -> view (computed in double, stored as float) */
     SSAO_MAT4 u_normal_to_view;/* world -> view rotation for world-space normals (identity else) */
     SSAO_IVEC4 u_viewport;     /* x, y, w, h of the inputs */
-    SSAO_IVEC4 u_reserved;     /* keeps the layout std140-aligned; unused */
-    SSAO_IVEC4 u_modes;        /* kernel shape, rotation, normal space, normal packing */
+    SSAO_IVEC4 u_reserved;     /* unused; room for a later version without changing the layout */
+    SSAO_IVEC4 u_modes;        /* kernel shape (informative: the kernel itself carries it), rotation,
+                                  normal space, normal packing */
     SSAO_IVEC4 u_counts;       /* sample count, seed, blur radius, blur kind */
     SSAO_VEC4 u_ao;            /* radius, bias, depth-step bias, strength */
     SSAO_VEC4 u_ao2;           /* power, blur sigma, blur depth tolerance, ndc-per-depth (1 or 2) */

@@ -50,18 +50,28 @@
  *   changes: draw and read framebuffer bindings, current program, vertex array
  *   binding, active texture unit and the 2D texture and sampler bindings of
  *   every unit it uses (units 0..SSAO_TEXTURE_UNITS_USED-1), array, uniform and
- *   pixel-unpack buffer bindings (and the indexed uniform binding it uses),
- *   viewport, scissor box, enables (scissor, depth, stencil, blend per draw
- *   buffer, cull face, rasterizer discard, polygon offset, colour logic op,
- *   sample mask, dither, framebuffer sRGB, multisample, clip distances),
- *   polygon mode, colour/depth/stencil write masks, clip control (where
- *   supported), the depth-stencil texture mode of a D24S8/D32FS8 input
- *   (GL 4.3+) and the unpack pixel-store parameters.
+ *   pixel-unpack buffer bindings (and the indexed uniform bindings 0 and 1),
+ *   viewport and scissor box (every index of a GL 4.1 viewport array), enables
+ *   (scissor, depth, stencil, blend per draw buffer, cull face, rasterizer
+ *   discard, polygon offset, colour logic op, sample mask, dither, framebuffer
+ *   sRGB, multisample, alpha-to-coverage, clip distances 0-7), polygon mode,
+ *   colour/depth/stencil write masks, clip control (where supported), the
+ *   depth-stencil texture mode of a D24S8/D32FS8 input (GL 4.3+) and the
+ *   unpack pixel-store parameters.
  * - It assumes, and does not save: the texture parameters of the host's
  *   textures other than the depth-stencil mode (it reads them with texelFetch
  *   through its own sampler objects, so filters, wrap and compare modes do not
- *   matter; base level 0 and no swizzle are assumed), and it never calls
- *   glGetError (so the host's pending errors stay the host's).
+ *   matter; base level 0 and no swizzle are assumed); that no transform
+ *   feedback, conditional render or occlusion/primitive query is active (GL
+ *   would refuse, skip or count its draws). A current program the host already
+ *   flagged for deletion is deleted when execute binds its own; the guard then
+ *   leaves program 0 current. It never calls glGetError (so the host's pending
+ *   errors stay the host's, and a GL allocation failure cannot be reported as
+ *   OUT_OF_MEMORY).
+ * - Below GL 4.5 a texture name of another target (a 2D array, say) cannot be
+ *   told from a 2D texture without binding it: the failed bind raises
+ *   GL_INVALID_OPERATION, which the host's debug output will see, and execute
+ *   returns SSAO_ERROR_INVALID_TEXTURE.
  * - Requirements: a GL 3.3 core context or newer. Clip control (4.5 or
  *   ARB_clip_control), timer queries and GL_TEXTURE_TARGET queries (4.5) are
  *   used when present.
@@ -118,7 +128,8 @@ typedef enum ssao_status {
      * GL_TEXTURE_2D, or the depth and normal textures differ in size. */
     SSAO_ERROR_INVALID_TEXTURE = 7,
     /* The depth texture's internal format is not D16, D24, D24S8, D32F or
-     * D32FS8, or the output texture is not colour-renderable. */
+     * D32FS8, the normal texture has fewer than three channels or an integer
+     * format, or the output texture is not colour-renderable. */
     SSAO_ERROR_UNSUPPORTED_FORMAT = 8,
     /* The projection matrix is singular or not a projection (for example all
      * zeros, or w does not depend on view z the way a perspective or an
@@ -138,7 +149,8 @@ typedef enum ssao_status {
     /* Memory could not be allocated. */
     SSAO_ERROR_OUT_OF_MEMORY = 14,
     /* A bug in the library; last_error says where. */
-    SSAO_ERROR_INTERNAL = 15
+    SSAO_ERROR_INTERNAL = 15,
+    SSAO_STATUS_MAX_ENUM = 0x7fffffff  /* not a value: keeps the enum 32 bits wide */
 } ssao_status;
 
 /* --------------------------------------------------------------- settings */
@@ -146,20 +158,23 @@ typedef enum ssao_kernel_shape {
     SSAO_KERNEL_DEFAULT = 0,      /* = SSAO_KERNEL_HEMISPHERE */
     SSAO_KERNEL_HEMISPHERE = 1,   /* normal-oriented hemisphere (the chapter's) */
     SSAO_KERNEL_SPHERE = 2,       /* full sphere, normals only rotate it (Crytek look: flat = 0.5) */
-    SSAO_KERNEL_SEPARABLE = 3     /* two tangent planes (x-z and y-z), half the samples each (student report) */
+    SSAO_KERNEL_SEPARABLE = 3, /* two tangent planes (x-z and y-z), half the samples each (student report) */
+    SSAO_KERNEL_MAX_ENUM = 0x7fffffff  /* not a value: keeps the enum 32 bits wide */
 } ssao_kernel_shape;
 
 typedef enum ssao_kernel_distribution {
     SSAO_DISTRIBUTION_DEFAULT = 0,      /* = SSAO_DISTRIBUTION_ACCELERATING */
     SSAO_DISTRIBUTION_ACCELERATING = 1, /* length scaled by lerp(0.1, 1, (i/N)^2): denser near the centre */
-    SSAO_DISTRIBUTION_UNIFORM = 2       /* uniform in the (hemi)sphere's volume */
+    SSAO_DISTRIBUTION_UNIFORM = 2, /* uniform in the (hemi)sphere's volume */
+    SSAO_DISTRIBUTION_MAX_ENUM = 0x7fffffff  /* not a value: keeps the enum 32 bits wide */
 } ssao_kernel_distribution;
 
 typedef enum ssao_rotation {
     SSAO_ROTATION_DEFAULT = 0,  /* = SSAO_ROTATION_NOISE_4X4 */
     SSAO_ROTATION_NOISE_4X4 = 1,/* 4x4 tiled noise texture, tiled per viewport pixel */
     SSAO_ROTATION_HASH = 2,     /* per-pixel hash of the pixel position and seed */
-    SSAO_ROTATION_NONE = 3      /* no rotation: every pixel uses the same kernel (banding) */
+    SSAO_ROTATION_NONE = 3, /* no rotation: every pixel uses the same kernel (banding) */
+    SSAO_ROTATION_MAX_ENUM = 0x7fffffff  /* not a value: keeps the enum 32 bits wide */
 } ssao_rotation;
 
 typedef enum ssao_blur {
@@ -167,13 +182,15 @@ typedef enum ssao_blur {
     SSAO_BLUR_DEPTH_AWARE = 1,  /* separable gaussian whose taps beyond blur_depth_tolerance are dropped */
     SSAO_BLUR_BOX_4X4 = 2,      /* the chapter's 4x4 box (offsets -2..1), ignores depth */
     SSAO_BLUR_GAUSSIAN = 3,     /* separable gaussian of blur_sigma over blur_radius, ignores depth */
-    SSAO_BLUR_NONE = 4          /* no blur pass runs */
+    SSAO_BLUR_NONE = 4, /* no blur pass runs */
+    SSAO_BLUR_MAX_ENUM = 0x7fffffff  /* not a value: keeps the enum 32 bits wide */
 } ssao_blur;
 
 typedef enum ssao_output_format {
     SSAO_OUTPUT_DEFAULT = 0,    /* = SSAO_OUTPUT_R8 */
     SSAO_OUTPUT_R8 = 1,
-    SSAO_OUTPUT_R16F = 2
+    SSAO_OUTPUT_R16F = 2,
+    SSAO_OUTPUT_MAX_ENUM = 0x7fffffff  /* not a value: keeps the enum 32 bits wide */
 } ssao_output_format;
 
 /* strength is a multiplier in which 0 is meaningful (no AO at all). Because a
@@ -184,11 +201,12 @@ typedef struct ssao_settings {
     uint32_t size;               /* sizeof(ssao_settings) */
     uint32_t sample_count;       /* kernel samples, 1..64; default 16 */
     float radius;                /* sampling radius, view-space units, > 0; default 0.5 */
-    float bias;                  /* depth bias, view-space units, >= 0; default 0.025 * radius.
+    float bias;                  /* depth bias, view-space units, > 0; default 0.025 * radius
+                                    (for no constant bias give a tiny value such as 1e-30).
                                     A bias proportional to the depth buffer's step at each
                                     pixel (depth_step_bias) is always added. */
     float depth_step_bias;       /* multiple of the depth format's step at the pixel's depth,
-                                    [0, 1e6]; default 2 */
+                                    (0, 1e6]; default 2 */
     float power;                 /* exponent applied to the result, (0, 16]; default 1 */
     float strength;              /* occlusion multiplier, [0, 8]; default 1.
                                     ao = pow(1 - strength * occlusion, power), clamped to [0,1].
@@ -215,26 +233,30 @@ typedef enum ssao_preset {
     SSAO_PRESET_LOW = 1,        /* 4 samples, uniform, no blur */
     SSAO_PRESET_MEDIUM = 2,     /* 4 samples, uniform, 4x4 box blur */
     SSAO_PRESET_HIGH = 3,       /* 32 samples, uniform, no blur */
-    SSAO_PRESET_ULTRA = 4       /* 64 samples, uniform, no blur */
+    SSAO_PRESET_ULTRA = 4, /* 64 samples, uniform, no blur */
+    SSAO_PRESET_MAX_ENUM = 0x7fffffff  /* not a value: keeps the enum 32 bits wide */
 } ssao_preset;
 
 /* ----------------------------------------------------------------- inputs */
 typedef enum ssao_clip_range {
     SSAO_CLIP_DEFAULT = 0,            /* = SSAO_CLIP_NEGATIVE_ONE_TO_ONE */
     SSAO_CLIP_NEGATIVE_ONE_TO_ONE = 1,/* GL's default: depth = ndc_z * 0.5 + 0.5 */
-    SSAO_CLIP_ZERO_TO_ONE = 2         /* glClipControl(..., GL_ZERO_TO_ONE): depth = ndc_z */
+    SSAO_CLIP_ZERO_TO_ONE = 2, /* glClipControl(..., GL_ZERO_TO_ONE): depth = ndc_z */
+    SSAO_CLIP_MAX_ENUM = 0x7fffffff  /* not a value: keeps the enum 32 bits wide */
 } ssao_clip_range;
 
 typedef enum ssao_normal_space {
     SSAO_NORMAL_SPACE_DEFAULT = 0,    /* = SSAO_NORMAL_SPACE_VIEW */
     SSAO_NORMAL_SPACE_VIEW = 1,
-    SSAO_NORMAL_SPACE_WORLD = 2       /* rotated into view space with ssao_inputs.view_matrix */
+    SSAO_NORMAL_SPACE_WORLD = 2, /* rotated into view space with ssao_inputs.view_matrix */
+    SSAO_NORMAL_SPACE_MAX_ENUM = 0x7fffffff  /* not a value: keeps the enum 32 bits wide */
 } ssao_normal_space;
 
 typedef enum ssao_normal_packing {
     SSAO_NORMAL_PACKING_DEFAULT = 0,  /* = SSAO_NORMAL_PACKING_UNORM */
     SSAO_NORMAL_PACKING_UNORM = 1,    /* stored as n * 0.5 + 0.5 in [0,1] (RGB8, RGBA8, RGB10A2, ...) */
-    SSAO_NORMAL_PACKING_SIGNED = 2    /* stored as is (RGB16F, RGBA16F, RGB32F, RGB8_SNORM, ...) */
+    SSAO_NORMAL_PACKING_SIGNED = 2, /* stored as is (RGB16F, RGBA16F, RGB32F, RGB8_SNORM, ...) */
+    SSAO_NORMAL_PACKING_MAX_ENUM = 0x7fffffff  /* not a value: keeps the enum 32 bits wide */
 } ssao_normal_packing;
 
 typedef struct ssao_inputs {
@@ -256,8 +278,9 @@ typedef struct ssao_inputs {
     uint32_t output_texture;     /* 0: the library renders into its own texture (format from
                                     settings.output_format, viewport-sized, texel (0,0) =
                                     viewport pixel (x,y)) and returns it in ssao_output.
-                                    Otherwise a colour-renderable GL_TEXTURE_2D of the host's,
-                                    written at the same viewport rectangle (red channel = AO). */
+                                    Otherwise a colour-renderable GL_TEXTURE_2D of the host's
+                                    (not an input), written at the same viewport rectangle: every
+                                    channel there is overwritten, red = green = blue = AO, alpha = 1. */
 } ssao_inputs;
 
 typedef struct ssao_output {
@@ -271,7 +294,8 @@ typedef enum ssao_pass {
     SSAO_PASS_AO = 1,            /* the sampling pass */
     SSAO_PASS_BLUR_X = 2,        /* horizontal blur (or the box blur's single pass) */
     SSAO_PASS_BLUR_Y = 4,        /* vertical blur */
-    SSAO_PASS_CLEAR = 8          /* strength 0: output cleared to 1, nothing sampled */
+    SSAO_PASS_CLEAR = 8, /* strength 0: output cleared to 1, nothing sampled */
+    SSAO_PASS_MAX_ENUM = 0x7fffffff  /* not a value: keeps the enum 32 bits wide */
 } ssao_pass;
 
 /* GPU times of one earlier frame, from timestamp queries read without
@@ -280,7 +304,7 @@ typedef enum ssao_pass {
 typedef struct ssao_timings {
     uint32_t size;               /* sizeof(ssao_timings) */
     uint32_t available;          /* 1 when the fields below hold a measured frame */
-    uint64_t frame;              /* which execute (1 = first) they were measured on */
+    uint64_t frame;              /* which successful execute (1 = first) they were measured on */
     double ao_ms;                /* sampling pass (or clear) */
     double blur_ms;              /* all blur passes */
     double total_ms;             /* whole execute on the GPU */
@@ -304,7 +328,8 @@ typedef ssao_gl_proc (SSAO_CALL *ssao_get_proc_address_fn)(void* user, const cha
 typedef enum ssao_log_level {
     SSAO_LOG_INFO = 0,
     SSAO_LOG_WARNING = 1,
-    SSAO_LOG_ERROR = 2
+    SSAO_LOG_ERROR = 2,
+    SSAO_LOG_MAX_ENUM = 0x7fffffff  /* not a value: keeps the enum 32 bits wide */
 } ssao_log_level;
 typedef void (SSAO_CALL *ssao_log_fn)(void* user, ssao_log_level level, const char* message);
 
@@ -339,7 +364,7 @@ typedef struct ssao_api {
     /* Loads GL through desc->get_proc_address, compiles the shaders and makes
      * the GL objects. A GL context must be current. *out is NULL on failure.
      * Returns OK, NULL_POINTER, STRUCT_SIZE, INVALID_ENUM, INVALID_VALUE,
-     * GL_VERSION, GL_LOAD, SHADER, OUT_OF_MEMORY. The reason is also sent to
+     * GL_VERSION, GL_LOAD, SHADER, OUT_OF_MEMORY, INTERNAL. The reason is also sent to
      * desc->log, since there is no context to ask. */
     ssao_status (SSAO_CALL *create_context)(const ssao_context_desc* desc, ssao_context** out);
 
@@ -357,7 +382,7 @@ typedef struct ssao_api {
     /* Renders AO for inputs->viewport. `out` may be NULL. Returns OK,
      * NULL_POINTER, STRUCT_SIZE, INVALID_ENUM, INVALID_VALUE, INVALID_SIZE,
      * INVALID_TEXTURE, UNSUPPORTED_FORMAT, INVALID_PROJECTION, FRAMEBUFFER,
-     * OUT_OF_MEMORY. */
+     * OUT_OF_MEMORY, INTERNAL. */
     ssao_status (SSAO_CALL *execute)(ssao_context* ctx, const ssao_inputs* inputs, ssao_output* out);
 
     /* GPU times of the newest frame whose queries have completed, without
@@ -378,10 +403,13 @@ typedef struct ssao_api {
  * STRUCT_SIZE (size smaller than the version-1.0 table), VERSION_MISMATCH. */
 typedef ssao_status (SSAO_CALL *PFN_ssao_get_api)(uint32_t requested_version, ssao_api* api);
 
-#if defined(_WIN32)
+/* Hosts see a plain declaration; the library's build defines SSAO_BUILDING_LIBRARY. */
+#if defined(SSAO_BUILDING_LIBRARY) && defined(_WIN32)
 #  define SSAO_EXPORT __declspec(dllexport)
-#else
+#elif defined(SSAO_BUILDING_LIBRARY)
 #  define SSAO_EXPORT __attribute__((visibility("default")))
+#else
+#  define SSAO_EXPORT
 #endif
 SSAO_EXPORT ssao_status SSAO_CALL ssao_get_api(uint32_t requested_version, ssao_api* api);
 

@@ -53,6 +53,17 @@ inline Snapshot snapshot(GladGLContext& gl, int units = 4) {
     }
     getv("viewport", GL_VIEWPORT, 4);
     getv("scissor_box", GL_SCISSOR_BOX, 4);
+    for (GLuint i = 1; i < 4; ++i) {  // viewport arrays (GL 4.1)
+        GLfloat v[4] = {};
+        GLint b[4] = {};
+        gl.GetFloati_v(GL_VIEWPORT, i, v);
+        gl.GetIntegeri_v(GL_SCISSOR_BOX, i, b);
+        for (int k = 0; k < 4; ++k) {
+            s["viewport" + std::to_string(i) + "[" + std::to_string(k) + "]"] = static_cast<long long>(v[k]);
+            s["scissor_box" + std::to_string(i) + "[" + std::to_string(k) + "]"] = b[k];
+        }
+        s["scissor_test" + std::to_string(i)] = gl.IsEnabledi(GL_SCISSOR_TEST, i);
+    }
     enabled("scissor_test", GL_SCISSOR_TEST);
     enabled("depth_test", GL_DEPTH_TEST);
     enabled("stencil_test", GL_STENCIL_TEST);

@@ -190,6 +190,11 @@ void disturb_state(GladGLContext& gl, GLuint host_fbo, GLuint host_vao, GLuint h
     gl.Viewport(3, 5, 17, 19);
     gl.Scissor(1, 2, 3, 4);
     gl.Enable(GL_SCISSOR_TEST);
+    // Viewport arrays: other indices hold their own values.
+    gl.ViewportIndexedf(1, 5, 6, 7, 8);
+    gl.ScissorIndexed(1, 1, 2, 3, 4);
+    gl.Disablei(GL_SCISSOR_TEST, 1);
+    gl.ViewportIndexedf(3, 9, 10, 11, 12);
     gl.Enable(GL_DEPTH_TEST);
     gl.Enable(GL_STENCIL_TEST);
     gl.Enable(GL_CULL_FACE);
@@ -321,5 +326,76 @@ TEST_CASE("GPU timings arrive from earlier frames without stalling") {
     CHECK(t.ao_ms > 0.0);
     CHECK(t.total_ms >= t.ao_ms);
     CHECK(t.total_ms == doctest::Approx(t.ao_ms + t.blur_ms).epsilon(1e-6));
+    CHECK(fx.gl_errors().empty());
+}
+
+TEST_CASE("a refused execute changes nothing: no host texture stays attached, the library's output keeps its AO") {
+    testgl::Fixture fx;
+    auto& gl = fx.gl();
+    const auto proj = analytic::perspective(kFov, 1.0, 0.1, 100.0);
+    const GBuffer g = analytic::render(crease_scene(), proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, 32, 32);
+    fx.settings(make(16, SSAO_BLUR_DEFAULT));
+    const auto first = fx.run(g, proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE);
+    REQUIRE(first.status == SSAO_OK);
+
+    // RGB9_E5 is not colour-renderable: the call is refused after the output was attached to look at it.
+    GLuint bad = 0;
+    gl.GenTextures(1, &bad);
+    gl.BindTexture(GL_TEXTURE_2D, bad);
+    gl.TexImage2D(GL_TEXTURE_2D, 0, GL_RGB9_E5, 32, 32, 0, GL_RGB, GL_FLOAT, nullptr);
+    const GLuint depth = fx.make_depth(GL_DEPTH_COMPONENT32F, 32, 32, g.depth);
+    const GLuint normal = fx.make_normals(GL_RGBA16F, 32, 32, g.normal);
+    ssao_inputs in = fx.inputs(depth, normal, proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE);
+    in.output_texture = bad;
+    CHECK(fx.api().execute(fx.ctx(), &in, nullptr) == SSAO_ERROR_UNSUPPORTED_FORMAT);
+    // No framebuffer of the library's (any name that is one) still holds the host's texture.
+    for (GLuint name = 1; name < 64; ++name) {
+        if (!gl.IsFramebuffer(name)) continue;
+        gl.BindFramebuffer(GL_FRAMEBUFFER, name);
+        GLint attached = 0;
+        gl.GetFramebufferAttachmentParameteriv(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0,
+                                               GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME, &attached);
+        CAPTURE(name);
+        CHECK(static_cast<GLuint>(attached) != bad);
+    }
+    gl.BindFramebuffer(GL_FRAMEBUFFER, 0);
+    // The texture the library returned before still holds that frame's AO.
+    const auto again = fx.read_red(first.output.texture, 32, 32);
+    for (size_t i = 0; i < again.size(); ++i) CHECK(again[i] == first.ao[i]);
+
+    // Rendering into an input is a feedback loop: refused.
+    in.output_texture = normal;
+    CHECK(fx.api().execute(fx.ctx(), &in, nullptr) == SSAO_ERROR_INVALID_TEXTURE);
+    // Normals need x, y and z, in a float or normalized format.
+    GLuint rg = 0, integer = 0;
+    gl.GenTextures(1, &rg);
+    gl.BindTexture(GL_TEXTURE_2D, rg);
+    gl.TexImage2D(GL_TEXTURE_2D, 0, GL_RG16F, 32, 32, 0, GL_RG, GL_FLOAT, nullptr);
+    gl.GenTextures(1, &integer);
+    gl.BindTexture(GL_TEXTURE_2D, integer);
+    gl.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32I, 32, 32, 0, GL_RGBA_INTEGER, GL_INT, nullptr);
+    in.output_texture = 0;
+    in.normal_texture = rg;
+    CHECK(fx.api().execute(fx.ctx(), &in, nullptr) == SSAO_ERROR_UNSUPPORTED_FORMAT);
+    in.normal_texture = integer;
+    CHECK(fx.api().execute(fx.ctx(), &in, nullptr) == SSAO_ERROR_UNSUPPORTED_FORMAT);
+    CHECK(std::string(fx.api().last_error(fx.ctx())).find("integer") != std::string::npos);
+    const GLuint names[] = {bad, rg, integer};
+    gl.DeleteTextures(3, names);
+    CHECK(fx.gl_errors().empty());
+}
+
+TEST_CASE("a host program flagged for deletion while current does not make the restore raise an error") {
+    testgl::Fixture fx;
+    auto& gl = fx.gl();
+    const auto proj = analytic::perspective(kFov, 1.0, 0.1, 100.0);
+    const GBuffer g = analytic::render(crease_scene(), proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, 16, 16);
+    const GLuint program = link_trivial_program(gl);
+    gl.UseProgram(program);
+    gl.DeleteProgram(program);  // flagged: deleted once another program is made current
+    REQUIRE(fx.run(g, proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE).status == SSAO_OK);
+    GLint current = -1;
+    gl.GetIntegerv(GL_CURRENT_PROGRAM, &current);
+    CHECK(current == 0);  // it no longer exists; the documented fallback
     CHECK(fx.gl_errors().empty());
 }

@@ -56,3 +56,27 @@ TEST_CASE("a GL 3.3 core context works: AO from D24S8 depth matches the CPU form
     CHECK(lo < 0.9f);  // the crease is there
     CHECK(fx.gl_errors().empty());
 }
+
+TEST_CASE("below GL 4.5 a texture of another target is refused (INVALID_TEXTURE) and the host's binding kept") {
+    setenv("MESA_GL_VERSION_OVERRIDE", "3.3", 1);
+    testgl::Fixture fx(3, 3);
+    auto& gl = fx.gl();
+    const auto proj = analytic::perspective(kFov, 1.0, 0.1, 100.0);
+    const GBuffer g = analytic::render(crease_scene(), proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, 16, 16);
+    const GLuint depth = fx.make_depth(GL_DEPTH_COMPONENT32F, 16, 16, g.depth);
+    const GLuint normal = fx.make_normals(GL_RGBA16F, 16, 16, g.normal);
+    GLuint array = 0;
+    gl.GenTextures(1, &array);
+    gl.BindTexture(GL_TEXTURE_2D_ARRAY, array);
+    gl.TexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_DEPTH_COMPONENT32F, 16, 16, 2, 0, GL_DEPTH_COMPONENT, GL_FLOAT, nullptr);
+    gl.ActiveTexture(GL_TEXTURE0);
+    gl.BindTexture(GL_TEXTURE_2D, depth);  // the host's texture on unit 0
+    ssao_inputs in = fx.inputs(array, normal, proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE);
+    CHECK(fx.api().execute(fx.ctx(), &in, nullptr) == SSAO_ERROR_INVALID_TEXTURE);
+    GLint bound = 0;
+    gl.GetIntegerv(GL_TEXTURE_BINDING_2D, &bound);
+    CHECK(static_cast<GLuint>(bound) == depth);
+    // GL itself reports the failed bind (documented): exactly that one error.
+    CHECK(fx.gl_errors().size() == 1);
+    gl.DeleteTextures(1, &array);
+}
