@@ -146,7 +146,7 @@ bool parse(int argc, char** argv, Options& o, std::string& error) {
                 "  --reference-samples N  rays per pixel of the ground truth (default 512)\n"
                 "  --out DIR              where results go (default bench-out)\n"
                 "  --quick                fewer frames and rays, base resolution only\n"
-                "Scenes default to the bundled spot and teapot models.\n");
+                "Scenes default to the bundled spot and teapot models and assets/scenes/corner.gltf.\n");
             std::exit(0);
         } else if (a == "--width") { if (!number(o.width, 8, 4096)) return false; }
         else if (a == "--height") { if (!number(o.height, 8, 4096)) return false; }
@@ -160,7 +160,8 @@ bool parse(int argc, char** argv, Options& o, std::string& error) {
     }
     if (o.scenes.empty()) {
         o.scenes = {std::string(SSAO_SOURCE_DIR) + "/assets/models/spot-on-ground.glb",
-                    std::string(SSAO_SOURCE_DIR) + "/assets/models/teapot-on-ground.glb"};
+                    std::string(SSAO_SOURCE_DIR) + "/assets/models/teapot-on-ground.glb",
+                    std::string(SSAO_SOURCE_DIR) + "/assets/scenes/corner.gltf"};
     }
     return true;
 }

@@ -306,21 +306,22 @@ TEST_CASE("settings: every preset resolves to the documented table") {
     // The table in ssao.h and the README (chosen by ssao-bench).
     CHECK(low.sample_count == 4u);
     CHECK(low.blur == SSAO_BLUR_NONE);
+    CHECK(low.distribution == SSAO_DISTRIBUTION_ACCELERATING);
     CHECK(medium.sample_count == 4u);
     CHECK(medium.blur == SSAO_BLUR_BOX_4X4);
-    CHECK(high.sample_count == 32u);
-    CHECK(high.blur == SSAO_BLUR_NONE);
+    CHECK(high.sample_count == 16u);
+    CHECK(high.blur == SSAO_BLUR_BOX_4X4);
     CHECK(ultra.sample_count == 64u);
-    CHECK(ultra.blur == SSAO_BLUR_NONE);
+    CHECK(ultra.blur == SSAO_BLUR_DEPTH_AWARE);
     // More samples never cost less: cost grows from LOW to ULTRA.
     CHECK(low.sample_count <= medium.sample_count);
     CHECK(medium.sample_count < high.sample_count);
     CHECK(high.sample_count < ultra.sample_count);
     // Presets change only the cost and accuracy fields; the rest stay defaults.
     const ssao_settings zero = resolve_ok(zeroed());
+    for (const ssao_settings* p : {&medium, &high, &ultra}) CHECK(p->distribution == SSAO_DISTRIBUTION_UNIFORM);
     for (const ssao_settings* p : {&low, &medium, &high, &ultra}) {
         CHECK(p->strength == 1.0f);
-        CHECK(p->distribution == SSAO_DISTRIBUTION_UNIFORM);
         CHECK(p->radius == zero.radius);
         CHECK(p->bias == zero.bias);
         CHECK(p->kernel_shape == zero.kernel_shape);
