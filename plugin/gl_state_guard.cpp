@@ -39,7 +39,6 @@ GlStateGuard::GlStateGuard(const GladGLContext& gl, const GlCaps& caps, GLuint u
     gl.ActiveTexture(static_cast<GLenum>(active_texture_));
     gl.GetIntegerv(GL_ARRAY_BUFFER_BINDING, &array_buffer_);
     gl.GetIntegerv(GL_UNIFORM_BUFFER_BINDING, &uniform_buffer_);
-    gl.GetIntegerv(GL_PIXEL_UNPACK_BUFFER_BINDING, &unpack_buffer_);
     ubo_index_[0] = uniform_binding_a;
     ubo_index_[1] = uniform_binding_b;
     for (int i = 0; i < 2; ++i) {
@@ -82,7 +81,13 @@ GlStateGuard::GlStateGuard(const GladGLContext& gl, const GlCaps& caps, GLuint u
         gl.GetIntegerv(GL_CLIP_ORIGIN, &clip_origin_);
         gl.GetIntegerv(GL_CLIP_DEPTH_MODE, &clip_depth_mode_);
     }
-    for (int i = 0; i < 8; ++i) gl.GetIntegerv(kUnpackParams[i], &unpack_[i]);
+}
+
+void GlStateGuard::save_unpack_state() {
+    if (unpack_saved_) return;
+    unpack_saved_ = true;
+    gl_.GetIntegerv(GL_PIXEL_UNPACK_BUFFER_BINDING, &unpack_buffer_);
+    for (int i = 0; i < 8; ++i) gl_.GetIntegerv(kUnpackParams[i], &unpack_[i]);
 }
 
 void GlStateGuard::save_depth_stencil_mode(GLuint texture, GLuint unit) {
@@ -120,7 +125,10 @@ GlStateGuard::~GlStateGuard() {
     }
     gl.BindBuffer(GL_UNIFORM_BUFFER, static_cast<GLuint>(uniform_buffer_));
     gl.BindBuffer(GL_ARRAY_BUFFER, static_cast<GLuint>(array_buffer_));
-    gl.BindBuffer(GL_PIXEL_UNPACK_BUFFER, static_cast<GLuint>(unpack_buffer_));
+    if (unpack_saved_) {
+        gl.BindBuffer(GL_PIXEL_UNPACK_BUFFER, static_cast<GLuint>(unpack_buffer_));
+        for (int i = 0; i < 8; ++i) gl.PixelStorei(kUnpackParams[i], unpack_[i]);
+    }
     // Index 0 through the plain calls (which also set every other index),
     // then the other indices of a viewport array.
     gl.Viewport(viewport_[0], viewport_[1], viewport_[2], viewport_[3]);
@@ -164,7 +172,6 @@ GlStateGuard::~GlStateGuard() {
     gl.StencilMaskSeparate(GL_BACK, static_cast<GLuint>(stencil_mask_back_));
     if (caps_.clip_control)
         gl.ClipControl(static_cast<GLenum>(clip_origin_), static_cast<GLenum>(clip_depth_mode_));
-    for (int i = 0; i < 8; ++i) gl.PixelStorei(kUnpackParams[i], unpack_[i]);
 }
 
 void set_pass_state(const GladGLContext& gl, const GlCaps& caps) {

@@ -28,6 +28,11 @@ public:
     // bound to GL_TEXTURE_2D on texture unit `unit` (the active one) when called.
     void save_depth_stencil_mode(GLuint texture, GLuint unit);
 
+    // Save the pixel-unpack buffer binding and unpack pixel store, before an
+    // upload or (re)allocation changes them: frames that upload nothing do
+    // not query them at all.
+    void save_unpack_state();
+
 private:
     static constexpr int kUnits = 4;
     static constexpr int kMaxBuffers = 16;
@@ -57,6 +62,7 @@ private:
     GLint stencil_mask_front_ = 0, stencil_mask_back_ = 0;
     GLint clip_origin_ = 0, clip_depth_mode_ = 0;
     GLint unpack_[8] = {};
+    bool unpack_saved_ = false;
     GLuint ds_texture_ = 0, ds_unit_ = 0;
     GLint ds_mode_ = 0;
 };

@@ -269,34 +269,39 @@ ssao_status execute(ssao_context& ctx, const ssao_inputs& in, ssao_output* out) 
         final_target = {in.output_texture, vx, vy};
     }
 
-    // ---- resources: (re)allocate only on change
-    reset_unpack(gl);
-    gl.ActiveTexture(GL_TEXTURE0 + SSAO_UNIT_AO);
+    // ---- resources: (re)allocate only on change; only then are the unpack
+    // state and our framebuffer's completeness looked at
     const bool strength_off = s.strength == SSAO_STRENGTH_OFF;
     const bool blur = !strength_off && s.blur != SSAO_BLUR_NONE;
     const bool separable_blur = blur && s.blur != SSAO_BLUR_BOX_4X4;
-    if (blur && (ctx.temp_width != vw || ctx.temp_height != vh || ctx.temp[0] == 0)) {
+    const bool temp_stale = blur && (ctx.temp_width != vw || ctx.temp_height != vh || ctx.temp[0] == 0);
+    const bool output_stale = in.output_texture == 0 && (ctx.output == 0 || ctx.output_width != vw ||
+                                                         ctx.output_height != vh || ctx.output_format != s.output_format);
+    if (temp_stale || output_stale || ctx.kernel_dirty) {
+        guard.save_unpack_state();
+        reset_unpack(gl);
+    }
+    gl.ActiveTexture(GL_TEXTURE0 + SSAO_UNIT_AO);
+    if (temp_stale) {
         allocate(gl, ctx.temp[0], GL_RG32F, GL_RG, GL_FLOAT, vw, vh);
         allocate(gl, ctx.temp[1], GL_RG32F, GL_RG, GL_FLOAT, vw, vh);
         ctx.temp_width = vw;
         ctx.temp_height = vh;
     }
-    if (in.output_texture == 0) {
-        if (ctx.output == 0 || ctx.output_width != vw || ctx.output_height != vh || ctx.output_format != s.output_format) {
-            if (s.output_format == SSAO_OUTPUT_R16F)
-                allocate(gl, ctx.output, GL_R16F, GL_RED, GL_FLOAT, vw, vh);
-            else
-                allocate(gl, ctx.output, GL_R8, GL_RED, GL_UNSIGNED_BYTE, vw, vh);
-            ctx.output_width = vw;
-            ctx.output_height = vh;
-            ctx.output_format = s.output_format;
-        }
-        final_target = {ctx.output, 0, 0};
+    if (output_stale) {
+        if (s.output_format == SSAO_OUTPUT_R16F)
+            allocate(gl, ctx.output, GL_R16F, GL_RED, GL_FLOAT, vw, vh);
+        else
+            allocate(gl, ctx.output, GL_R8, GL_RED, GL_UNSIGNED_BYTE, vw, vh);
+        ctx.output_width = vw;
+        ctx.output_height = vh;
+        ctx.output_format = s.output_format;
     }
+    if (in.output_texture == 0) final_target = {ctx.output, 0, 0};
     if (ctx.kernel_dirty) upload_kernel(ctx);
 
     gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, final_target.texture, 0);
-    if (in.output_texture == 0 && gl.CheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+    if (output_stale && gl.CheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
         return ctx.fail(SSAO_ERROR_FRAMEBUFFER, "the library's output framebuffer is incomplete");
 
     // ---- frame constants
