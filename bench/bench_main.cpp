@@ -32,10 +32,6 @@
 
 namespace {
 
-// The host's rule for a scene without an AO hint (host/main.cpp): radius =
-// 0.05 x the bounding-box diagonal, so the reference and the plugin agree on R.
-constexpr float kRadiusPerDiagonal = 0.05f;
-
 struct Options {
     std::vector<std::string> scenes;
     int width = 160, height = 120;
@@ -209,8 +205,10 @@ void run_scene(const std::string& path, const Options& o, int scale, const ssao_
     const int w = o.width * scale, h = o.height * scale;
     const float aspect = static_cast<float>(w) / h;
     const camera::Camera cam = camera::choose(sc, aspect);
-    const float diagonal = glm::length(sc.bounds_max - sc.bounds_min);
-    const float radius = sc.hints.radius ? *sc.hints.radius : kRadiusPerDiagonal * diagonal;
+    // The same radius as ssao-host and ssao-reference use, so all agree on R.
+    const auto scene_radius = scene::ao_radius(sc);
+    if (!scene_radius) throw std::runtime_error(path + " has no extent to scale the radius to");
+    const float radius = scene_radius->radius;
     const std::string name = std::filesystem::path(path).stem().string();
 
     // Ground truth.

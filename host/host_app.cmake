@@ -2,15 +2,21 @@
 # dlopen (ssao_egl's plugin::Library); loads scenes through ssao_scene.
 find_package(tinyexr REQUIRED)
 
+# The G-buffer pass and the GL helpers, also used by ssao-bench and the tests.
+add_library(ssao_host_gl STATIC
+  ${CMAKE_CURRENT_LIST_DIR}/gl_util.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/gbuffer.cpp)
+target_include_directories(ssao_host_gl PUBLIC ${CMAKE_CURRENT_LIST_DIR} ${PROJECT_SOURCE_DIR}/include)
+target_link_libraries(ssao_host_gl PUBLIC ssao_glad ssao_scene glm::glm)
+target_compile_options(ssao_host_gl PRIVATE ${SSAO_WARNINGS})
+
 add_executable(ssao-host
   ${CMAKE_CURRENT_LIST_DIR}/main.cpp
   ${CMAKE_CURRENT_LIST_DIR}/cli.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/gl_util.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/gbuffer.cpp
   ${CMAKE_CURRENT_LIST_DIR}/composite.cpp
   ${CMAKE_CURRENT_LIST_DIR}/image_io.cpp)
 target_include_directories(ssao-host PRIVATE ${CMAKE_CURRENT_LIST_DIR})
-target_link_libraries(ssao-host PRIVATE ssao_egl ssao_scene glm::glm tinyexr::tinyexr)
+target_link_libraries(ssao-host PRIVATE ssao_host_gl ssao_egl ssao_scene glm::glm tinyexr::tinyexr)
 # The bundled default scene is found in the source tree.
 target_compile_definitions(ssao-host PRIVATE SSAO_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
 target_compile_options(ssao-host PRIVATE ${SSAO_WARNINGS})

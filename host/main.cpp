@@ -56,15 +56,9 @@ std::string with_commas(size_t n) {
     return s;
 }
 
-float scene_diagonal(const scene::Scene& s) {
-    const float d = glm::length(s.bounds_max - s.bounds_min);
-    return std::isfinite(d) ? d : 0.0f;
-}
-
 // ---------------------------------------------------------------- settings
 // Precedence: flags > scene hints > preset > plugin defaults. The radius is
-// scene-scaled: the scene's hint, else 0.05 x the bounding-box diagonal.
-constexpr float kRadiusPerDiagonal = 0.05f;
+// scene-scaled (scene::ao_radius: the scene's hint, else 0.05 x its diagonal).
 
 ssao_settings build_settings(const ssao_api& api, const cli::Options& o, const scene::Scene& sc, std::string& radius_note) {
     ssao_settings s{};
@@ -78,15 +72,11 @@ ssao_settings build_settings(const ssao_api& api, const cli::Options& o, const s
         s.bias = 0.0f;
     }
     const scene::AoHints& h = sc.hints;
-    const float diagonal = scene_diagonal(sc);
-    if (h.radius) {
-        if (!(std::isfinite(*h.radius) && *h.radius > 0.0f))
-            throw RunError("the scene's hint ssao.radius = " + fmt(*h.radius) + " is not a number > 0");
-        s.radius = *h.radius;
-        radius_note = "scene hint";
-    } else if (diagonal > 0.0f) {
-        s.radius = kRadiusPerDiagonal * diagonal;
-        radius_note = "0.05 x scene diagonal " + fmt(diagonal);
+    if (h.radius && !(std::isfinite(*h.radius) && *h.radius > 0.0f))
+        throw RunError("the scene's hint ssao.radius = " + fmt(*h.radius) + " is not a number > 0");
+    if (const auto r = scene::ao_radius(sc)) {
+        s.radius = r->radius;
+        radius_note = r->source;
     } else {
         radius_note = "plugin default; the scene has no extent";
     }

@@ -7,6 +7,8 @@
 
 #include "scene.h"
 
+#include <cstdio>
+
 #if defined(__GNUC__)
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
@@ -513,6 +515,17 @@ bool load(const std::string& path, Scene& out, std::string& error) {
         return false;
     }
     return true;
+}
+
+std::optional<AoRadius> ao_radius(const Scene& s) {
+    if (s.hints.radius && std::isfinite(*s.hints.radius) && *s.hints.radius > 0.0f)
+        return AoRadius{*s.hints.radius, "scene hint"};
+    const float diagonal = glm::length(s.bounds_max - s.bounds_min);
+    if (!(std::isfinite(diagonal) && diagonal > 0.0f)) return std::nullopt;
+    char note[64];
+    std::snprintf(note, sizeof note, "%g x scene diagonal %.4g", static_cast<double>(kAoRadiusPerDiagonal),
+                  static_cast<double>(diagonal));
+    return AoRadius{kAoRadiusPerDiagonal * diagonal, note};
 }
 
 }  // namespace scene

@@ -47,6 +47,18 @@ struct Scene {
     AoHints hints;
 };
 
+// The AO radius a scene calls for, one rule for every tool: its hint
+// extras.ssao.radius when that is a finite number > 0, else 0.05 x its
+// bounding-box diagonal (so a scene in millimetres looks like one in metres).
+// Empty when the scene has neither (no extent). `source` says which, for
+// printing ("scene hint", "0.05 x scene diagonal 11.48").
+struct AoRadius {
+    float radius = 0.0f;
+    std::string source;
+};
+constexpr float kAoRadiusPerDiagonal = 0.05f;
+std::optional<AoRadius> ao_radius(const Scene& s);
+
 // Loads .gltf or .glb. On failure returns false and sets `error` to one
 // sentence naming the problem (missing file, malformed JSON, truncated glb,
 // accessor past its buffer, non-triangle primitive, nothing to draw, ...).

@@ -181,17 +181,13 @@ int main(int argc, char** argv) {
     const camera::Camera cam = camera::apply(sc, camera::choose(sc, aspect), o.cam);
     // Radius as ssao-host picks it: --radius, else the scene's hint, else 0.05 x the
     // bounding-box diagonal (else the plugin's default 0.5).
-    const float diagonal = glm::length(sc.bounds_max - sc.bounds_min);
     std::string radius_note = "--radius";
     float radius = 0.5f;
     if (o.radius) {
         radius = *o.radius;
-    } else if (sc.hints.radius && std::isfinite(*sc.hints.radius) && *sc.hints.radius > 0.0f) {
-        radius = *sc.hints.radius;
-        radius_note = "scene hint";
-    } else if (std::isfinite(diagonal) && diagonal > 0.0f) {
-        radius = 0.05f * diagonal;
-        radius_note = "0.05 x scene diagonal " + std::to_string(diagonal);
+    } else if (const auto r = scene::ao_radius(sc)) {
+        radius = r->radius;
+        radius_note = r->source;
     } else {
         radius_note = "plugin default";
     }

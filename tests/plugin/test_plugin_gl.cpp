@@ -7,6 +7,7 @@
 #include "cpu_ssao.h"
 #include "gl_fixture.h"
 #include "gl_state_snapshot.h"
+#include "gl_util.h"
 #include "test_scenes.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -226,20 +227,8 @@ void disturb_state(GladGLContext& gl, GLuint host_fbo, GLuint host_vao, GLuint h
 
 // A host's own (linked) program: glUseProgram refuses unlinked ones.
 GLuint link_trivial_program(GladGLContext& gl) {
-    const char* vs_src = "#version 330 core\nvoid main() { gl_Position = vec4(0.0); }\n";
-    const char* fs_src = "#version 330 core\nout vec4 c;\nvoid main() { c = vec4(1.0); }\n";
-    const GLuint vs = gl.CreateShader(GL_VERTEX_SHADER), fs = gl.CreateShader(GL_FRAGMENT_SHADER);
-    gl.ShaderSource(vs, 1, &vs_src, nullptr);
-    gl.ShaderSource(fs, 1, &fs_src, nullptr);
-    gl.CompileShader(vs);
-    gl.CompileShader(fs);
-    const GLuint program = gl.CreateProgram();
-    gl.AttachShader(program, vs);
-    gl.AttachShader(program, fs);
-    gl.LinkProgram(program);
-    gl.DeleteShader(vs);
-    gl.DeleteShader(fs);
-    return program;
+    return gl_util::make_program(gl, "host", "#version 330 core\nvoid main() { gl_Position = vec4(0.0); }\n",
+                                 "#version 330 core\nout vec4 c;\nvoid main() { c = vec4(1.0); }\n");
 }
 
 }  // namespace
