@@ -4,27 +4,35 @@
 
 namespace testgl {
 
-void Fixture::debug_callback(GLenum /*source*/, GLenum type, GLuint /*id*/, GLenum /*severity*/, GLsizei /*length*/,
-                             const GLchar* message, const void* user) {
-    if (type == GL_DEBUG_TYPE_ERROR || type == GL_DEBUG_TYPE_UNDEFINED_BEHAVIOR)
-        static_cast<Fixture*>(const_cast<void*>(user))->errors_.push_back(message);
+DebugErrors::DebugErrors(GladGLContext& gl) {
+    if (!gl.DebugMessageCallback) return;
+    gl.Enable(GL_DEBUG_OUTPUT);
+    gl.Enable(GL_DEBUG_OUTPUT_SYNCHRONOUS);
+    gl.DebugMessageCallback(&DebugErrors::callback, this);
 }
 
-Fixture::Fixture(int major, int minor) {
+void DebugErrors::callback(GLenum /*source*/, GLenum type, GLuint /*id*/, GLenum /*severity*/, GLsizei /*length*/,
+                           const GLchar* message, const void* user) {
+    if (type == GL_DEBUG_TYPE_ERROR || type == GL_DEBUG_TYPE_UNDEFINED_BEHAVIOR)
+        static_cast<DebugErrors*>(const_cast<void*>(user))->messages_.push_back(message);
+}
+
+std::unique_ptr<eglctx::Context> make_debug_context(int major, int minor) {
     std::string error;
     eglctx::Options options;
     options.major = major;
     options.minor = minor;
     options.debug = true;
-    egl_ = eglctx::Context::create(options, error);
-    if (!egl_) throw std::runtime_error(error);
+    auto egl = eglctx::Context::create(options, error);
+    if (!egl) throw std::runtime_error(error);
+    return egl;
+}
+
+Fixture::Fixture(int major, int minor) {
+    egl_ = make_debug_context(major, minor);
+    std::string error;
     if (!lib_.open(plugin::Library::default_path(), error)) throw std::runtime_error(error);
-    auto& g = gl();
-    if (g.DebugMessageCallback) {
-        g.Enable(GL_DEBUG_OUTPUT);
-        g.Enable(GL_DEBUG_OUTPUT_SYNCHRONOUS);
-        g.DebugMessageCallback(&Fixture::debug_callback, this);
-    }
+    errors_ = std::make_unique<DebugErrors>(gl());
     ssao_context_desc desc{};
     desc.size = sizeof desc;
     desc.get_proc_address = &eglctx::Context::get_proc;

@@ -16,6 +16,22 @@
 
 namespace testgl {
 
+// Records every GL error and undefined-behaviour message KHR_debug reports
+// on the current context (a debug context), synchronously.
+class DebugErrors {
+public:
+    explicit DebugErrors(GladGLContext& gl);
+    const std::vector<std::string>& messages() const { return messages_; }
+
+private:
+    static void callback(GLenum source, GLenum type, GLuint id, GLenum severity, GLsizei length, const GLchar* message,
+                         const void* user);
+    std::vector<std::string> messages_;
+};
+
+// A debug EGL context (4.5 core unless asked otherwise) or an exception.
+std::unique_ptr<eglctx::Context> make_debug_context(int major = 4, int minor = 5);
+
 class Fixture {
 public:
     explicit Fixture(int major = 4, int minor = 5);
@@ -25,7 +41,7 @@ public:
     const ssao_api& api() const { return lib_.api(); }
     ssao_context* ctx() { return ctx_; }
     // GL errors reported through KHR_debug since the fixture was made.
-    const std::vector<std::string>& gl_errors() const { return errors_; }
+    const std::vector<std::string>& gl_errors() const { return errors_->messages(); }
 
     // Depth texture of the given sized format from values in [0,1]
     // (GL_DEPTH_COMPONENT16/24/32F, GL_DEPTH24_STENCIL8, GL_DEPTH32F_STENCIL8).
@@ -46,14 +62,11 @@ public:
                GLenum depth_format = 0x8CAC /* GL_DEPTH_COMPONENT32F */);
     ssao_inputs inputs(GLuint depth, GLuint normal, const glm::dmat4& proj, ssao_clip_range clip);
 
-    static void debug_callback(GLenum source, GLenum type, GLuint id, GLenum severity, GLsizei length,
-                               const GLchar* message, const void* user);
-
 private:
     std::unique_ptr<eglctx::Context> egl_;
     plugin::Library lib_;
     ssao_context* ctx_ = nullptr;
-    std::vector<std::string> errors_;
+    std::unique_ptr<DebugErrors> errors_;
     std::vector<GLuint> textures_;
 };
 

@@ -3,6 +3,8 @@
 // a snapshot of the GL state a failing call must leave alone.
 #pragma once
 
+#include "gl_fixture.h"
+
 #include <ssao/ssao.h>
 
 #include "egl_context.h"
@@ -74,6 +76,7 @@ void set_raw(E& field, int32_t value) {
 // A 4.5 core EGL context (current on this thread) and a plugin context on it.
 struct GlFixture {
     std::unique_ptr<eglctx::Context> egl;
+    std::unique_ptr<testgl::DebugErrors> gl_errors;  // any GL error fails the test (checked at the end)
     LogRecorder log;
     ssao_context* ctx = nullptr;
 
@@ -86,7 +89,7 @@ struct GlFixture {
     std::string last_error() const { return api().last_error(ctx); }
 };
 
-// Makes a current 4.5 core context or fails the test.
+// Makes a current 4.5 core debug context or fails the test.
 std::unique_ptr<eglctx::Context> make_egl();
 
 // Textures of the host.

@@ -244,7 +244,6 @@ TEST_CASE("abi: execute rejects missing or foreign or wrong-target textures") {
     GLuint tex3d = 0;
     gl.GenTextures(1, &tex3d);
     gl.BindTexture(GL_TEXTURE_3D, tex3d);
-    gl.TexImage3D(GL_TEXTURE_3D, 0, GL_DEPTH_COMPONENT32F, kW, kH, 1, 0, GL_DEPTH_COMPONENT, GL_FLOAT, nullptr);
     gl.TexImage3D(GL_TEXTURE_3D, 0, GL_R32F, kW, kH, 1, 0, GL_RED, GL_FLOAT, nullptr);
     gl.BindTexture(GL_TEXTURE_3D, 0);
     in = scene.inputs;

@@ -43,14 +43,17 @@ PFN_ssao_get_api raw_get_api() {
 }
 
 std::unique_ptr<eglctx::Context> make_egl() {
-    std::string error;
-    auto egl = eglctx::Context::create(eglctx::Options{}, error);
-    REQUIRE_MESSAGE(egl != nullptr, "no EGL context: " << error);
-    return egl;
+    try {
+        return testgl::make_debug_context();
+    } catch (const std::exception& e) {
+        FAIL("no EGL context: " << e.what());
+    }
+    return nullptr;
 }
 
 GlFixture::GlFixture(const ssao_settings* settings) {
     egl = make_egl();
+    gl_errors = std::make_unique<testgl::DebugErrors>(egl->gl());
     ssao_context_desc desc = sized<ssao_context_desc>();
     desc.get_proc_address = eglctx::Context::get_proc;
     desc.log = LogRecorder::callback;
@@ -64,6 +67,9 @@ GlFixture::GlFixture(const ssao_settings* settings) {
 GlFixture::~GlFixture() {
     if (ctx) api().destroy_context(ctx);
     ctx = nullptr;
+    std::string all;
+    for (const std::string& m : gl_errors->messages()) all += m + "; ";
+    CHECK_MESSAGE(gl_errors->messages().empty(), "GL errors: " << all);
 }
 
 GLuint make_depth(GladGLContext& gl, int w, int h, float value, GLenum internal) {
