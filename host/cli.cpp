@@ -99,17 +99,17 @@ ParseResult parse(int argc, const char* const* argv, Options& o, std::string& er
         {"--frames", [&](const std::string& f, const std::string& v) {
              o.frames = static_cast<int>(flags::integer(f, v, 1, 1000));
          }},
-        {"--eye", [&](const std::string& f, const std::string& v) { o.eye = flags::vec3(f, v); }},
-        {"--target", [&](const std::string& f, const std::string& v) { o.target = flags::vec3(f, v); }},
-        {"--fov", [&](const std::string& f, const std::string& v) { o.fov_deg = ranged(f, v, 0, true, 180, true); }},
-        {"--near", [&](const std::string& f, const std::string& v) { o.znear = ranged(f, v, 0, true, kBig, false); }},
+        {"--eye", [&](const std::string& f, const std::string& v) { o.cam.eye = flags::vec3(f, v); }},
+        {"--target", [&](const std::string& f, const std::string& v) { o.cam.target = flags::vec3(f, v); }},
+        {"--fov", [&](const std::string& f, const std::string& v) { o.cam.fov_deg = ranged(f, v, 0, true, 180, true); }},
+        {"--near", [&](const std::string& f, const std::string& v) { o.cam.znear = ranged(f, v, 0, true, kBig, false); }},
         {"--far", [&](const std::string& f, const std::string& v) {
              const double d = flags::number(f, v, true);
              if (!(d > 0)) fail(f + " " + v + " must be > 0 (or 'inf')");
-             o.zfar = static_cast<float>(d);
+             o.cam.zfar = static_cast<float>(d);
          }},
         {"--ortho", [&](const std::string& f, const std::string& v) {
-             o.ortho_half_height = ranged(f, v, 0, true, kBig, false);
+             o.cam.ortho_half_height = ranged(f, v, 0, true, kBig, false);
          }},
         {"--depth", [&](const std::string& f, const std::string& v) { o.depth_format = parse_choice(f, v, kDepths); }},
         {"--normals", [&](const std::string& f, const std::string& v) {
@@ -153,21 +153,14 @@ ParseResult parse(int argc, const char* const* argv, Options& o, std::string& er
     // Flags without a value.
     const flags::Switches switches = {
         {"--gl33", [&] { o.gl33 = true; }},
-        {"--reverse-z", [&] { o.reverse_z = true; }},
+        {"--reverse-z", [&] { o.cam.reverse_z = true; }},
         {"--sheet", [&] { o.sheet = true; }},
         {"--no-sheet", [&] { o.sheet = false; }},
     };
 
     try {
         if (flags::walk(argc, argv, valued, switches, o.scene_path)) return ParseResult::Help;
-        camera::Overrides cam;
-        cam.eye = o.eye;
-        cam.target = o.target;
-        cam.fov_deg = o.fov_deg;
-        cam.znear = o.znear;
-        cam.zfar = o.zfar;
-        cam.ortho_half_height = o.ortho_half_height;
-        flags::check_camera(cam);
+        flags::check_camera(o.cam);
     } catch (const flags::Error& f) {
         error = f.message;
         return ParseResult::Error;

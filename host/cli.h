@@ -2,6 +2,8 @@
 // and the --help text (whose plugin defaults come from the plugin itself).
 #pragma once
 
+#include "camera.h"
+
 #include <ssao/ssao.h>
 
 #include <glm/glm.hpp>
@@ -27,10 +29,8 @@ struct Options {
     bool gl33 = false;
     int frames = 8;                 // plugin executions to measure GPU times over
 
-    // Camera overrides.
-    std::optional<glm::vec3> eye, target;
-    std::optional<float> fov_deg, znear, zfar, ortho_half_height;
-    bool reverse_z = false;
+    // Camera overrides (--eye --target --fov --near --far --ortho --reverse-z).
+    camera::Overrides cam;
     std::optional<DepthFormat> depth_format;   // default d32f
 
     // G-buffer.

@@ -134,21 +134,14 @@ const glm::vec3 kBundledEye(2.3f, 1.6f, -2.6f), kBundledTarget(0.0f, 0.65f, 0.0f
 
 camera::Camera build_camera(const cli::Options& o, const scene::Scene& sc, float aspect, bool& from_scene) {
     from_scene = sc.camera.has_value();
-    camera::Overrides ov;
-    ov.eye = o.eye;
-    ov.target = o.target;
+    camera::Overrides ov = o.cam;
     // The bundled scene's bounds are dominated by its 8 x 8 ground, so framing
     // them shows a small cow: without a scene argument and without camera
     // flags, look at the cow from a three-quarter view instead.
-    if (o.scene_path.empty() && !o.eye && !o.target && !o.ortho_half_height) {
+    if (o.scene_path.empty() && !ov.eye && !ov.target && !ov.ortho_half_height) {
         ov.eye = kBundledEye;
         ov.target = kBundledTarget;
     }
-    ov.fov_deg = o.fov_deg;
-    ov.znear = o.znear;
-    ov.zfar = o.zfar;
-    ov.ortho_half_height = o.ortho_half_height;
-    ov.reverse_z = o.reverse_z;
     const camera::Camera c = camera::apply(sc, camera::choose(sc, aspect), ov);
     if (!(glm::length(c.target - c.eye) > 0.0f)) throw RunError("the camera's eye and target are the same point");
     if (c.orthographic && std::isinf(c.zfar)) throw RunError("an orthographic camera needs a finite far plane");
@@ -476,7 +469,7 @@ int run(const cli::Options& o) {
                 o.normal_format == cli::NormalFormat::RGBA8 ? "rgba8" : "rgba16f");
     std::printf("  camera: %s, %s, eye %s, target %s, near %s, far %s%s\n",
                 (std::string(camera_from_scene ? "the scene's" : "framed from the bounds") +
-                 (o.eye || o.target || o.fov_deg || o.znear || o.zfar || o.ortho_half_height || o.reverse_z
+                 (o.cam.eye || o.cam.target || o.cam.fov_deg || o.cam.znear || o.cam.zfar || o.cam.ortho_half_height || o.cam.reverse_z
                       ? " with flag overrides"
                       : ""))
                     .c_str(),
