@@ -4,6 +4,7 @@
 
 #include "gl_state_guard.h"
 #include "projection.h"
+#include "uniforms.h"
 
 #include <ssao/ssao.h>
 
@@ -20,6 +21,8 @@ struct ssao_context {
     mutable std::string last_error;  // const getters report their failures too
 
     ssao_settings settings{};   // resolved
+    SsaoFrame last_frame{};     // the frame block last uploaded
+    bool frame_uploaded = false;
     bool kernel_dirty = true;   // kernel / noise need uploading
 
     GLuint program_ao = 0, program_blur = 0;

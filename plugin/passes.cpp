@@ -323,8 +323,14 @@ ssao_status execute(ssao_context& ctx, const ssao_inputs& in, ssao_output* out) 
     frame.u_ao2 = {{s.power, s.blur_sigma, s.blur_depth_tolerance, static_cast<float>(proj.ndc_per_depth)}};
     const float unorm_step = fmt.is_float ? 0.0f : static_cast<float>(1.0 / (std::ldexp(1.0, fmt.bits) - 1.0));
     frame.u_depth = {{proj.sky_depth, unorm_step, proj.reverse_z ? 1.0f : 0.0f, proj.orthographic ? 1.0f : 0.0f}};
-    gl.BindBuffer(GL_UNIFORM_BUFFER, ctx.ubo_frame);
-    gl.BufferData(GL_UNIFORM_BUFFER, sizeof frame, &frame, GL_STREAM_DRAW);
+    // A static camera and settings upload nothing: the block changes only
+    // when the projection, viewport, inputs' encoding or settings do.
+    if (!ctx.frame_uploaded || std::memcmp(&frame, &ctx.last_frame, sizeof frame) != 0) {
+        gl.BindBuffer(GL_UNIFORM_BUFFER, ctx.ubo_frame);
+        gl.BufferData(GL_UNIFORM_BUFFER, sizeof frame, &frame, GL_DYNAMIC_DRAW);
+        ctx.last_frame = frame;
+        ctx.frame_uploaded = true;
+    }
     gl.BindBufferBase(GL_UNIFORM_BUFFER, SSAO_UBO_FRAME, ctx.ubo_frame);
     gl.BindBufferBase(GL_UNIFORM_BUFFER, SSAO_UBO_KERNEL, ctx.ubo_kernel);
 
