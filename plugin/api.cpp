@@ -50,19 +50,25 @@ const char* SSAO_CALL status_string(ssao_status status) {
 
 ssao_status SSAO_CALL api_resolve_settings(const ssao_settings* in, ssao_settings* out) {
     if (!in || !out) return SSAO_ERROR_NULL_POINTER;
-    if (out->size != sizeof(ssao_settings)) return SSAO_ERROR_STRUCT_SIZE;
+    if (!ssao_impl::settings_size_known(out->size)) return SSAO_ERROR_STRUCT_SIZE;
     return guarded(nullptr, [&] {
         std::string why;
-        return resolve_settings(*in, *out, why);
+        ssao_settings resolved{};
+        const ssao_status st = resolve_settings(*in, resolved, why);
+        if (st == SSAO_OK) ssao_impl::store_settings(resolved, *out);
+        return st;
     });
 }
 
 ssao_status SSAO_CALL api_preset_settings(ssao_preset preset, ssao_settings* out) {
     if (!out) return SSAO_ERROR_NULL_POINTER;
-    if (out->size != sizeof(ssao_settings)) return SSAO_ERROR_STRUCT_SIZE;
+    if (!ssao_impl::settings_size_known(out->size)) return SSAO_ERROR_STRUCT_SIZE;
     return guarded(nullptr, [&] {
         std::string why;
-        return ssao_impl::preset_settings(preset, *out, why);
+        ssao_settings resolved{};
+        const ssao_status st = ssao_impl::preset_settings(preset, resolved, why);
+        if (st == SSAO_OK) ssao_impl::store_settings(resolved, *out);
+        return st;
     });
 }
 
@@ -124,7 +130,7 @@ ssao_status SSAO_CALL api_set_settings(ssao_context* ctx, const ssao_settings* s
         if (st != SSAO_OK) return ctx->fail(st, "settings: " + why);
         const ssao_settings& old = ctx->settings;
         if (resolved.sample_count != old.sample_count || resolved.kernel_shape != old.kernel_shape ||
-            resolved.distribution != old.distribution || resolved.seed != old.seed)
+            resolved.distribution != old.distribution || resolved.seed != old.seed || resolved.method != old.method)
             ctx->kernel_dirty = true;
         ctx->settings = resolved;
         ctx->last_error.clear();
@@ -135,9 +141,9 @@ ssao_status SSAO_CALL api_set_settings(ssao_context* ctx, const ssao_settings* s
 ssao_status SSAO_CALL api_get_settings(const ssao_context* ctx, ssao_settings* out) {
     if (!ctx) return SSAO_ERROR_NULL_POINTER;
     if (!out) return ctx->fail(SSAO_ERROR_NULL_POINTER, "get_settings: out is NULL");
-    if (out->size != sizeof(ssao_settings))
+    if (!ssao_impl::settings_size_known(out->size))
         return ctx->fail(SSAO_ERROR_STRUCT_SIZE, "get_settings: ssao_settings.size does not match this library");
-    *out = ctx->settings;
+    ssao_impl::store_settings(ctx->settings, *out);
     return SSAO_OK;
 }
 

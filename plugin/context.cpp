@@ -32,12 +32,16 @@ GLADapiproc load_with_user(void* userptr, const char* name) {
     return reinterpret_cast<GLADapiproc>(u->fn(u->user, name));
 }
 
-// #version first, then the shared constants, then the pass's own code.
-std::string assemble(const char* body, bool with_common) {
+// What a fragment shader is built on besides the constants.
+enum class Shared { none, common, common_and_sampling };
+
+// #version first, then the shared constants and code, then the pass's own code.
+std::string assemble(const char* body, Shared shared) {
     std::string s = "#version 330 core\n";
     s += k_ssao_constants_h;
     s += "\n";
-    if (with_common) s += k_common_glsl;
+    if (shared != Shared::none) s += k_common_glsl;
+    if (shared == Shared::common_and_sampling) s += k_sampling_glsl;
     s += "\n#line 1\n";
     s += body;
     return s;
@@ -62,12 +66,12 @@ bool compile(ssao_context& ctx, GLenum type, const std::string& source, const ch
     return true;
 }
 
-ssao_status link(ssao_context& ctx, const char* fragment_body, const char* name, GLuint& program) {
+ssao_status link(ssao_context& ctx, const char* fragment_body, Shared shared, const char* name, GLuint& program) {
     const GladGLContext& gl = ctx.gl;
     GLuint vs = 0, fs = 0;
-    if (!compile(ctx, GL_VERTEX_SHADER, assemble(k_fullscreen_vert, false), "fullscreen.vert", vs))
+    if (!compile(ctx, GL_VERTEX_SHADER, assemble(k_fullscreen_vert, Shared::none), "fullscreen.vert", vs))
         return SSAO_ERROR_SHADER;
-    if (!compile(ctx, GL_FRAGMENT_SHADER, assemble(fragment_body, true), name, fs)) {
+    if (!compile(ctx, GL_FRAGMENT_SHADER, assemble(fragment_body, shared), name, fs)) {
         gl.DeleteShader(vs);
         return SSAO_ERROR_SHADER;
     }
@@ -180,15 +184,19 @@ ssao_status initialise(ssao_context& ctx, const ssao_context_desc& desc) {
     gl.GetIntegerv(GL_MAX_DRAW_BUFFERS, &ctx.caps.max_draw_buffers);
     gl.GetIntegerv(GL_MAX_CLIP_DISTANCES, &ctx.caps.max_clip_distances);
 
-    ssao_status st = link(ctx, k_ao_frag, "ao.frag", ctx.program_ao);
+    ssao_status st = link(ctx, k_ao_frag, Shared::common_and_sampling, "ao.frag", ctx.program_ao);
     if (st != SSAO_OK) return st;
-    st = link(ctx, k_blur_frag, "blur.frag", ctx.program_blur);
+    st = link(ctx, k_visibility_frag, Shared::common_and_sampling, "visibility.frag", ctx.program_visibility);
+    if (st != SSAO_OK) return st;
+    st = link(ctx, k_blur_frag, Shared::common, "blur.frag", ctx.program_blur);
     if (st != SSAO_OK) return st;
     ctx.blur_dir_location = gl.GetUniformLocation(ctx.program_blur, "u_blur_dir");
     ctx.blur_uniforms = {gl.GetUniformLocation(ctx.program_blur, "u_target_origin"),
                          gl.GetUniformLocation(ctx.program_blur, "u_pack_depth")};
     ctx.ao_uniforms = {gl.GetUniformLocation(ctx.program_ao, "u_target_origin"),
                        gl.GetUniformLocation(ctx.program_ao, "u_pack_depth")};
+    ctx.visibility_uniforms = {gl.GetUniformLocation(ctx.program_visibility, "u_target_origin"),
+                               gl.GetUniformLocation(ctx.program_visibility, "u_pack_depth")};
 
     // Object creation binds nothing here: buffers and textures are first bound
     // inside execute, under the state guard.
@@ -216,6 +224,7 @@ void release(ssao_context& ctx) {
     if (!ctx.gl_ready) return;  // GL never (fully) loaded: nothing was made
     if (ctx.program_ao) gl.DeleteProgram(ctx.program_ao);
     if (ctx.program_blur) gl.DeleteProgram(ctx.program_blur);
+    if (ctx.program_visibility) gl.DeleteProgram(ctx.program_visibility);
     if (ctx.vao) gl.DeleteVertexArrays(1, &ctx.vao);
     if (ctx.fbo) gl.DeleteFramebuffers(1, &ctx.fbo);
     if (ctx.ubo_frame) gl.DeleteBuffers(1, &ctx.ubo_frame);

@@ -25,11 +25,11 @@ struct ssao_context {
     bool frame_uploaded = false;
     bool kernel_dirty = true;   // kernel / noise need uploading
 
-    GLuint program_ao = 0, program_blur = 0;
+    GLuint program_ao = 0, program_visibility = 0, program_blur = 0;
     // Per-pass uniforms of each program (program state, not the host's).
     struct PassUniforms {
         GLint target_origin = -1, pack_depth = -1;
-    } ao_uniforms, blur_uniforms;
+    } ao_uniforms, visibility_uniforms, blur_uniforms;
     GLint blur_dir_location = -1;
     GLuint vao = 0, fbo = 0, ubo_frame = 0, ubo_kernel = 0, noise_texture = 0, sampler = 0;
 

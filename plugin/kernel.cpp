@@ -57,6 +57,32 @@ std::vector<glm::vec3> make_kernel(const ssao_settings& s) {
     return kernel;
 }
 
+std::vector<glm::vec3> make_directions(const ssao_settings& s) {
+    Random rng(0xd1c5ull ^ (static_cast<uint64_t>(s.seed) << 32));
+    const float start = rng.next_float();
+    const int n = static_cast<int>(s.sample_count);
+    constexpr float kGoldenFraction = 0.6180339887f;
+    std::vector<glm::vec3> dirs;
+    dirs.reserve(n);
+    for (int i = 0; i < n; ++i) {
+        const float u = (static_cast<float>(i) + 0.5f) / static_cast<float>(n);  // sin^2 theta
+        float turn = start + kGoldenFraction * static_cast<float>(i);
+        turn -= std::floor(turn);
+        const float a = turn * 6.28318530718f, r = std::sqrt(u);
+        dirs.emplace_back(r * std::cos(a), r * std::sin(a), std::sqrt(1.0f - u));
+    }
+    return dirs;
+}
+
+float step_jitter(ssao_rotation rotation, uint32_t x, uint32_t y, uint32_t seed) {
+    if (rotation == SSAO_ROTATION_NOISE_4X4) {
+        static const int kBayer[16] = {0, 8, 2, 10, 12, 4, 14, 6, 3, 11, 1, 9, 15, 7, 13, 5};
+        return (static_cast<float>(kBayer[(y & 3u) * 4u + (x & 3u)]) + 0.5f) / 16.0f;
+    }
+    if (rotation == SSAO_ROTATION_HASH) return pixel_hash(y, x, seed ^ 0x5bd1e995u) * 0.9999f + 0.00005f;
+    return 0.5f;
+}
+
 std::vector<glm::vec2> make_noise(uint32_t seed) {
     Random rng(0x4015eull ^ (static_cast<uint64_t>(seed) << 32));
     std::vector<glm::vec2> noise;

@@ -29,6 +29,19 @@ private:
 // within its set of n); uniform: uniform in the volume (area for the planes).
 std::vector<glm::vec3> make_kernel(const ssao_settings& resolved);
 
+// Visibility method: resolved.sample_count unit directions in tangent space,
+// cosine-distributed over the hemisphere (z = cos theta) as a Fibonacci
+// lattice: cos^2 theta stratified at (i + 0.5) / N, azimuth advancing by the
+// golden angle from a seed-dependent start. Low-discrepancy, so a few
+// directions already cover the hemisphere evenly.
+std::vector<glm::vec3> make_directions(const ssao_settings& resolved);
+
+// Per-pixel step jitter in (0, 1) for the visibility method, for pixel (x, y)
+// of the viewport: a 4x4 ordered (Bayer) pattern for the 4x4 noise rotation
+// (so a 4x4 box averages 16 offsets), a second hash for the hash rotation,
+// 0.5 without rotation. shaders/sampling.glsl computes the same.
+float step_jitter(ssao_rotation rotation, uint32_t x, uint32_t y, uint32_t seed);
+
 // The 4x4 rotation noise: unit vectors (cos a, sin a) by row, y-major (index y*4+x).
 std::vector<glm::vec2> make_noise(uint32_t seed);
 

@@ -19,6 +19,8 @@ static_assert(SSAO_SHADER_ROTATION_NOISE == SSAO_ROTATION_NOISE_4X4 && SSAO_SHAD
                   SSAO_SHADER_ROTATION_NONE == SSAO_ROTATION_NONE, "rotation enums differ");
 static_assert(SSAO_SHADER_NORMAL_WORLD == SSAO_NORMAL_SPACE_WORLD && SSAO_SHADER_PACKING_UNORM == SSAO_NORMAL_PACKING_UNORM,
               "normal enums differ");
+static_assert(SSAO_SHADER_METHOD_KERNEL == SSAO_METHOD_KERNEL && SSAO_SHADER_METHOD_VISIBILITY == SSAO_METHOD_VISIBILITY,
+              "method enums differ");
 static_assert(SSAO_SHADER_BLUR_DEPTH_AWARE == SSAO_BLUR_DEPTH_AWARE && SSAO_SHADER_BLUR_BOX == SSAO_BLUR_BOX_4X4 &&
                   SSAO_SHADER_BLUR_GAUSSIAN == SSAO_BLUR_GAUSSIAN, "blur enums differ");
 
@@ -92,7 +94,9 @@ void set_mat4(ssao_std140::mat4& dst, const glm::dmat4& m) {
 void upload_kernel(ssao_context& ctx) {
     const GladGLContext& gl = ctx.gl;
     SsaoKernel block{};
-    const std::vector<glm::vec3> kernel = make_kernel(ctx.settings);
+    const std::vector<glm::vec3> kernel = ctx.settings.method == SSAO_METHOD_VISIBILITY
+                                              ? make_directions(ctx.settings)
+                                              : make_kernel(ctx.settings);
     for (size_t i = 0; i < kernel.size(); ++i) {
         block.u_kernel[i] = {{kernel[i].x, kernel[i].y, kernel[i].z, 0.0f}};
     }
@@ -315,6 +319,8 @@ ssao_status execute(ssao_context& ctx, const ssao_inputs& in, ssao_output* out) 
     }
     set_mat4(frame.u_normal_to_view, normal_to_view);
     frame.u_viewport = {{vx, vy, vw, vh}};
+    frame.u_method = {{static_cast<int32_t>(s.method), static_cast<int32_t>(s.step_count), 0, 0}};
+    frame.u_march = {{s.thickness, 0.0f, 0.0f, 0.0f}};
     frame.u_modes = {{static_cast<int32_t>(s.kernel_shape), static_cast<int32_t>(s.rotation),
                       world_normals ? 2 : 1, in.normal_packing == SSAO_NORMAL_PACKING_SIGNED ? 2 : 1}};
     frame.u_counts = {{static_cast<int32_t>(s.sample_count), static_cast<int32_t>(s.seed),
@@ -365,7 +371,9 @@ ssao_status execute(ssao_context& ctx, const ssao_inputs& in, ssao_output* out) 
         gl.ActiveTexture(GL_TEXTURE0 + SSAO_UNIT_AO);
         gl.BindTexture(GL_TEXTURE_2D, 0);  // never sample what we render into
         const Target temp0{ctx.temp[0], 0, 0, true}, temp1{ctx.temp[1], 0, 0, true};
-        draw(ctx, ctx.program_ao, ctx.ao_uniforms, blur ? temp0 : final_target, vw, vh);
+        const bool visibility = s.method == SSAO_METHOD_VISIBILITY;
+        draw(ctx, visibility ? ctx.program_visibility : ctx.program_ao,
+             visibility ? ctx.visibility_uniforms : ctx.ao_uniforms, blur ? temp0 : final_target, vw, vh);
         passes |= SSAO_PASS_AO;
         stamp(ctx, slot, 1);
         if (blur) {

@@ -1,6 +1,7 @@
 #include "settings.h"
 
 #include <cmath>
+#include <cstring>
 
 namespace ssao_impl {
 
@@ -21,12 +22,29 @@ ssao_status fail(std::string& why, ssao_status status, const std::string& what) 
 
 }  // namespace
 
-ssao_status resolve_settings(const ssao_settings& in, ssao_settings& out, std::string& why) {
-    if (in.size != sizeof(ssao_settings))
+bool settings_size_known(uint32_t size) { return size == SSAO_SETTINGS_SIZE_1_0 || size == sizeof(ssao_settings); }
+
+bool load_settings(const ssao_settings& caller, ssao_settings& full) {
+    if (!settings_size_known(caller.size)) return false;
+    full = ssao_settings{};
+    std::memcpy(&full, &caller, caller.size);
+    full.size = sizeof(ssao_settings);
+    return true;
+}
+
+void store_settings(const ssao_settings& full, ssao_settings& caller) {
+    const uint32_t size = caller.size;
+    std::memcpy(&caller, &full, size);
+    caller.size = size;
+}
+
+ssao_status resolve_settings(const ssao_settings& caller, ssao_settings& out, std::string& why) {
+    ssao_settings r{};
+    if (!load_settings(caller, r))
         return fail(why, SSAO_ERROR_STRUCT_SIZE,
-                    "ssao_settings.size is " + std::to_string(in.size) + ", expected " +
-                        std::to_string(sizeof(ssao_settings)));
-    ssao_settings r = in;
+                    "ssao_settings.size is " + std::to_string(caller.size) + ", expected " +
+                        std::to_string(sizeof(ssao_settings)) + " (or " + std::to_string(SSAO_SETTINGS_SIZE_1_0) +
+                        " for interface 1.0)");
 
     if (r.sample_count == 0) r.sample_count = kDefaultSamples;
     if (r.sample_count > SSAO_MAX_SAMPLES)
@@ -88,6 +106,19 @@ ssao_status resolve_settings(const ssao_settings& in, ssao_settings& out, std::s
     if (!enum_in(r.output_format, 0, SSAO_OUTPUT_R16F))
         return fail(why, SSAO_ERROR_INVALID_ENUM, "output_format is not an ssao_output_format");
     if (r.output_format == SSAO_OUTPUT_DEFAULT) r.output_format = SSAO_OUTPUT_R8;
+
+    if (!enum_in(r.method, 0, SSAO_METHOD_VISIBILITY))
+        return fail(why, SSAO_ERROR_INVALID_ENUM, "method is not an ssao_method");
+    if (r.method == SSAO_METHOD_DEFAULT) r.method = kDefaultMethod;
+
+    if (!finite(r.thickness) || r.thickness < 0.0f)
+        return fail(why, SSAO_ERROR_INVALID_VALUE, "thickness must be a finite number > 0");
+    if (r.thickness == 0.0f) r.thickness = kDefaultThicknessFraction * r.radius;
+
+    if (r.step_count == 0) r.step_count = kDefaultSteps;
+    if (r.step_count > SSAO_MAX_STEPS)
+        return fail(why, SSAO_ERROR_INVALID_VALUE,
+                    "step_count " + std::to_string(r.step_count) + " is outside 1..32");
 
     out = r;
     return SSAO_OK;

@@ -4,6 +4,7 @@
 
 #include <ssao/ssao.h>
 
+#include <cstddef>
 #include <string>
 
 namespace ssao_impl {
@@ -18,9 +19,25 @@ constexpr float kDefaultStrength = 1.0f;
 constexpr uint32_t kDefaultSeed = 1;
 constexpr uint32_t kDefaultBlurRadius = 2;
 constexpr float kDefaultBlurTolerance = 0.05f;
+constexpr ssao_method kDefaultMethod = SSAO_METHOD_KERNEL;
+constexpr float kDefaultThicknessFraction = 0.5f;  // of the radius
+constexpr uint32_t kDefaultSteps = 4;
 constexpr float kMaxStrength = 8.0f;
 constexpr float kMaxPower = 16.0f;
 constexpr float kMaxBlurSigma = 64.0f;
+
+static_assert(offsetof(ssao_settings, method) == SSAO_SETTINGS_SIZE_1_0, "the 1.1 fields must follow the 1.0 struct");
+
+// Is `size` the size of a version of ssao_settings this library knows?
+bool settings_size_known(uint32_t size);
+
+// Copies a caller's settings of any known version into a full struct (the
+// fields its version lacks read as zero = default). False for unknown sizes.
+bool load_settings(const ssao_settings& caller, ssao_settings& full);
+
+// Writes a full struct into a caller's of any known version (only the prefix
+// its size covers; its size field is kept). Needs a known out.size.
+void store_settings(const ssao_settings& full, ssao_settings& caller);
 
 // Resolves zero fields to defaults and validates the rest. On failure returns
 // the status and a sentence in `why`, and leaves `out` untouched.

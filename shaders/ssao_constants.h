@@ -35,6 +35,8 @@
 #define SSAO_SHADER_BLUR_DEPTH_AWARE 1
 #define SSAO_SHADER_BLUR_BOX 2
 #define SSAO_SHADER_BLUR_GAUSSIAN 3
+#define SSAO_SHADER_METHOD_KERNEL 1
+#define SSAO_SHADER_METHOD_VISIBILITY 2
 
 #ifdef __cplusplus
 #  define SSAO_BLOCK(name) struct alignas(16) name
@@ -57,17 +59,19 @@ SSAO_BLOCK(SsaoFrame) {
     SSAO_MAT4 u_inv_proj;      /* clip -> view (computed in double, stored as float) */
     SSAO_MAT4 u_normal_to_view;/* world -> view rotation for world-space normals (identity else) */
     SSAO_IVEC4 u_viewport;     /* x, y, w, h of the inputs */
-    SSAO_IVEC4 u_reserved;     /* unused; room for a later version without changing the layout */
+    SSAO_IVEC4 u_method;       /* method (1 kernel, 2 visibility), steps per direction, 0, 0 */
     SSAO_IVEC4 u_modes;        /* kernel shape (informative: the kernel itself carries it), rotation,
                                   normal space, normal packing */
     SSAO_IVEC4 u_counts;       /* sample count, seed, blur radius, blur kind */
     SSAO_VEC4 u_ao;            /* radius, bias, depth-step bias, strength */
     SSAO_VEC4 u_ao2;           /* power, blur sigma, blur depth tolerance, ndc-per-depth (1 or 2) */
     SSAO_VEC4 u_depth;         /* far-plane depth value (sky), depth step of a unorm format (0 = float), reverse-Z, orthographic */
+    SSAO_VEC4 u_march;         /* visibility: thickness (view units), 0, 0, 0 */
 }
 SSAO_BLOCK_END
 
-/* The kernel, in tangent space (z along the normal), xyz per vec4. */
+/* The kernel (or, for the visibility method, the unit directions), in tangent
+ * space (z along the normal), xyz per vec4. */
 SSAO_BLOCK(SsaoKernel) {
     SSAO_VEC4 u_kernel[SSAO_MAX_KERNEL];
 }

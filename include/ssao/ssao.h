@@ -96,13 +96,14 @@ extern "C" {
  * A host asking for major M gets any library of major M with minor >= its
  * own minor; the table's `version` field says which one it got. */
 #define SSAO_MAKE_VERSION(major, minor) ((uint32_t)(((major) << 16) | (minor)))
-#define SSAO_API_VERSION SSAO_MAKE_VERSION(1, 0)
+#define SSAO_API_VERSION SSAO_MAKE_VERSION(1, 1)
 #define SSAO_VERSION_MAJOR(v) ((uint32_t)(v) >> 16)
 #define SSAO_VERSION_MINOR(v) ((uint32_t)(v) & 0xffffu)
 
 /* Limits, also read by the shaders (see shaders/ssao_constants.h). */
 #define SSAO_MAX_SAMPLES 64
 #define SSAO_MAX_BLUR_RADIUS 16
+#define SSAO_MAX_STEPS 32
 #define SSAO_MAX_DIMENSION 16384
 #define SSAO_TEXTURE_UNITS_USED 4
 
@@ -186,6 +187,20 @@ typedef enum ssao_blur {
     SSAO_BLUR_MAX_ENUM = 0x7fffffff  /* not a value: keeps the enum 32 bits wide */
 } ssao_blur;
 
+/* How occlusion is estimated (settings.method). */
+typedef enum ssao_method {
+    SSAO_METHOD_DEFAULT = 0,      /* = SSAO_METHOD_KERNEL */
+    SSAO_METHOD_KERNEL = 1,       /* the chapter's point kernel: the fraction of kernel points behind
+                                     the depth buffer (a volume estimate, range-checked); uses
+                                     kernel_shape and distribution */
+    SSAO_METHOD_VISIBILITY = 2,   /* ray-marched visibility: sample_count cosine-weighted directions,
+                                     each marched to radius in step_count jittered steps; a step is
+                                     blocked when it lies behind the depth buffer by less than
+                                     thickness. Converges to the cosine-weighted open fraction of the
+                                     hemisphere that one depth layer can show (README, "Estimators") */
+    SSAO_METHOD_MAX_ENUM = 0x7fffffff  /* not a value: keeps the enum 32 bits wide */
+} ssao_method;
+
 typedef enum ssao_output_format {
     SSAO_OUTPUT_DEFAULT = 0,    /* = SSAO_OUTPUT_R8 */
     SSAO_OUTPUT_R8 = 1,
@@ -221,7 +236,16 @@ typedef struct ssao_settings {
     float blur_depth_tolerance;  /* depth-aware blur: a tap counts when |z_tap - z_centre| <=
                                     tolerance * |z_centre| (relative view depth), (0, 1]; default 0.05 */
     ssao_output_format output_format;           /* plugin-owned output format; default R8 */
+    /* ---- appended in interface 1.1 (a 1.0-sized struct reads them as zero = default) */
+    ssao_method method;          /* estimator; default kernel */
+    float thickness;             /* visibility: how far behind the depth buffer a step still counts
+                                    as blocked, view-space units, > 0; default radius / 2
+                                    (a huge value such as 1e30 gives the height-field assumption) */
+    uint32_t step_count;         /* visibility: steps per direction, 1..32; default 4 */
 } ssao_settings;
+
+/* sizeof(ssao_settings) as interface 1.0 defined it; the library accepts it. */
+#define SSAO_SETTINGS_SIZE_1_0 64u
 
 /* Named quality presets, picked from the Pareto front of error against GPU
  * time that ssao-bench measures (README, "Accuracy against time"). Each keeps

@@ -2,6 +2,7 @@
 // the dlopened libssao.so: ssao_get_api, status_string, resolve_settings,
 // preset_settings, and every create_context failure that happens before (or
 // without) a usable GL context.
+#include <cstring>
 #include "abi_common.h"
 
 #include <glad/gl.h>
@@ -52,7 +53,7 @@ TEST_CASE("abi: ssao_get_api rejects NULL and a too-small table and other versio
         CHECK(same_bytes(table, before));
     }
     const uint32_t refused[] = {SSAO_MAKE_VERSION(0, 0), SSAO_MAKE_VERSION(0, 9), SSAO_MAKE_VERSION(2, 0),
-                                SSAO_MAKE_VERSION(2, 5), SSAO_MAKE_VERSION(1, 1), SSAO_MAKE_VERSION(1, 0xffff),
+                                SSAO_MAKE_VERSION(2, 5), SSAO_MAKE_VERSION(1, 2), SSAO_MAKE_VERSION(1, 0xffff),
                                 0xffffffffu};
     for (uint32_t version : refused) {
         CAPTURE(version);
@@ -123,6 +124,41 @@ TEST_CASE("abi: resolve_settings and preset_settings check pointers and sizes") 
         CHECK(a.preset_settings(SSAO_PRESET_LOW, &o) == SSAO_ERROR_STRUCT_SIZE);
         CHECK(same_bytes(o, before));
     }
+}
+
+TEST_CASE("abi: a 1.0-sized ssao_settings is read and written only up to its size") {
+    // A host compiled against interface 1.0 hands a 64-byte struct: the
+    // library reads the 1.1 fields as defaults and never writes past it.
+    const ssao_api& a = api();
+    struct Padded {
+        ssao_settings s;
+        unsigned char guard[64];
+    };
+    Padded in{}, out{};
+    std::memset(&in, 0xab, sizeof in);   // the tail beyond 64 bytes is garbage the library must not read
+    std::memset(&out, 0xcd, sizeof out);
+    std::memset(&in.s, 0, SSAO_SETTINGS_SIZE_1_0);
+    in.s.size = SSAO_SETTINGS_SIZE_1_0;
+    in.s.sample_count = 12;
+    out.s.size = SSAO_SETTINGS_SIZE_1_0;
+    REQUIRE(a.resolve_settings(&in.s, &out.s) == SSAO_OK);
+    CHECK(out.s.size == SSAO_SETTINGS_SIZE_1_0);
+    CHECK(out.s.sample_count == 12u);
+    CHECK(out.s.radius > 0.0f);
+    const unsigned char* tail = reinterpret_cast<const unsigned char*>(&out.s) + SSAO_SETTINGS_SIZE_1_0;
+    for (size_t i = 0; i < sizeof(ssao_settings) - SSAO_SETTINGS_SIZE_1_0; ++i) CHECK(tail[i] == 0xcd);
+    // The same 1.0 input into a full-size output: the 1.1 fields resolve to their defaults.
+    ssao_settings full = sized<ssao_settings>();
+    REQUIRE(a.resolve_settings(&in.s, &full) == SSAO_OK);
+    ssao_settings zero = sized<ssao_settings>(), defaults = sized<ssao_settings>();
+    REQUIRE(a.resolve_settings(&zero, &defaults) == SSAO_OK);
+    CHECK(full.method == defaults.method);
+    CHECK(full.thickness == defaults.thickness);
+    CHECK(full.step_count == defaults.step_count);
+    // A 1.0 output of a preset keeps its size too.
+    out.s.size = SSAO_SETTINGS_SIZE_1_0;
+    CHECK(a.preset_settings(SSAO_PRESET_HIGH, &out.s) == SSAO_OK);
+    CHECK(out.s.size == SSAO_SETTINGS_SIZE_1_0);
 }
 
 TEST_CASE("abi: resolve_settings and preset_settings through the library") {

@@ -92,6 +92,7 @@ TEST_CASE("settings: derived defaults follow the fields they derive from") {
     CHECK(r.bias == doctest::Approx(0.025 * 2.0));  // 0.025 * radius
     CHECK(r.blur_radius == 5u);
     CHECK(r.blur_sigma == 5.0f);  // = blur_radius
+    CHECK(r.thickness == 1.0f);   // radius / 2
 
     // Explicit values are kept as given.
     in = zeroed();
@@ -110,6 +111,9 @@ TEST_CASE("settings: derived defaults follow the fields they derive from") {
     in.blur_sigma = 64.0f;
     in.blur_depth_tolerance = 1.0f;
     in.output_format = SSAO_OUTPUT_R16F;
+    in.method = SSAO_METHOD_VISIBILITY;
+    in.thickness = 3.0f;
+    in.step_count = SSAO_MAX_STEPS;
     CHECK(same(resolve_ok(in), in));
 
     // The smallest accepted values.
@@ -238,6 +242,13 @@ TEST_CASE("settings: every invalid field gives its documented status and leaves 
          SSAO_ERROR_INVALID_VALUE},
         {"output_format 3", [](ssao_settings& s) { set_raw(s.output_format, 3); }, SSAO_ERROR_INVALID_ENUM},
         {"output_format -1", [](ssao_settings& s) { set_raw(s.output_format, -1); }, SSAO_ERROR_INVALID_ENUM},
+        {"method 3", [](ssao_settings& s) { set_raw(s.method, 3); }, SSAO_ERROR_INVALID_ENUM},
+        {"method -1", [](ssao_settings& s) { set_raw(s.method, -1); }, SSAO_ERROR_INVALID_ENUM},
+        {"thickness -1", [](ssao_settings& s) { s.thickness = -1.0f; }, SSAO_ERROR_INVALID_VALUE},
+        {"thickness NaN", [](ssao_settings& s) { s.thickness = kNaN; }, SSAO_ERROR_INVALID_VALUE},
+        {"thickness inf", [](ssao_settings& s) { s.thickness = kInf; }, SSAO_ERROR_INVALID_VALUE},
+        {"step_count 33", [](ssao_settings& s) { s.step_count = 33; }, SSAO_ERROR_INVALID_VALUE},
+        {"step_count max", [](ssao_settings& s) { s.step_count = 0xffffffffu; }, SSAO_ERROR_INVALID_VALUE},
         {"size 0", [](ssao_settings& s) { s.size = 0; }, SSAO_ERROR_STRUCT_SIZE},
         {"size - 4", [](ssao_settings& s) { s.size = sizeof(ssao_settings) - 4; }, SSAO_ERROR_STRUCT_SIZE},
         {"size + 4", [](ssao_settings& s) { s.size = sizeof(ssao_settings) + 4; }, SSAO_ERROR_STRUCT_SIZE},

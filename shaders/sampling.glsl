@@ -1,0 +1,140 @@
+// Shared by the two sampling passes (ao.frag: the point kernel; visibility.frag:
+// ray-marched visibility): the output packing, the normal as the pass sees it,
+// the tangent basis, and the per-pixel rotation and step jitter.
+
+uniform sampler2D u_normal_tex;
+uniform sampler2D u_noise_tex;
+uniform bool u_pack_depth;  // writing the blur's RG32F input: (ao, view z)
+
+out vec4 o_ao;
+
+vec4 result(float ao, float z) { return u_pack_depth ? vec4(ao, z, 0.0, 1.0) : vec4(ao, ao, ao, 1.0); }
+
+bool finite3(vec3 v) { return all(lessThan(abs(v), vec3(3.0e38))) && !any(isnan(v)); }
+
+// The normal in view space, unit length and facing the camera; a broken normal
+// (zero, NaN, inf) falls back to the direction towards the camera.
+vec3 load_normal(ivec2 px, vec3 to_eye) {
+    vec3 n = texelFetch(u_normal_tex, px, 0).xyz;
+    if (u_modes.w == SSAO_SHADER_PACKING_UNORM) n = n * 2.0 - 1.0;
+    if (u_modes.z == SSAO_SHADER_NORMAL_WORLD) n = mat3(u_normal_to_view) * n;
+    // Scale by the largest component first: a huge but finite normal (1e20)
+    // would overflow dot(n, n) and a tiny one underflow it.
+    float m = max(abs(n.x), max(abs(n.y), abs(n.z)));
+    // max() need not propagate NaN (llvmpipe's does not), the sum does: a NaN
+    // in any component fails the comparison.
+    float sum = abs(n.x) + abs(n.y) + abs(n.z);
+    if (!(m > 1e-30 && m < 3.0e38 && sum < 3.0e38)) return to_eye;  // zero, NaN or infinite
+    n /= m;
+    n *= inversesqrt(dot(n, n));
+    // Facing away (back faces, interpolation at silhouettes): remove the part
+    // pointing away, continuously, instead of flipping.
+    float away = dot(n, to_eye);
+    if (away < 0.0) {
+        n -= to_eye * (away * 1.01);
+        n = normalize(n);
+    }
+    return n;
+}
+
+// Orthonormal basis around n (Duff et al. 2017): no degenerate case, unlike
+// Gram-Schmidt against a random vector.
+void basis(vec3 n, out vec3 b1, out vec3 b2) {
+    float s = n.z >= 0.0 ? 1.0 : -1.0;
+    float a = -1.0 / (s + n.z);
+    float b = n.x * n.y * a;
+    b1 = vec3(1.0 + s * n.x * n.x * a, s * b, -s * n.x);
+    b2 = vec3(b, s + n.y * n.y * a, -n.y);
+}
+
+// Same integer arithmetic as plugin/kernel.cpp pixel_hash().
+float pixel_hash(uvec2 p, uint seed) {
+    uint v = p.x * 1973u + p.y * 9277u + seed * 26699u;
+    v = v * 747796405u + 2891336453u;
+    uint w = ((v >> ((v >> 28u) + 4u)) ^ v) * 277803737u;
+    w = (w >> 22u) ^ w;
+    return float(w >> 8) * (1.0 / 16777216.0);
+}
+
+vec2 rotation(ivec2 vpx) {
+    if (u_modes.y == SSAO_SHADER_ROTATION_NOISE)
+        return texelFetch(u_noise_tex, vpx & (SSAO_NOISE_SIZE - 1), 0).xy;  // tiles from the viewport's corner
+    if (u_modes.y == SSAO_SHADER_ROTATION_HASH) {
+        float a = pixel_hash(uvec2(vpx), uint(u_counts.y)) * 6.28318530718;
+        return vec2(cos(a), sin(a));
+    }
+    return vec2(1.0, 0.0);
+}
+
+// Per-pixel offset in (0,1) of the visibility method's steps along each
+// direction; plugin/kernel.cpp step_jitter() computes the same. The 4x4 noise
+// gets an ordered (Bayer) pattern, so the 4x4 box blur averages 16 offsets.
+float step_jitter(ivec2 vpx) {
+    if (u_modes.y == SSAO_SHADER_ROTATION_NOISE) {
+        const int bayer[16] = int[16](0, 8, 2, 10, 12, 4, 14, 6, 3, 11, 1, 9, 15, 7, 13, 5);
+        ivec2 t = vpx & 3;
+        return (float(bayer[t.y * 4 + t.x]) + 0.5) / 16.0;
+    }
+    if (u_modes.y == SSAO_SHADER_ROTATION_HASH)
+        return pixel_hash(uvec2(vpx.yx), uint(u_counts.y) ^ 0x5bd1e995u) * 0.9999 + 0.00005;
+    return 0.5;
+}
+
+// Snap: the point on the ray through the fetched texel's centre (view position
+// Q) that lies on the plane through s parallel to the surface at P (normal n).
+// It is within half a texel of s on screen; comparing against s itself would
+// make flat receding planes occlude themselves by up to half a texel times
+// their depth slope (no depth bias covers that). Rays almost parallel to that
+// plane keep s.
+vec3 snap_to_texel_ray(vec3 s, vec3 n, vec3 Q, bool ortho) {
+    float plane = dot(s, n);
+    if (ortho) {
+        if (abs(n.z) > 1e-3) return vec3(Q.xy, (plane - n.x * Q.x - n.y * Q.y) / n.z);
+        return s;
+    }
+    float qn = dot(Q, n);
+    return abs(qn) > 1e-3 * length(Q) ? Q * (plane / qn) : s;
+}
+
+// What both sampling passes know about the pixel they shade.
+struct Surface {
+    ivec2 vpx;    // viewport-relative pixel
+    vec3 P;       // view-space position
+    vec3 n;       // unit normal facing the camera (load_normal)
+    mat3 TBN;     // tangent frame around n, rotated per pixel
+    float step;   // view-z change of one depth-format step at P
+    bool ortho;
+};
+
+// Fills `sf` for this fragment; false for sky and for depths whose position
+// is not finite (they get AO 1).
+bool load_surface(out Surface sf) {
+    sf.vpx = ivec2(gl_FragCoord.xy) - u_target_origin;
+    ivec2 px = sf.vpx + u_viewport.xy;  // input texel
+    float d = fetch_depth(px);
+    vec4 Pw = view_position_w(px, d);
+    sf.P = Pw.xyz;
+    sf.ortho = u_depth.w > 0.5;
+    if (is_sky(d) || !finite3(sf.P)) return false;
+    vec3 to_eye = sf.ortho ? vec3(0.0, 0.0, 1.0) : normalize(-sf.P);
+    sf.n = load_normal(px, to_eye);
+    vec3 b1, b2;
+    basis(sf.n, b1, b2);
+    vec2 r = rotation(sf.vpx);
+    vec3 T = r.x * b1 + r.y * b2;
+    sf.TBN = mat3(T, cross(sf.n, T), sf.n);
+    sf.step = depth_step(Pw, d);
+    return true;
+}
+
+// Where view-space point s lands: the input texel, or false when it is
+// behind the eye or off the viewport.
+bool project_to_texel(vec3 s, out ivec2 texel) {
+    vec4 c = u_proj * vec4(s, 1.0);
+    texel = ivec2(0);
+    if (!(c.w > 0.0)) return false;
+    vec2 spf = (c.xy / c.w * 0.5 + 0.5) * vec2(u_viewport.zw);
+    if (any(lessThan(spf, vec2(0.0))) || any(greaterThanEqual(spf, vec2(u_viewport.zw)))) return false;
+    texel = ivec2(spf) + u_viewport.xy;
+    return true;
+}
