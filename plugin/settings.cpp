@@ -55,9 +55,6 @@ ssao_status resolve_settings(const ssao_settings& caller, ssao_settings& out, st
         return fail(why, SSAO_ERROR_INVALID_VALUE, "radius must be a finite number > 0");
     if (r.radius == 0.0f) r.radius = kDefaultRadius;
 
-    if (!finite(r.bias) || r.bias < 0.0f)
-        return fail(why, SSAO_ERROR_INVALID_VALUE, "bias must be a finite number >= 0");
-    if (r.bias == 0.0f) r.bias = kDefaultBiasFraction * r.radius;
 
     if (!finite(r.depth_step_bias) || r.depth_step_bias < 0.0f || r.depth_step_bias > 1e6f)
         return fail(why, SSAO_ERROR_INVALID_VALUE, "depth_step_bias must be finite and in [0, 1e6]");
@@ -110,6 +107,11 @@ ssao_status resolve_settings(const ssao_settings& caller, ssao_settings& out, st
     if (!enum_in(r.method, 0, SSAO_METHOD_VISIBILITY))
         return fail(why, SSAO_ERROR_INVALID_ENUM, "method is not an ssao_method");
     if (r.method == SSAO_METHOD_DEFAULT) r.method = kDefaultMethod;
+
+    if (!finite(r.bias) || r.bias < 0.0f)
+        return fail(why, SSAO_ERROR_INVALID_VALUE, "bias must be a finite number >= 0");
+    if (r.bias == 0.0f)
+        r.bias = (r.method == SSAO_METHOD_VISIBILITY ? kDefaultVisibilityBiasFraction : kDefaultBiasFraction) * r.radius;
 
     if (!finite(r.thickness) || r.thickness < 0.0f)
         return fail(why, SSAO_ERROR_INVALID_VALUE, "thickness must be a finite number > 0");

@@ -12,7 +12,11 @@ namespace ssao_impl {
 // Default values of every field (what a zero field resolves to).
 constexpr uint32_t kDefaultSamples = 16;
 constexpr float kDefaultRadius = 0.5f;
-constexpr float kDefaultBiasFraction = 0.025f;  // of the radius
+constexpr float kDefaultBiasFraction = 0.025f;  // of the radius, kernel method
+// The visibility method reads occluders through their tangent plane, which is
+// exact for planes, so its constant bias only has to absorb interpolated
+// normals: a tenth of the kernel's (whose bias shortens every direction).
+constexpr float kDefaultVisibilityBiasFraction = 0.0025f;
 constexpr float kDefaultDepthStepBias = 2.0f;
 constexpr float kDefaultPower = 1.0f;
 constexpr float kDefaultStrength = 1.0f;

@@ -2,11 +2,32 @@
 // within the radius, as far as one depth layer can show it. Each of
 // u_counts.x directions (cosine-distributed, in the kernel block) is marched
 // from P to the radius in u_method.y steps, offset per pixel; a step is
-// blocked when the depth buffer lies in front of it by at least the bias and
-// at most the thickness (a thin object does not shadow what lies far behind
+// blocked when the depth layer (read through the texel's tangent plane) lies
+// in front of it by at least the bias and at most the thickness (a thin object does not shadow what lies far behind
 // it), and a direction is blocked by its first blocked step. Sky, off-screen
 // and behind-the-eye steps are open. AO = visible fraction, then strength and
 // power as in the kernel pass.
+
+// How far (view z) the depth layer lies in front of step point s, read
+// through the fetched texel's tangent plane: the surface there is taken as
+// the plane through Q (the texel centre's position) with the texel's normal,
+// met by the eye ray through s itself. Exact for planar surfaces however
+// grazing, so neither a receding floor nor a wall seen edge-on occludes
+// itself or hides a step by up to a texel's depth extent. Where the eye ray
+// runs nearly parallel to that plane, the pass's snap (the plane through s
+// parallel to the surface at P, met by the texel's ray) stands in.
+float surface_in_front(vec3 s, vec3 Q, ivec2 spx, Surface sf) {
+    vec3 to_eye_q = sf.ortho ? vec3(0.0, 0.0, 1.0) : normalize(-Q);
+    vec3 nq = load_normal(spx, to_eye_q);
+    float plane = dot(Q, nq);
+    if (sf.ortho) {
+        if (abs(nq.z) > 1e-3) return (plane - nq.x * s.x - nq.y * s.y) / nq.z - s.z;
+    } else {
+        float sn = dot(s, nq);
+        if (abs(sn) > 1e-3 * length(s)) return s.z * (plane / sn) - s.z;
+    }
+    return Q.z - snap_to_texel_ray(s, sf.n, Q, sf.ortho).z;
+}
 
 void main() {
     Surface sf;
@@ -28,9 +49,8 @@ void main() {
             float sd = fetch_depth(spx);
             if (is_sky(sd)) continue;                       // the sky blocks nothing
             vec4 Qw = view_position_w(spx, sd);
-            vec3 sn = snap_to_texel_ray(s, sf.n, Qw.xyz, sf.ortho);
             float bias = u_ao.y + u_ao.z * (sf.step + depth_step(Qw, sd));
-            float in_front = Qw.z - sn.z;                   // > 0: the surface hides the step
+            float in_front = surface_in_front(s, Qw.xyz, spx, sf);  // > 0: the surface hides the step
             blocked = in_front >= bias && in_front <= thickness;
         }
         open += blocked ? 0.0 : 1.0;

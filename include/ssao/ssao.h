@@ -217,6 +217,7 @@ typedef struct ssao_settings {
     uint32_t sample_count;       /* kernel samples, 1..64; default 16 */
     float radius;                /* sampling radius, view-space units, > 0; default 0.5 */
     float bias;                  /* depth bias, view-space units, > 0; default 0.025 * radius
+                                    (kernel method) or 0.0025 * radius (visibility method)
                                     (for no constant bias give a tiny value such as 1e-30).
                                     A bias proportional to the depth buffer's step at each
                                     pixel (depth_step_bias) is always added. */

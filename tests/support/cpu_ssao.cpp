@@ -46,12 +46,18 @@ float ao(const Input& in, const ssao_settings& s, int x, int y) {
     if (d == sky) return 1.0f;
     const glm::dvec3 P = position(x, y, d);
     const glm::dvec3 to_eye = p.orthographic ? glm::dvec3(0, 0, 1) : glm::normalize(-P);
-    glm::dvec3 n = glm::dvec3(g.normal[static_cast<size_t>(y) * g.width + x]);
-    const double m = std::max(std::abs(n.x), std::max(std::abs(n.y), std::abs(n.z)));
-    const double sum = std::abs(n.x) + std::abs(n.y) + std::abs(n.z);  // NaN-propagating, unlike max
-    n = (m > 1e-30 && m < 3.0e38 && sum < 3.0e38) ? glm::normalize(n / m) : to_eye;
-    const double away = glm::dot(n, to_eye);
-    if (away < 0.0) n = glm::normalize(n - to_eye * (away * 1.01));
+    // The normal as the pass sees it: broken ones fall back to the eye
+    // direction, back-facing ones lose the part pointing away.
+    auto normal_at = [&](int px, int py, const glm::dvec3& eye_dir) {
+        glm::dvec3 v = glm::dvec3(g.normal[static_cast<size_t>(py) * g.width + px]);
+        const double m = std::max(std::abs(v.x), std::max(std::abs(v.y), std::abs(v.z)));
+        const double sum = std::abs(v.x) + std::abs(v.y) + std::abs(v.z);  // NaN-propagating, unlike max
+        v = (m > 1e-30 && m < 3.0e38 && sum < 3.0e38) ? glm::normalize(v / m) : eye_dir;
+        const double away = glm::dot(v, eye_dir);
+        if (away < 0.0) v = glm::normalize(v - eye_dir * (away * 1.01));
+        return v;
+    };
+    const glm::dvec3 n = normal_at(x, y, to_eye);
 
     // Basis (Duff et al.) and the rotation.
     const double sg = n.z >= 0.0 ? 1.0 : -1.0;
@@ -67,36 +73,79 @@ float ao(const Input& in, const ssao_settings& s, int x, int y) {
     }
     const glm::dvec3 T = r.x * b1 + r.y * b2, B = glm::cross(n, T);
 
-    const auto kernel = ssao_impl::make_kernel(s);
     const double radius = s.radius;
     const double step_p = step(x, y, d);
+    const double strength = s.strength == SSAO_STRENGTH_OFF ? 0.0 : s.strength;
+    // Where a view-space point lands: false behind the eye or off the image.
+    auto project = [&](const glm::dvec3& sp, int& sx, int& sy) {
+        const glm::dvec4 c = p.proj * glm::dvec4(sp, 1.0);
+        if (!(c.w > 0.0)) return false;
+        const double fx = (c.x / c.w * 0.5 + 0.5) * g.width, fy = (c.y / c.w * 0.5 + 0.5) * g.height;
+        if (fx < 0.0 || fy < 0.0 || fx >= g.width || fy >= g.height) return false;
+        sx = static_cast<int>(fx);
+        sy = static_cast<int>(fy);
+        return true;
+    };
+    auto snap = [&](const glm::dvec3& sp, const glm::dvec3& Q) {
+        const double plane = glm::dot(sp, n);
+        if (p.orthographic)
+            return std::abs(n.z) > 1e-3 ? glm::dvec3(Q.x, Q.y, (plane - n.x * Q.x - n.y * Q.y) / n.z) : sp;
+        const double qn = glm::dot(Q, n);
+        return std::abs(qn) > 1e-3 * glm::length(Q) ? Q * (plane / qn) : sp;
+    };
+
+    if (s.method == SSAO_METHOD_VISIBILITY) {
+        // shaders/visibility.frag: a direction is blocked by its first step
+        // that lies behind the depth buffer by [bias, thickness].
+        const auto dirs = ssao_impl::make_directions(s);
+        const double jitter = ssao_impl::step_jitter(s.rotation, static_cast<uint32_t>(x), static_cast<uint32_t>(y), s.seed);
+        double open = 0.0;
+        for (const glm::vec3& k : dirs) {
+            const glm::dvec3 dir = T * double(k.x) + B * double(k.y) + n * double(k.z);
+            bool blocked = false;
+            for (uint32_t j = 0; j < s.step_count && !blocked; ++j) {
+                const glm::dvec3 sp = P + dir * (radius * (j + jitter) / s.step_count);
+                int sx = 0, sy = 0;
+                if (!project(sp, sx, sy)) continue;
+                const double sd = depth(sx, sy);
+                if (sd == sky) continue;
+                const glm::dvec3 Q = position(sx, sy, sd);
+                // The surface under the step: the plane through Q with the
+                // texel's normal, met by the eye ray through the step.
+                const glm::dvec3 nq = normal_at(sx, sy, p.orthographic ? glm::dvec3(0, 0, 1) : glm::normalize(-Q));
+                const double plane = glm::dot(Q, nq);
+                double in_front = Q.z - snap(sp, Q).z;
+                if (p.orthographic) {
+                    if (std::abs(nq.z) > 1e-3) in_front = (plane - nq.x * sp.x - nq.y * sp.y) / nq.z - sp.z;
+                } else if (std::abs(glm::dot(sp, nq)) > 1e-3 * glm::length(sp)) {
+                    in_front = sp.z * (plane / glm::dot(sp, nq)) - sp.z;
+                }
+                const double bias = s.bias + s.depth_step_bias * (step_p + step(sx, sy, sd));
+                blocked = in_front >= bias && in_front <= s.thickness;
+            }
+            if (!blocked) open += 1.0;
+        }
+        const double occlusion = 1.0 - open / static_cast<double>(dirs.size());
+        return static_cast<float>(std::pow(std::clamp(1.0 - strength * occlusion, 0.0, 1.0), double(s.power)));
+    }
+
+    const auto kernel = ssao_impl::make_kernel(s);
     double occlusion = 0.0, valid = 0.0;
     for (const glm::vec3& k : kernel) {
         const glm::dvec3 sp = P + (T * double(k.x) + B * double(k.y) + n * double(k.z)) * radius;
-        const glm::dvec4 c = p.proj * glm::dvec4(sp, 1.0);
-        if (!(c.w > 0.0)) continue;
-        const double fx = (c.x / c.w * 0.5 + 0.5) * g.width, fy = (c.y / c.w * 0.5 + 0.5) * g.height;
-        if (fx < 0.0 || fy < 0.0 || fx >= g.width || fy >= g.height) continue;
-        const int sx = static_cast<int>(fx), sy = static_cast<int>(fy);
+        int sx = 0, sy = 0;
+        if (!project(sp, sx, sy)) continue;
         valid += 1.0;
         const double sd = depth(sx, sy);
         if (sd == sky) continue;
         const glm::dvec3 Q = position(sx, sy, sd);
-        const double plane = glm::dot(sp, n);
-        glm::dvec3 sn = sp;
-        if (p.orthographic) {
-            if (std::abs(n.z) > 1e-3) sn = glm::dvec3(Q.x, Q.y, (plane - n.x * Q.x - n.y * Q.y) / n.z);
-        } else {
-            const double qn = glm::dot(Q, n);
-            if (std::abs(qn) > 1e-3 * glm::length(Q)) sn = Q * (plane / qn);
-        }
+        glm::dvec3 sn = snap(sp, Q);
         if (in.legacy_snap_guard && glm::distance(sn, sp) > 0.5 * radius) sn = sp;
         const double bias = s.bias + s.depth_step_bias * (step_p + step(sx, sy, sd));
         const double range = smoothstep01(radius / std::abs(P.z - Q.z));
         occlusion += (Q.z >= sn.z + bias ? 1.0 : 0.0) * range;
     }
     const double o = valid > 0.0 ? occlusion / valid : 0.0;
-    const double strength = s.strength == SSAO_STRENGTH_OFF ? 0.0 : s.strength;
     return static_cast<float>(std::pow(std::clamp(1.0 - strength * o, 0.0, 1.0), double(s.power)));
 }
 

@@ -1,5 +1,6 @@
-// cpu_ssao.h - an independent CPU implementation of the AO pass's formula
-// (shaders/ao.frag), written from its description, for comparing against the
+// cpu_ssao.h - an independent CPU implementation of the sampling passes'
+// formulas (shaders/ao.frag, and shaders/visibility.frag for
+// SSAO_METHOD_VISIBILITY), written from their description, for comparing against the
 // GPU output at sampled pixels. Kernel and noise come from the plugin's own
 // generator (that part is unit-tested separately).
 #pragma once
