@@ -61,8 +61,21 @@ bool blocked_by(const Texel& t, const glm::dvec3& s, double thickness, bool orth
 }
 
 Layer::Layer(const camera::Camera& cam, const raytrace::Image& img)
-    : width_(img.width), height_(img.height), ortho_(cam.orthographic), img_(&img) {
+    : width_(img.width), height_(img.height), ortho_(cam.orthographic) {
     proj_ = glm::dmat4(camera::projection_matrix(cam, float(img.width) / float(img.height)));
+    const size_t n = size_t(width_) * size_t(height_);
+    texels_.resize(n);
+    geometry_.assign(n, 0);
+    if (img.mask.size() != n || img.position.size() != n * 3 || img.normal.size() != n * 3) return;  // all sky
+    for (size_t i = 0; i < n; ++i) {
+        const float* p = &img.position[i * 3];
+        const float* nn = &img.normal[i * 3];
+        const glm::dvec3 normal(nn[0], nn[1], nn[2]);
+        const double len = glm::length(normal);
+        geometry_[i] = img.mask[i] > 0.5f && len > 0.0 && std::isfinite(len) && std::isfinite(p[0]) &&
+                       std::isfinite(p[1]) && std::isfinite(p[2]);
+        if (geometry_[i]) texels_[i] = {glm::dvec3(p[0], p[1], p[2]), normal / len};
+    }
 }
 
 bool Layer::pixel_of(const glm::dvec3& s, int& x, int& y) const {
@@ -78,11 +91,8 @@ bool Layer::pixel_of(const glm::dvec3& s, int& x, int& y) const {
 
 bool Layer::texel(int x, int y, Texel& t) const {
     const size_t i = size_t(y) * size_t(width_) + size_t(x);
-    if (!(img_->mask[i] > 0.5f)) return false;
-    const float* p = &img_->position[i * 3];
-    const float* n = &img_->normal[i * 3];
-    t.q = glm::dvec3(p[0], p[1], p[2]);
-    t.n = glm::normalize(glm::dvec3(n[0], n[1], n[2]));
+    if (!geometry_[i]) return false;
+    t = texels_[i];
     return true;
 }
 
@@ -105,8 +115,8 @@ bool Layer::segment_blocked(const glm::dvec3& p, const glm::dvec3& dir, double r
 
     // Every pixel boundary the projected segment crosses (the projection of a
     // segment in front of the eye is a segment, monotone in s).
-    std::vector<double> cuts;
-    cuts.reserve(64);
+    thread_local std::vector<double> cuts, crit;  // reused: this runs per direction
+    cuts.clear();
     auto boundaries = [&](double a0, double a1, int size, bool flip) {
         // Window coordinate f(s) = (ndc + 1)/2 * size, or (1 - ndc)/2 * size when flipped.
         auto window = [&](double s) {
@@ -134,7 +144,6 @@ bool Layer::segment_blocked(const glm::dvec3& p, const glm::dvec3& dir, double r
 
     const Lin depth{-p.z, -dir.z};
     const double e_self = kSelfEpsilon;
-    std::vector<double> crit;
     for (size_t k = 0; k + 1 < cuts.size(); ++k) {
         const double u0 = cuts[k], u1 = cuts[k + 1];
         if (!(u1 > u0)) continue;
@@ -146,6 +155,22 @@ bool Layer::segment_blocked(const glm::dvec3& p, const glm::dvec3& dir, double r
         Texel t;
         if (!texel(x, y, t)) continue;  // sky: open
         const double d_q = -t.q.z, eps = e_self * d_q;
+        // Quick exit: where the tangent plane is read over the whole interval and
+        // both ends are on the camera's side of it (n.(S - Q) >= 0, linear in s),
+        // Delta <= 0 throughout: open. Most of every segment is like that.
+        const double b0 = glm::dot(t.n, p + dir * u0 - t.q), b1 = glm::dot(t.n, p + dir * u1 - t.q);
+        if (b0 >= 0.0 && b1 >= 0.0) {
+            bool plane = false;
+            if (ortho_) {
+                plane = t.n.z > kEdgeOn;
+            } else {
+                auto reads_plane = [&](double s) {
+                    return glm::dot(t.n, p + dir * s) < -kEdgeOn * depth.at(s);
+                };
+                plane = glm::dot(t.n, t.q) < 0.0 && reads_plane(u0) && reads_plane(u1);
+            }
+            if (plane) continue;
+        }
         // The points in (u0, u1) where the rule's outcome can change.
         crit.clear();
         crit.push_back(u0);

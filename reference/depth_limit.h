@@ -90,7 +90,8 @@ private:
     int width_ = 0, height_ = 0;
     bool ortho_ = false;
     glm::dmat4 proj_{1.0};
-    const raytrace::Image* img_ = nullptr;
+    std::vector<Texel> texels_;   // per pixel, normals normalised once
+    std::vector<uint8_t> geometry_;
 };
 
 struct Options {

@@ -343,21 +343,26 @@ int main(int argc, char** argv) {
                 0.5 / std::sqrt(double(o.samples)));
     std::printf("time      %.2f s, %.2f Mrays/s\n", img.seconds, double(img.rays) / std::max(img.seconds, 1e-9) * 1e-6);
     if (o.limit) {
-        double lse = 0.0, lse_max = 0.0, lmean = 0.0;
+        double lse = 0.0, lse2 = 0.0, lse_max = 0.0, lmean = 0.0;
         std::vector<uint8_t> geometry(img.mask.size());
+        std::vector<double> errs;
         for (size_t i = 0; i < img.mask.size(); ++i) {
             geometry[i] = img.mask[i] > 0.5f;
             if (!geometry[i]) continue;
             lmean += limit.ao[i];
             lse += limit.std_error[i];
+            lse2 += double(limit.std_error[i]) * limit.std_error[i];
             lse_max = std::max(lse_max, double(limit.std_error[i]));
+            errs.push_back(limit.std_error[i]);
         }
         if (geo) {
             lmean /= double(geo);
             lse /= double(geo);
+            lse2 /= double(geo);
         }
         const metrics::Stats st = metrics::stats_over(limit.ao, img.ao, geometry, &img.std_error, "all");
-        std::printf("limit     mean AO %.4f; noise: mean standard error %.5f, max %.5f\n", lmean, lse, lse_max);
+        std::printf("limit     mean AO %.4f; noise: standard error mean %.5f, rms %.5f, 99th percentile %.5f, max %.5f\n",
+                    lmean, lse, std::sqrt(lse2), metrics::percentile(errs, 99.0), lse_max);
         std::printf("limit     vs V_R over all geometry: RMSE %.5f, PSNR %.2f dB, mean error %+.5f\n", st.rmse,
                     st.psnr, st.mean_error);
         std::printf("time      limit %.2f s\n", limit.seconds);
