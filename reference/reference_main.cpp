@@ -68,6 +68,12 @@ struct Options {
     camera::Overrides cam;
 };
 
+std::string flags_num(double v) {
+    std::ostringstream o;
+    o << v;
+    return o.str();
+}
+
 std::string help_text() {
     return std::string() +
     "ssao-reference - ray-traced ambient occlusion (Embree) for the same image ssao-host renders.\n"
@@ -93,7 +99,8 @@ std::string help_text() {
     "                     limit_stderr.exr and limit_ao.png - the AO of an ideal ray-marcher over\n"
     "                     this image's single depth layer (README: \"The depth-only limit\")\n"
     "  --thickness T|inf  with --limit: a point behind the depth layer by less than T (view depth,\n"
-    "                     scene units) is blocked, > 0 (default R/2; inf: a height field)\n"
+    "                     scene units) is blocked, > 0 (default " + flags_num(depth_limit::kDefaultThicknessOfR) +
+    " x R; inf: a height field)\n"
     "  --limit-directions N  with --limit: directions per pixel, a multiple of " +
     std::to_string(depth_limit::kReplicas) + " (default " + std::to_string(depth_limit::kDefaultDirections) + ")\n"
     "  --threads N        worker threads (default: all cores)\n"
@@ -272,7 +279,8 @@ int main(int argc, char** argv) {
         lo.threads = o.threads;
         lo.progress = !o.quiet;
         std::printf("limit     depth-only, thickness %g%s, %d directions per pixel (%d rotated sets), exact march\n",
-                    lo.thickness, o.thickness ? "" : " (R/2)", lo.directions, depth_limit::kReplicas);
+                    lo.thickness, o.thickness ? "" : (" (" + flags_num(depth_limit::kDefaultThicknessOfR) + " x R)").c_str(),
+                    lo.directions, depth_limit::kReplicas);
         std::fflush(stdout);
         if (!depth_limit::compute(cam, img, lo, limit, error)) {
             std::fprintf(stderr, "ssao-reference: %s.\n", error.c_str());

@@ -135,7 +135,7 @@ TEST_CASE("ssao-reference --limit: limit_ao.exr laid out as reference_ao.exr, sk
     INFO(r.output);
     REQUIRE(r.code == 0);
     CHECK(r.output.find("limit     depth-only, thickness") != std::string::npos);
-    CHECK(r.output.find("(R/2)") != std::string::npos);
+    CHECK(r.output.find("(0.5 x R)") != std::string::npos);
     CHECK(r.output.find("limit     vs V_R over all geometry: RMSE") != std::string::npos);
     for (const char* f : {"limit_ao.exr", "limit_stderr.exr", "limit_ao.png"}) CHECK(fs::exists(fs::path(a) / f));
     // Same layout: the same size, Y and A, the same coverage; sky is 1 with 0 noise.
