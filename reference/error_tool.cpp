@@ -1,10 +1,13 @@
 // ssao-error: compares an AO image with the ray-traced reference.
 //
-//   ssao-error TEST.exr REF [--ref-stderr FILE] [--ref-depth FILE] [--band K] [--csv FILE] [--label TEXT]
+//   ssao-error TEST.exr REF [--ref-stderr FILE] [--ref-depth FILE] [--limit FILE] [--band K] [--csv FILE]
+//              [--label TEXT]
 //
 // REF is reference_ao.exr or the folder ssao-reference wrote (then
-// reference_stderr.exr and reference_depth.exr are picked up from it when
-// present). The tested AO is read from channel Y, else R, else the file's first
+// reference_stderr.exr, reference_depth.exr and limit_ao.exr are picked up from
+// it when present). With the depth-only limit (ssao-reference --limit) every
+// error is also split into limit vs V_R (what no depth-only method can avoid)
+// and TEST vs limit (what the tested estimator adds). The tested AO is read from channel Y, else R, else the file's first
 // channel. Sky is excluded: reference pixels with A = 0 (or a non-finite Y).
 // Prints RMSE, PSNR (peak 1), mean signed error, 99th percentile and max of
 // |error| over the masks all / interior / silhouette band / screen-border band,
@@ -32,6 +35,9 @@ const char* kHelp =
     "  --ref-stderr FILE reference standard-error EXR (default: REF folder's reference_stderr.exr)\n"
     "  --ref-depth FILE  reference view-depth EXR for the silhouette band (default: REF folder's\n"
     "                    reference_depth.exr; without it, edges come from sky and AO steps)\n"
+    "  --limit FILE      the depth-only limit (limit_ao.exr from ssao-reference --limit; default: REF\n"
+    "                    folder's limit_ao.exr): also report limit vs V_R (what no depth-only method\n"
+    "                    can avoid) and TEST vs limit (what the tested estimator adds)\n"
     "  --band K          width in pixels of the silhouette and screen-border bands, 0..256 (default 3)\n"
     "  --csv FILE        append one row per mask to FILE (header written when FILE is new)\n"
     "  --label TEXT      first CSV column (default: TEST's path)\n"
@@ -59,7 +65,7 @@ int usage_error(const std::string& m) {
 
 int main(int argc, char** argv) {
     std::vector<std::string> positional;
-    std::string stderr_path, depth_path, csv_path, label;
+    std::string stderr_path, depth_path, limit_path, csv_path, label;
     int band = 3;
     for (int i = 1; i < argc; ++i) {
         std::string a = argv[i];
@@ -75,13 +81,15 @@ int main(int argc, char** argv) {
             std::fputs(kHelp, stdout);
             return 0;
         }
-        if (a == "--ref-stderr" || a == "--ref-depth" || a == "--band" || a == "--csv" || a == "--label") {
+        if (a == "--ref-stderr" || a == "--ref-depth" || a == "--limit" || a == "--band" || a == "--csv" ||
+            a == "--label") {
             if (!has_value) {
                 if (i + 1 >= argc) return usage_error(a + " needs a value");
                 value = argv[++i];
             }
             if (a == "--ref-stderr") stderr_path = value;
             else if (a == "--ref-depth") depth_path = value;
+            else if (a == "--limit") limit_path = value;
             else if (a == "--csv") csv_path = value;
             else if (a == "--label") label = value;
             else {
@@ -105,6 +113,7 @@ int main(int argc, char** argv) {
         ref_path = dir + "/reference_ao.exr";
         if (stderr_path.empty() && is_file(dir + "/reference_stderr.exr")) stderr_path = dir + "/reference_stderr.exr";
         if (depth_path.empty() && is_file(dir + "/reference_depth.exr")) depth_path = dir + "/reference_depth.exr";
+        if (limit_path.empty() && is_file(dir + "/limit_ao.exr")) limit_path = dir + "/limit_ao.exr";
     }
     if (label.empty()) label = test_path;
 
@@ -150,6 +159,38 @@ int main(int argc, char** argv) {
         }
     }
 
+    // The limit: same size, and the same coverage (it must come from the same scene and camera).
+    std::vector<float> limit, limit_cover, limit_se;
+    if (!limit_path.empty()) {
+        if (!refio::read_exr_channel(limit_path, {"Y"}, limit, w, h, error)) {
+            std::fprintf(stderr, "ssao-error: %s\n", error.c_str());
+            return 1;
+        }
+        if (w != rw || h != rh) {
+            std::fprintf(stderr, "ssao-error: %s is %dx%d, not %dx%d like the reference.\n", limit_path.c_str(), w, h, rw, rh);
+            return 1;
+        }
+        if (has_cover && refio::exr_has_channel(limit_path, "A")) {
+            if (!refio::read_exr_channel(limit_path, {"A"}, limit_cover, w, h, error)) {
+                std::fprintf(stderr, "ssao-error: %s\n", error.c_str());
+                return 1;
+            }
+            size_t differ = 0;
+            for (size_t i = 0; i < cover.size(); ++i) differ += (cover[i] > 0.5f) != (limit_cover[i] > 0.5f);
+            if (differ > 0) {
+                std::fprintf(stderr,
+                             "ssao-error: %s covers other pixels than the reference (%zu differ): it is not from the "
+                             "same scene and camera.\n",
+                             limit_path.c_str(), differ);
+                return 1;
+            }
+        }
+        const std::string se_path = limit_path.substr(0, limit_path.rfind('/') + 1) + "limit_stderr.exr";
+        if (limit_path.size() >= 12 && limit_path.compare(limit_path.size() - 12, 12, "limit_ao.exr") == 0 &&
+            is_file(se_path) && (!refio::read_exr_channel(se_path, {"Y"}, limit_se, w, h, error) || w != rw || h != rh))
+            limit_se.clear();  // the noise column is optional: without it, "-"
+    }
+
     metrics::Inputs in;
     in.width = rw;
     in.height = rh;
@@ -160,7 +201,9 @@ int main(int argc, char** argv) {
     in.depth = depth.empty() ? nullptr : &depth;
     in.band = band;
     std::vector<metrics::Stats> stats;
-    if (!metrics::compute(in, stats, error)) {
+    metrics::Split split;
+    if (!metrics::compute(in, stats, error) ||
+        (!limit.empty() && !metrics::compute_split(in, limit, limit_se.empty() ? nullptr : &limit_se, split, error))) {
         std::fprintf(stderr, "ssao-error: %s.\n", error.c_str());
         return 1;
     }
@@ -168,8 +211,14 @@ int main(int argc, char** argv) {
     std::printf("test       %s (channel %s), %dx%d\n", test_path.c_str(), channel.c_str(), tw, th);
     std::printf("reference  %s%s%s\n", ref_path.c_str(), se.empty() ? ", no standard-error image" : "",
                 depth.empty() ? ", silhouettes from sky/AO edges" : ", silhouettes from its depth");
+    if (!limit.empty()) std::printf("limit      %s\n", limit_path.c_str());
     std::printf("bands      %d px\n\n", band);
     std::fputs(metrics::table(stats).c_str(), stdout);
+    if (!limit.empty()) {
+        std::printf("\nsplit by the depth-only limit: limit vs V_R is what no depth-only method can avoid,\n"
+                    "ours vs limit what the tested estimator adds (mean = mean signed error)\n\n");
+        std::fputs(metrics::split_table(split).c_str(), stdout);
+    }
     if (!stats.empty() && stats[0].non_finite > 0)
         std::printf("\nwarning: %zu geometry pixels of the tested image are NaN or infinite (not compared).\n",
                     stats[0].non_finite);
@@ -182,7 +231,7 @@ int main(int argc, char** argv) {
             return 1;
         }
         if (fresh) csv << metrics::csv_header();
-        csv << metrics::csv_rows(stats, label);
+        csv << (limit.empty() ? metrics::csv_rows(stats, label) : metrics::csv_rows(split, label));
         if (!csv) {
             std::fprintf(stderr, "ssao-error: cannot write %s.\n", csv_path.c_str());
             return 1;

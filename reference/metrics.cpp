@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <limits>
 #include <sstream>
+#include <utility>
 
 namespace metrics {
 
@@ -172,6 +173,32 @@ bool compute(const Inputs& in, std::vector<Stats>& out, std::string& error) {
     return true;
 }
 
+bool compute_split(const Inputs& in, const std::vector<float>& limit, const std::vector<float>* limit_std_error,
+                   Split& out, std::string& error) {
+    Masks m;
+    if (!build_masks(in, m, error)) return false;
+    const size_t n = m.geometry.size();
+    if (limit.size() != n || (limit_std_error && limit_std_error->size() != n)) {
+        error = "the limit image is " + std::to_string(limit.size()) + " pixels, expected " + std::to_string(n);
+        return false;
+    }
+    for (size_t i = 0; i < n; ++i)
+        if (m.geometry[i] && !std::isfinite(limit[i])) {
+            error = "the limit image has non-finite values on geometry pixels";
+            return false;
+        }
+    const std::pair<const char*, const std::vector<uint8_t>*> masks[] = {
+        {"all", &m.geometry}, {"interior", &m.interior}, {"silhouette", &m.silhouette}, {"border", &m.border}};
+    Split s;
+    for (const auto& [name, mask] : masks) {
+        s.ours_vs_reference.push_back(stats_over(*in.test, *in.reference, *mask, in.std_error, name));
+        s.limit_vs_reference.push_back(stats_over(limit, *in.reference, *mask, in.std_error, name));
+        s.ours_vs_limit.push_back(stats_over(*in.test, limit, *mask, limit_std_error, name));
+    }
+    out = std::move(s);
+    return true;
+}
+
 namespace {
 std::string num(double v, int prec) {
     if (std::isnan(v)) return "-";
@@ -198,11 +225,37 @@ std::string table(const std::vector<Stats>& s) {
     return o.str();
 }
 
-std::string csv_header() {
-    return "label,mask,pixels,non_finite,rmse,psnr_db,mean_error,p99_abs_error,max_abs_error,ref_noise_mean,ref_noise_rms\n";
+std::string split_table(const Split& s) {
+    std::ostringstream o;
+    char line[256];
+    std::snprintf(line, sizeof line, "%-11s %9s  %-25s  %-25s  %-25s\n", "", "", "ours vs V_R",
+                  "limit vs V_R (unavoidable)", "ours vs limit (estimator)");
+    o << line;
+    std::snprintf(line, sizeof line, "%-11s %9s  %8s %7s %8s  %8s %7s %8s  %8s %7s %8s\n", "mask", "pixels", "RMSE",
+                  "PSNR", "mean", "RMSE", "PSNR", "mean", "RMSE", "PSNR", "mean");
+    o << line;
+    for (size_t i = 0; i < s.ours_vs_reference.size(); ++i) {
+        const Stats &a = s.ours_vs_reference[i], &b = s.limit_vs_reference[i], &c = s.ours_vs_limit[i];
+        std::snprintf(line, sizeof line, "%-11s %9zu  %8s %7s %8s  %8s %7s %8s  %8s %7s %8s\n", a.mask.c_str(),
+                      a.pixels, num(a.rmse, 5).c_str(), num(a.psnr, 2).c_str(), num(a.mean_error, 4).c_str(),
+                      num(b.rmse, 5).c_str(), num(b.psnr, 2).c_str(), num(b.mean_error, 4).c_str(),
+                      num(c.rmse, 5).c_str(), num(c.psnr, 2).c_str(), num(c.mean_error, 4).c_str());
+        o << line;
+    }
+    return o.str();
 }
 
-std::string csv_rows(const std::vector<Stats>& s, const std::string& label) {
+std::string csv_header() {
+    return "label,mask,pixels,non_finite,rmse,psnr_db,mean_error,p99_abs_error,max_abs_error,ref_noise_mean,ref_noise_rms,"
+           "against\n";
+}
+
+std::string csv_rows(const Split& s, const std::string& label) {
+    return csv_rows(s.ours_vs_reference, label, "V_R") + csv_rows(s.ours_vs_limit, label, "limit") +
+           csv_rows(s.limit_vs_reference, label, "limit_vs_V_R");
+}
+
+std::string csv_rows(const std::vector<Stats>& s, const std::string& label, const std::string& against) {
     std::ostringstream o;
     for (const auto& r : s) {
         std::string l = label;
@@ -210,7 +263,8 @@ std::string csv_rows(const std::vector<Stats>& s, const std::string& label) {
             if (c == ',' || c == '\n') c = ' ';
         o << l << ',' << r.mask << ',' << r.pixels << ',' << r.non_finite << ',' << num(r.rmse, 7) << ','
           << num(r.psnr, 4) << ',' << num(r.mean_error, 7) << ',' << num(r.p99_abs_error, 7) << ','
-          << num(r.max_abs_error, 7) << ',' << num(r.noise_mean, 7) << ',' << num(r.noise_rms, 7) << '\n';
+          << num(r.max_abs_error, 7) << ',' << num(r.noise_mean, 7) << ',' << num(r.noise_rms, 7) << ',' << against
+          << '\n';
     }
     return o.str();
 }

@@ -51,9 +51,23 @@ Stats stats_over(const std::vector<float>& test, const std::vector<float>& refer
 // Percentile q in [0,100] of values (nearest rank); 0 for an empty list.
 double percentile(std::vector<double> values, double q);
 
-// Text table and CSV rows.
+// The error split by the depth-only limit (ssao-reference --limit, limit_ao.exr),
+// over the masks of compute(): ours vs V_R (in.test vs in.reference), limit vs
+// V_R (what no depth-only method can avoid) and ours vs the limit (what the
+// estimator adds). limit_std_error (optional) is the noise of the limit.
+struct Split {
+    std::vector<Stats> ours_vs_reference, limit_vs_reference, ours_vs_limit;
+};
+bool compute_split(const Inputs& in, const std::vector<float>& limit, const std::vector<float>* limit_std_error,
+                   Split& out, std::string& error);
+
+// Text tables and CSV rows. The CSV's last column, `against`, names what the
+// row compares: "V_R" (the tested image against the reference), "limit" (the
+// tested image against the limit) or "limit_vs_V_R" (the limit against V_R).
 std::string table(const std::vector<Stats>& s);
+std::string split_table(const Split& s);
 std::string csv_header();
-std::string csv_rows(const std::vector<Stats>& s, const std::string& label);
+std::string csv_rows(const std::vector<Stats>& s, const std::string& label, const std::string& against = "V_R");
+std::string csv_rows(const Split& s, const std::string& label);
 
 }  // namespace metrics

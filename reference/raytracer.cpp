@@ -1,51 +1,20 @@
 #include "raytracer.h"
 
+#include "row_pool.h"
+#include "sampling.h"
+
 #include <embree3/rtcore.h>
 
 #include <algorithm>
 #include <atomic>
-#include <chrono>
 #include <cmath>
-#include <cstdio>
 #include <limits>
-#include <mutex>
-#include <thread>
-
-#include <unistd.h>
 
 namespace raytrace {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
-uint32_t hash32(uint32_t x) {  // lowbias32
-    x ^= x >> 16;
-    x *= 0x7feb352dU;
-    x ^= x >> 15;
-    x *= 0x846ca68bU;
-    x ^= x >> 16;
-    return x;
-}
-
-double radical_inverse2(uint32_t i) {
-    i = (i << 16) | (i >> 16);
-    i = ((i & 0x55555555u) << 1) | ((i & 0xAAAAAAAAu) >> 1);
-    i = ((i & 0x33333333u) << 2) | ((i & 0xCCCCCCCCu) >> 2);
-    i = ((i & 0x0F0F0F0Fu) << 4) | ((i & 0xF0F0F0F0u) >> 4);
-    i = ((i & 0x00FF00FFu) << 8) | ((i & 0xFF00FF00u) >> 8);
-    return double(i) * (1.0 / 4294967296.0);
-}
-
-double to_unit(uint32_t h) { return double(h) * (1.0 / 4294967296.0); }
-
-// Orthonormal basis around n (Duff et al. 2017).
-void basis(const glm::vec3& n, glm::vec3& t, glm::vec3& b) {
-    const float sign = std::copysign(1.0f, n.z);
-    const float a = -1.0f / (sign + n.z);
-    const float bb = n.x * n.y * a;
-    t = glm::vec3(1.0f + sign * n.x * n.x * a, sign * bb, -sign * n.x);
-    b = glm::vec3(bb, sign + n.y * n.y * a, -n.y);
-}
+using sampling::hash32;
+using sampling::to_unit;
 
 void device_error(void* user, RTCError, const char* str) {
     auto* s = static_cast<std::string*>(user);
@@ -83,25 +52,18 @@ struct Tracer::Impl {
 
     Estimate ao(const glm::vec3& p, const glm::vec3& n, float radius, int samples, uint32_t rot_hash) const {
         glm::vec3 t, b;
-        basis(n, t, b);
+        sampling::basis(n, t, b);
         // Offset scaled to the point's own magnitude too (float spacing grows with |p|).
         const float mag = std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)});
         const float off = eps + mag * 2e-6f;
         const glm::vec3 org = p + n * off;
         const float tfar = std::isinf(radius) ? std::numeric_limits<float>::infinity() : radius * (1.0f + 1e-4f);
-        const double cp1 = to_unit(hash32(rot_hash ^ 0x9e3779b9u));
-        const double cp2 = to_unit(hash32(rot_hash + 0x632be5abu));
+        const sampling::Shift shift = sampling::shift_from(rot_hash);
         int unoccluded = 0;
         const int N = std::max(samples, 1);
         for (int i = 0; i < N; ++i) {
-            double u1 = (double(i) + 0.5) / double(N) + cp1;
-            double u2 = radical_inverse2(uint32_t(i)) + cp2;
-            u1 -= std::floor(u1);
-            u2 -= std::floor(u2);
-            const double r = std::sqrt(u1);
-            const double phi = 2.0 * kPi * u2;
-            const double z = std::sqrt(std::max(0.0, 1.0 - u1));
-            const glm::vec3 d = glm::normalize(t * float(r * std::cos(phi)) + b * float(r * std::sin(phi)) + n * float(z));
+            const glm::dvec3 c = sampling::cosine_direction(i, N, shift);
+            const glm::vec3 d = glm::normalize(t * float(c.x) + b * float(c.y) + n * float(c.z));
             if (!occluded(org, d, off * 0.5f, tfar)) ++unoccluded;
         }
         Estimate e;
@@ -228,17 +190,14 @@ bool Tracer::render(const camera::Camera& cam, const RenderOptions& o, Image& ou
         error = "radius must be > 0 and samples >= 1";
         return false;
     }
-    const auto start = std::chrono::steady_clock::now();
     const float aspect = float(o.width) / float(o.height);
     const glm::dmat4 view = glm::dmat4(camera::view_matrix(cam));
     const glm::dmat4 proj = glm::dmat4(camera::projection_matrix(cam, aspect));
     const glm::dmat4 inv = glm::inverse(proj * view);
-    const glm::dmat4 inv_view = glm::inverse(view);
     // NDC depth of the near and far planes in this convention.
     const double z_near = cam.reverse_z ? 1.0 : (cam.zero_to_one ? 0.0 : -1.0);
     const double z_far = cam.reverse_z ? 0.0 : 1.0;
     const double z_mid = 0.5 * (z_near + z_far);
-    (void)inv_view;
 
     const size_t n = size_t(o.width) * size_t(o.height);
     Image img;
@@ -249,12 +208,11 @@ bool Tracer::render(const camera::Camera& cam, const RenderOptions& o, Image& ou
     img.mask.assign(n, 0.0f);
     img.depth.assign(n, std::numeric_limits<float>::infinity());
     img.normal.assign(n * 3, 0.0f);
+    img.position.assign(n * 3, std::numeric_limits<float>::quiet_NaN());
 
     const glm::mat3 view3 = glm::mat3(camera::view_matrix(cam));
     const uint32_t seed_hash = hash32(o.seed * 0x9E3779B1u + 0x85ebca6bu);
-    std::atomic<int> next_row{0}, rows_done{0};
     std::atomic<uint64_t> rays{0};
-    std::atomic<int64_t> finish_ns{0};  // when the last worker finished (the progress bar may lag)
 
     auto unproject = [&](double x, double y, double z, bool& finite) {
         const glm::dvec4 h = inv * glm::dvec4(x, y, z, 1.0);
@@ -262,91 +220,45 @@ bool Tracer::render(const camera::Camera& cam, const RenderOptions& o, Image& ou
         return finite ? glm::dvec3(h) / h.w : glm::dvec3(0.0);
     };
 
-    auto worker = [&]() {
+    auto row = [&](int y) {
         uint64_t local_rays = 0;
-        for (;;) {
-            const int y = next_row.fetch_add(1);
-            if (y >= o.height) break;
-            for (int x = 0; x < o.width; ++x) {
-                const double ndc_x = (double(x) + 0.5) / double(o.width) * 2.0 - 1.0;
-                const double ndc_y = 1.0 - (double(y) + 0.5) / double(o.height) * 2.0;  // row 0 = top
-                bool f0 = false, f1 = false, f2 = false;
-                const glm::dvec3 p0 = unproject(ndc_x, ndc_y, z_near, f0);
-                const glm::dvec3 p1 = unproject(ndc_x, ndc_y, z_mid, f1);
-                const glm::dvec3 p2 = unproject(ndc_x, ndc_y, z_far, f2);
-                if (!f0 || !f1) continue;
-                glm::dvec3 dir = p1 - p0;
-                const double len = glm::length(dir);
-                if (!(len > 0.0)) continue;
-                dir /= len;
-                double tfar = std::numeric_limits<double>::infinity();
-                if (f2 && std::isfinite(p2.x) && std::isfinite(p2.y) && std::isfinite(p2.z))
-                    tfar = glm::dot(p2 - p0, dir);
-                float t = 0.0f;
-                glm::vec3 p, ng;
-                ++local_rays;
-                if (!impl_->hit(glm::vec3(p0), glm::vec3(dir), 0.0f, float(tfar), t, p, ng)) continue;
-                if (glm::dot(ng, glm::vec3(dir)) > 0.0f) ng = -ng;
-                const size_t i = size_t(y) * size_t(o.width) + size_t(x);
-                const Estimate e = impl_->ao(p, ng, o.radius, o.samples, hash32(seed_hash ^ uint32_t(i * 0x27d4eb2dU)));
-                local_rays += uint64_t(e.rays);
-                img.ao[i] = float(e.visibility);
-                img.std_error[i] = float(e.std_error);
-                img.mask[i] = 1.0f;
-                const glm::dvec4 pv = view * glm::dvec4(glm::dvec3(p), 1.0);
-                img.depth[i] = float(-pv.z);
-                const glm::vec3 nv = glm::normalize(view3 * ng);
-                img.normal[i * 3] = nv.x;
-                img.normal[i * 3 + 1] = nv.y;
-                img.normal[i * 3 + 2] = nv.z;
-            }
-            rows_done.fetch_add(1);
+        for (int x = 0; x < o.width; ++x) {
+            const double ndc_x = (double(x) + 0.5) / double(o.width) * 2.0 - 1.0;
+            const double ndc_y = 1.0 - (double(y) + 0.5) / double(o.height) * 2.0;  // row 0 = top
+            bool f0 = false, f1 = false, f2 = false;
+            const glm::dvec3 p0 = unproject(ndc_x, ndc_y, z_near, f0);
+            const glm::dvec3 p1 = unproject(ndc_x, ndc_y, z_mid, f1);
+            const glm::dvec3 p2 = unproject(ndc_x, ndc_y, z_far, f2);
+            if (!f0 || !f1) continue;
+            glm::dvec3 dir = p1 - p0;
+            const double len = glm::length(dir);
+            if (!(len > 0.0)) continue;
+            dir /= len;
+            double tfar = std::numeric_limits<double>::infinity();
+            if (f2 && std::isfinite(p2.x) && std::isfinite(p2.y) && std::isfinite(p2.z))
+                tfar = glm::dot(p2 - p0, dir);
+            float t = 0.0f;
+            glm::vec3 p, ng;
+            ++local_rays;
+            if (!impl_->hit(glm::vec3(p0), glm::vec3(dir), 0.0f, float(tfar), t, p, ng)) continue;
+            if (glm::dot(ng, glm::vec3(dir)) > 0.0f) ng = -ng;
+            const size_t i = size_t(y) * size_t(o.width) + size_t(x);
+            const Estimate e = impl_->ao(p, ng, o.radius, o.samples, hash32(seed_hash ^ uint32_t(i * 0x27d4eb2dU)));
+            local_rays += uint64_t(e.rays);
+            img.ao[i] = float(e.visibility);
+            img.std_error[i] = float(e.std_error);
+            img.mask[i] = 1.0f;
+            const glm::dvec4 pv = view * glm::dvec4(glm::dvec3(p), 1.0);
+            img.depth[i] = float(-pv.z);
+            for (int k = 0; k < 3; ++k) img.position[i * 3 + size_t(k)] = float(pv[k]);
+            const glm::vec3 nv = glm::normalize(view3 * ng);
+            img.normal[i * 3] = nv.x;
+            img.normal[i * 3 + 1] = nv.y;
+            img.normal[i * 3 + 2] = nv.z;
         }
         rays.fetch_add(local_rays);
-        const int64_t now = std::chrono::duration_cast<std::chrono::nanoseconds>(
-                                std::chrono::steady_clock::now() - start).count();
-        int64_t prev = finish_ns.load();
-        while (now > prev && !finish_ns.compare_exchange_weak(prev, now)) {
-        }
     };
-
-    int threads = o.threads > 0 ? o.threads : int(std::max(1u, std::thread::hardware_concurrency()));
-    threads = std::min(threads, o.height);
-    std::vector<std::thread> pool;
-    for (int i = 0; i < threads; ++i) pool.emplace_back(worker);
-    if (o.progress && !isatty(fileno(stderr))) {
-        // Not a terminal (a log file, CI): a line per 10% instead of a redrawn bar.
-        int reported = 0;
-        for (;;) {
-            const int done = rows_done.load();
-            const int tenth = done * 10 / o.height;
-            if (tenth > reported) {
-                reported = tenth;
-                const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-                std::fprintf(stderr, "traced %3d%% of the rows, %.1f s\n", tenth * 10, secs);
-                std::fflush(stderr);
-            }
-            if (done >= o.height) break;
-            std::this_thread::sleep_for(std::chrono::milliseconds(100));
-        }
-    } else if (o.progress) {
-        for (;;) {
-            const int done = rows_done.load();
-            const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-            const int width = 40;
-            const int filled = int(double(done) / o.height * width);
-            std::fprintf(stderr, "\r[%s%s] %3d%%  %.1f s", std::string(size_t(filled), '#').c_str(),
-                         std::string(size_t(width - filled), ' ').c_str(), int(100.0 * done / o.height), secs);
-            if (done > 0 && done < o.height)
-                std::fprintf(stderr, ", about %.0f s left ", secs / done * (o.height - done));
-            std::fflush(stderr);
-            if (done >= o.height) break;
-            std::this_thread::sleep_for(std::chrono::milliseconds(250));
-        }
-        std::fprintf(stderr, "\n");
-    }
-    for (auto& t : pool) t.join();
-    img.seconds = double(finish_ns.load()) * 1e-9;
+    img.seconds = row_pool::run(o.height, o.threads, o.progress, "traced", row);
     img.rays = rays.load();
     out = std::move(img);
     return true;

@@ -35,7 +35,7 @@ struct RenderOptions {
 // One image. Row 0 is the top row of the picture; pixel (x, y) is traced
 // through its centre. Sky pixels (the primary ray hits nothing between the
 // near and far planes) have mask 0, ao 1, std_error 0, depth +infinity (as
-// ssao-host's view_depth.exr), normal 0.
+// ssao-host's view_depth.exr), normal 0, position NaN.
 struct Image {
     int width = 0, height = 0;
     std::vector<float> ao;         // V_R
@@ -43,6 +43,7 @@ struct Image {
     std::vector<float> mask;       // 1 = geometry, 0 = sky
     std::vector<float> depth;      // view depth: -z_view of the hit (positive), +inf for sky
     std::vector<float> normal;     // 3 per pixel: view-space geometric normal facing the camera
+    std::vector<float> position;   // 3 per pixel: view-space primary hit (NaN for sky)
     double seconds = 0.0;
     uint64_t rays = 0;             // primary + occlusion rays traced
 };

@@ -10,10 +10,16 @@
 //   with --dump-buffers:
 //   reference_depth.exr   channel Z = view depth (-z_view, positive; +inf for sky, as ssao-host's view_depth.exr)
 //   reference_normal.exr  channels R,G,B = view-space geometric normal facing the camera (0 for sky)
+//   with --limit (the depth-only limit, reference/depth_limit.h):
+//   limit_ao.exr          channels Y = V_limit in [0,1] and A = coverage, laid out as reference_ao.exr
+//   limit_stderr.exr      channel Y = per-pixel standard error of V_limit (0 for sky)
+//   limit_ao.png          8-bit grey of V_limit
 // Row 0 of every image is the top row of the picture.
 #include "camera.h"
+#include "depth_limit.h"
 #include "flags.h"
 #include "image_io.h"
+#include "metrics.h"
 #include "raytracer.h"
 #include "scene.h"
 
@@ -55,11 +61,21 @@ struct Options {
     uint32_t seed = 1;
     int threads = 0;
     bool dump_buffers = false;
+    bool limit = false;
+    std::optional<double> thickness;   // default: depth_limit::kDefaultThicknessOfR x radius
+    std::optional<int> limit_directions;
     bool quiet = false;
     camera::Overrides cam;
 };
 
-const char* kHelp =
+std::string flags_num(double v) {
+    std::ostringstream o;
+    o << v;
+    return o.str();
+}
+
+std::string help_text() {
+    return std::string() +
     "ssao-reference - ray-traced ambient occlusion (Embree) for the same image ssao-host renders.\n"
     "\n"
     "usage: ssao-reference [SCENE.gltf|SCENE.glb] [flags]\n"
@@ -79,6 +95,14 @@ const char* kHelp =
     "  --reverse-z        reverse-Z projection (same rays; accepted for parity with ssao-host)\n"
     "  --out DIR          output folder, created if missing (default out)\n"
     "  --dump-buffers     also write reference_depth.exr and reference_normal.exr\n"
+    "  --limit            also write the depth-only limit: limit_ao.exr (Y, A as reference_ao.exr),\n"
+    "                     limit_stderr.exr and limit_ao.png - the AO of an ideal ray-marcher over\n"
+    "                     this image's single depth layer (README: \"The depth-only limit\")\n"
+    "  --thickness T|inf  with --limit: a point behind the depth layer by less than T (view depth,\n"
+    "                     scene units) is blocked, > 0 (default " + flags_num(depth_limit::kDefaultThicknessOfR) +
+    " x R; inf: a height field)\n"
+    "  --limit-directions N  with --limit: directions per pixel, a multiple of " +
+    std::to_string(depth_limit::kReplicas) + " (default " + std::to_string(depth_limit::kDefaultDirections) + ")\n"
     "  --threads N        worker threads (default: all cores)\n"
     "  --quiet            no progress bar\n"
     "  --help             this text\n"
@@ -87,6 +111,7 @@ const char* kHelp =
     "DIR/reference_stderr.exr (Y = standard error of the mean per pixel) and DIR/reference_ao.png.\n"
     "AO is V_R: the cosine-weighted fraction of the hemisphere around the face normal with no hit\n"
     "within the radius. Pixel centres, row 0 at the top, rays from inverse(projection * view).\n";
+}
 
 enum class Parse { Run, Help, Error };
 
@@ -112,6 +137,17 @@ Parse parse(int argc, char** argv, Options& o, std::string& error) {
              o.cam.zfar = float(d);
          }},
         {"--ortho", [&](const std::string& f, const std::string& v) { o.cam.ortho_half_height = positive(f, v); }},
+        {"--thickness", [&](const std::string& f, const std::string& v) {
+             const double d = flags::number(f, v, true);
+             if (!(d > 0.0)) fail(f + " " + v + " must be greater than 0 (scene units, or inf)");
+             o.thickness = d;
+         }},
+        {"--limit-directions", [&](const std::string& f, const std::string& v) {
+             const long long d = flags::integer(f, v, depth_limit::kReplicas, 1 << 20);
+             if (d % depth_limit::kReplicas != 0)
+                 fail(f + " " + v + " must be a multiple of " + std::to_string(depth_limit::kReplicas));
+             o.limit_directions = int(d);
+         }},
         {"--out", [&](const std::string& f, const std::string& v) {
              if (v.empty()) fail(f + " needs a folder name");
              o.out_dir = v;
@@ -119,12 +155,15 @@ Parse parse(int argc, char** argv, Options& o, std::string& error) {
     };
     const flags::Switches switches = {
         {"--dump-buffers", [&] { o.dump_buffers = true; }},
+        {"--limit", [&] { o.limit = true; }},
         {"--quiet", [&] { o.quiet = true; }},
         {"--reverse-z", [&] { o.cam.reverse_z = true; }},
     };
     try {
         if (flags::walk(argc, argv, valued, switches, o.scene_path)) return Parse::Help;
         flags::check_camera(o.cam);
+        if (!o.limit && o.thickness) fail("--thickness applies only with --limit");
+        if (!o.limit && o.limit_directions) fail("--limit-directions applies only with --limit");
         if (double(o.width) * double(o.height) * double(o.samples) > 4e12)
             fail("--width x --height x --samples is absurdly large (more than 4e12 rays)");
     } catch (const flags::Error& f) {
@@ -166,7 +205,7 @@ int main(int argc, char** argv) {
     Options o;
     std::string error;
     switch (parse(argc, argv, o, error)) {
-        case Parse::Help: std::fputs(kHelp, stdout); return 0;
+        case Parse::Help: std::fputs(help_text().c_str(), stdout); return 0;
         case Parse::Error: std::fprintf(stderr, "ssao-reference: %s.\n", error.c_str()); return 2;
         case Parse::Run: break;
     }
@@ -229,11 +268,37 @@ int main(int argc, char** argv) {
         return 1;
     }
 
+    // The depth-only limit over the traced image's own depth layer.
+    depth_limit::Options lo;
+    depth_limit::Image limit;
+    if (o.limit) {
+        lo.radius = radius;
+        lo.thickness = o.thickness ? *o.thickness : depth_limit::kDefaultThicknessOfR * double(radius);
+        lo.directions = o.limit_directions ? *o.limit_directions : depth_limit::kDefaultDirections;
+        lo.seed = o.seed;
+        lo.threads = o.threads;
+        lo.progress = !o.quiet;
+        std::printf("limit     depth-only, thickness %g%s, %d directions per pixel (%d rotated sets), exact march\n",
+                    lo.thickness, o.thickness ? "" : (" (" + flags_num(depth_limit::kDefaultThicknessOfR) + " x R)").c_str(),
+                    lo.directions, depth_limit::kReplicas);
+        std::fflush(stdout);
+        if (!depth_limit::compute(cam, img, lo, limit, error)) {
+            std::fprintf(stderr, "ssao-reference: %s.\n", error.c_str());
+            return 1;
+        }
+    }
+
     // Write everything; on a failure remove what was written.
     const std::string dir = o.out_dir;
     std::vector<std::string> written;
     auto undo = [&]() {
         for (const auto& p : written) std::remove(p.c_str());
+    };
+    auto png = [&](const std::string& name, const std::vector<float>& v) {
+        const std::string p = dir + "/" + name;
+        if (!refio::write_png_grey(p, img.width, img.height, v, error)) return false;
+        written.push_back(p);
+        return true;
     };
     auto exr = [&](const std::string& name, std::vector<refio::Channel> ch) {
         const std::string p = dir + "/" + name;
@@ -255,14 +320,13 @@ int main(int argc, char** argv) {
     }
     bool ok = exr("reference_ao.exr", {{"Y", &img.ao}, {"A", &img.mask}}) &&
               exr("reference_stderr.exr", {{"Y", &img.std_error}});
-    if (ok) {
-        const std::string p = dir + "/reference_ao.png";
-        ok = refio::write_png_grey(p, img.width, img.height, img.ao, error);
-        if (ok) written.push_back(p);
-    }
+    ok = ok && png("reference_ao.png", img.ao);
     if (ok && o.dump_buffers)
         ok = exr("reference_depth.exr", {{"Z", &img.depth}}) &&
              exr("reference_normal.exr", {{"R", &nx}, {"G", &ny}, {"B", &nz}});
+    if (ok && o.limit)
+        ok = exr("limit_ao.exr", {{"Y", &limit.ao}, {"A", &img.mask}}) &&
+             exr("limit_stderr.exr", {{"Y", &limit.std_error}}) && png("limit_ao.png", limit.ao);
     if (!ok) {
         undo();
         std::fprintf(stderr, "ssao-reference: %s\n", error.c_str());
@@ -286,6 +350,31 @@ int main(int argc, char** argv) {
     std::printf("noise     mean standard error %.5f, max %.5f (bound 0.5/sqrt(N) = %.5f)\n", se, se_max,
                 0.5 / std::sqrt(double(o.samples)));
     std::printf("time      %.2f s, %.2f Mrays/s\n", img.seconds, double(img.rays) / std::max(img.seconds, 1e-9) * 1e-6);
+    if (o.limit) {
+        double lse = 0.0, lse2 = 0.0, lse_max = 0.0, lmean = 0.0;
+        std::vector<uint8_t> geometry(img.mask.size());
+        std::vector<double> errs;
+        for (size_t i = 0; i < img.mask.size(); ++i) {
+            geometry[i] = img.mask[i] > 0.5f;
+            if (!geometry[i]) continue;
+            lmean += limit.ao[i];
+            lse += limit.std_error[i];
+            lse2 += double(limit.std_error[i]) * limit.std_error[i];
+            lse_max = std::max(lse_max, double(limit.std_error[i]));
+            errs.push_back(limit.std_error[i]);
+        }
+        if (geo) {
+            lmean /= double(geo);
+            lse /= double(geo);
+            lse2 /= double(geo);
+        }
+        const metrics::Stats st = metrics::stats_over(limit.ao, img.ao, geometry, &img.std_error, "all");
+        std::printf("limit     mean AO %.4f; noise: standard error mean %.5f, rms %.5f, 99th percentile %.5f, max %.5f\n",
+                    lmean, lse, std::sqrt(lse2), metrics::percentile(errs, 99.0), lse_max);
+        std::printf("limit     vs V_R over all geometry: RMSE %.5f, PSNR %.2f dB, mean error %+.5f\n", st.rmse,
+                    st.psnr, st.mean_error);
+        std::printf("time      limit %.2f s\n", limit.seconds);
+    }
     for (const auto& p : written) std::printf("wrote     %s\n", p.c_str());
     return 0;
 }

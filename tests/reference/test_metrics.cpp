@@ -37,6 +37,59 @@ TEST_CASE("constant offset: RMSE, PSNR, mean error, percentile") {
     CHECK(s[3].pixels == 0u);
 }
 
+TEST_CASE("the split by the limit: ours vs V_R, limit vs V_R, ours vs limit over the same masks") {
+    const int w = 20, h = 10;
+    // V_R 0.8, the limit 0.7 (0.1 too dark: what no depth-only method avoids),
+    // ours 0.6 (0.1 below the limit: what the estimator adds). Top row is sky,
+    // where the tested image and the limit are wildly off: must not count.
+    std::vector<float> ref(size_t(w * h), 0.8f), limit(size_t(w * h), 0.7f), ours(size_t(w * h), 0.6f),
+        cover(size_t(w * h), 1.0f);
+    for (int x = 0; x < w; ++x) {
+        cover[size_t(x)] = 0.0f;
+        ours[size_t(x)] = limit[size_t(x)] = 5.0f;
+    }
+    metrics::Inputs in;
+    in.width = w;
+    in.height = h;
+    in.test = &ours;
+    in.reference = &ref;
+    in.sky = &cover;
+    in.band = 2;
+    metrics::Split s;
+    std::string err;
+    REQUIRE(metrics::compute_split(in, limit, nullptr, s, err));
+    REQUIRE(s.ours_vs_reference.size() == 4u);
+    REQUIRE(s.limit_vs_reference.size() == 4u);
+    REQUIRE(s.ours_vs_limit.size() == 4u);
+    std::vector<metrics::Stats> plain;
+    REQUIRE(metrics::compute(in, plain, err));
+    for (size_t m = 0; m < 4; ++m) {
+        INFO(plain[m].mask);
+        CHECK(s.ours_vs_reference[m].pixels == plain[m].pixels);  // the same masks as compute()
+        CHECK(s.limit_vs_reference[m].pixels == plain[m].pixels);
+        CHECK(s.ours_vs_limit[m].pixels == plain[m].pixels);
+        CHECK(s.ours_vs_reference[m].rmse == doctest::Approx(plain[m].rmse));
+    }
+    CHECK(s.ours_vs_reference[0].pixels == 180u);
+    CHECK(s.ours_vs_reference[0].mean_error == doctest::Approx(-0.2).epsilon(1e-5));
+    CHECK(s.limit_vs_reference[0].rmse == doctest::Approx(0.1).epsilon(1e-5));
+    CHECK(s.limit_vs_reference[0].psnr == doctest::Approx(20.0).epsilon(1e-4));
+    CHECK(s.ours_vs_limit[0].mean_error == doctest::Approx(-0.1).epsilon(1e-5));
+    const std::string table = metrics::split_table(s);
+    CHECK(table.find("limit vs V_R") != std::string::npos);
+    const std::string csv = metrics::csv_rows(s, "x");
+    CHECK(csv.find("x,all,180,0,0.2000000,") != std::string::npos);
+    CHECK(csv.find(",V_R\n") != std::string::npos);
+    CHECK(csv.find(",limit\n") != std::string::npos);
+    CHECK(csv.find(",limit_vs_V_R\n") != std::string::npos);
+    // A limit of the wrong size, or NaN on geometry, is refused.
+    std::vector<float> small(10, 0.5f);
+    CHECK_FALSE(metrics::compute_split(in, small, nullptr, s, err));
+    limit[50] = std::numeric_limits<float>::quiet_NaN();
+    CHECK_FALSE(metrics::compute_split(in, limit, nullptr, s, err));
+    CHECK(err.find("non-finite") != std::string::npos);
+}
+
 TEST_CASE("too dark gives a negative mean error; identical images give infinite PSNR") {
     std::vector<float> ref(16, 0.8f), dark(16, 0.6f);
     std::vector<uint8_t> all(16, 1);

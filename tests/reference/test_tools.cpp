@@ -1,5 +1,7 @@
 // The ssao-reference and ssao-error programs: bad input gives one message and a
 // non-zero exit with no output; a tiny good run writes its files.
+#include "image_io.h"
+
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -8,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -81,6 +84,15 @@ TEST_CASE("ssao-reference: bad input fails with one message and writes nothing")
         {kModel + " --width", "--width needs a value"},
         {kModel + " other.glb", "more than one scene file"},
         {kModel + " --width 16384 --height 16384 --samples 1048576", "absurdly large"},
+        {kModel + " --limit --thickness 0", "--thickness 0 must be greater than 0"},
+        {kModel + " --limit --thickness -0.5", "--thickness -0.5 must be greater than 0"},
+        {kModel + " --limit --thickness abc", "--thickness expects a finite number or 'inf'"},
+        {kModel + " --limit --thickness nan", "--thickness expects a finite number or 'inf'"},
+        {kModel + " --limit --thickness", "--thickness needs a value"},
+        {kModel + " --thickness 0.1", "--thickness applies only with --limit"},
+        {kModel + " --limit --limit-directions 12", "--limit-directions 12 must be a multiple of 8"},
+        {kModel + " --limit --limit-directions 0", "--limit-directions 0 is out of range"},
+        {kModel + " --limit-directions 64", "--limit-directions applies only with --limit"},
     };
     for (const auto& c : cases) {
         const Run r = run(kRef + " --out " + out + " --quiet " + c.args);
@@ -111,6 +123,90 @@ TEST_CASE("ssao-reference --help") {
     CHECK(r.code == 0);
     CHECK(r.output.find("--samples") != std::string::npos);
     CHECK(r.output.find("--dump-buffers") != std::string::npos);
+    CHECK(r.output.find("--limit") != std::string::npos);
+    CHECK(r.output.find("--thickness") != std::string::npos);
+}
+
+TEST_CASE("ssao-reference --limit: limit_ao.exr laid out as reference_ao.exr, sky 1, deterministic; ssao-error splits") {
+    TempDir dir;
+    const std::string a = (dir.path / "a").string(), b = (dir.path / "b").string();
+    const std::string args = " " + kModel + " --width 40 --height 24 --samples 16 --limit --limit-directions 64 --quiet";
+    const Run r = run(kRef + args + " --out " + a);
+    INFO(r.output);
+    REQUIRE(r.code == 0);
+    CHECK(r.output.find("limit     depth-only, thickness") != std::string::npos);
+    CHECK(r.output.find("(0.5 x R)") != std::string::npos);
+    CHECK(r.output.find("limit     vs V_R over all geometry: RMSE") != std::string::npos);
+    for (const char* f : {"limit_ao.exr", "limit_stderr.exr", "limit_ao.png"}) CHECK(fs::exists(fs::path(a) / f));
+    // Same layout: the same size, Y and A, the same coverage; sky is 1 with 0 noise.
+    std::vector<float> ref, cover, lim, lim_cover, lim_se;
+    int w = 0, h = 0, lw = 0, lh = 0;
+    std::string err;
+    REQUIRE(refio::read_exr_channel(a + "/reference_ao.exr", {"Y"}, ref, w, h, err));
+    REQUIRE(refio::read_exr_channel(a + "/reference_ao.exr", {"A"}, cover, w, h, err));
+    REQUIRE(refio::read_exr_channel(a + "/limit_ao.exr", {"Y"}, lim, lw, lh, err));
+    REQUIRE(refio::read_exr_channel(a + "/limit_ao.exr", {"A"}, lim_cover, lw, lh, err));
+    REQUIRE(refio::read_exr_channel(a + "/limit_stderr.exr", {"Y"}, lim_se, lw, lh, err));
+    CHECK(lw == w);
+    CHECK(lh == h);
+    CHECK(lim_cover == cover);
+    size_t sky = 0, geo = 0;
+    for (size_t i = 0; i < lim.size(); ++i) {
+        if (cover[i] < 0.5f) {
+            ++sky;
+            CHECK(lim[i] == 1.0f);
+            CHECK(lim_se[i] == 0.0f);
+        } else {
+            ++geo;
+            CHECK(lim[i] >= 0.0f);
+            CHECK(lim[i] <= 1.0f);
+        }
+    }
+    CHECK(sky > 0);
+    CHECK(geo > 0);
+    // Deterministic for a seed, whatever the thread count.
+    REQUIRE(run(kRef + args + " --threads 1 --out " + b).code == 0);
+    std::vector<float> again;
+    REQUIRE(refio::read_exr_channel(b + "/limit_ao.exr", {"Y"}, again, lw, lh, err));
+    CHECK(again == lim);
+    // --thickness changes it: a height field (inf) blocks at least as much as T = R/2.
+    const std::string c = (dir.path / "c").string();
+    REQUIRE(run(kRef + args + " --thickness inf --out " + c).code == 0);
+    std::vector<float> field;
+    REQUIRE(refio::read_exr_channel(c + "/limit_ao.exr", {"Y"}, field, lw, lh, err));
+    double sum_lim = 0.0, sum_field = 0.0;
+    for (size_t i = 0; i < lim.size(); ++i) {
+        sum_lim += lim[i];
+        sum_field += field[i];
+    }
+    CHECK(sum_field < sum_lim);
+
+    // ssao-error picks the limit up from the folder and splits the error.
+    const Run e = run(kErr + " " + a + "/reference_ao.exr " + a);
+    INFO(e.output);
+    REQUIRE(e.code == 0);
+    CHECK(e.output.find("limit      " + a + "/limit_ao.exr") != std::string::npos);
+    CHECK(e.output.find("limit vs V_R (unavoidable)") != std::string::npos);
+    CHECK(e.output.find("ours vs limit (estimator)") != std::string::npos);
+    // The limit tested against the limit: ours vs limit is exact (PSNR inf) on every mask.
+    const Run self = run(kErr + " " + a + "/limit_ao.exr " + a + "/reference_ao.exr --limit " + a + "/limit_ao.exr");
+    REQUIRE(self.code == 0);
+    CHECK(self.output.find("inf   0.0000\n") != std::string::npos);
+    // A limit from another camera (other coverage) or of another size is refused.
+    const std::string other = (dir.path / "other").string();
+    REQUIRE(run(kRef + args + " --eye 3,2,3 --target 0,0.5,0 --out " + other).code == 0);
+    const Run wrong = run(kErr + " " + a + "/reference_ao.exr " + a + "/reference_ao.exr --limit " + other + "/limit_ao.exr");
+    CHECK(wrong.code != 0);
+    CHECK(wrong.output.find("not from the same scene and camera") != std::string::npos);
+    const std::string small = (dir.path / "small").string();
+    REQUIRE(run(kRef + " " + kModel + " --width 8 --height 8 --samples 1 --limit --limit-directions 8 --quiet --out " +
+                small).code == 0);
+    const Run size = run(kErr + " " + a + "/reference_ao.exr " + a + "/reference_ao.exr --limit " + small + "/limit_ao.exr");
+    CHECK(size.code != 0);
+    CHECK(size.output.find("8x8") != std::string::npos);
+    const Run missing = run(kErr + " " + a + "/reference_ao.exr " + a + " --limit " + a + "/nope.exr");
+    CHECK(missing.code != 0);
+    CHECK(missing.output.find("nope.exr") != std::string::npos);
 }
 
 TEST_CASE("a tiny reference run, compared with itself by ssao-error") {
