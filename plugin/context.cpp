@@ -2,9 +2,10 @@
 // checks, shader compilation, and every GL object made once up front.
 #include "context.h"
 
-#include "kernel.h"
-
+#include "debug.h"
+#include "programs.h"
 #include "uniforms.h"
+
 #include <ssao_shaders_embedded.h>
 
 #include <algorithm>
@@ -180,15 +181,15 @@ ssao_status initialise(ssao_context& ctx, const ssao_context_desc& desc) {
     gl.GetIntegerv(GL_MAX_DRAW_BUFFERS, &ctx.caps.max_draw_buffers);
     gl.GetIntegerv(GL_MAX_CLIP_DISTANCES, &ctx.caps.max_clip_distances);
 
-    ssao_status st = link(ctx, k_ao_frag, "ao.frag", ctx.program_ao);
-    if (st != SSAO_OK) return st;
-    st = link(ctx, k_blur_frag, "blur.frag", ctx.program_blur);
-    if (st != SSAO_OK) return st;
-    ctx.blur_dir_location = gl.GetUniformLocation(ctx.program_blur, "u_blur_dir");
-    ctx.blur_uniforms = {gl.GetUniformLocation(ctx.program_blur, "u_target_origin"),
-                         gl.GetUniformLocation(ctx.program_blur, "u_pack_depth")};
-    ctx.ao_uniforms = {gl.GetUniformLocation(ctx.program_ao, "u_target_origin"),
-                       gl.GetUniformLocation(ctx.program_ao, "u_pack_depth")};
+    ssao_impl::init_debug(ctx);
+
+    for (int i = 0; i < static_cast<int>(ProgramId::count); ++i) {
+        const ProgramInfo& info = program_info(static_cast<ProgramId>(i));
+        const ssao_status st = link(ctx, info.fragment_source, info.file_name, ctx.programs[i]);
+        if (st != SSAO_OK) return st;
+        label_object(ctx, GL_PROGRAM, ctx.programs[i], info.label);
+        ctx.pass_uniforms[i] = find_pass_uniforms(gl, ctx.programs[i]);
+    }
 
     // Object creation binds nothing here: buffers and textures are first bound
     // inside execute, under the state guard.
@@ -205,6 +206,7 @@ ssao_status initialise(ssao_context& ctx, const ssao_context_desc& desc) {
     gl.SamplerParameteri(ctx.sampler, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
     gl.SamplerParameteri(ctx.sampler, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
     gl.SamplerParameteri(ctx.sampler, GL_TEXTURE_COMPARE_MODE, GL_NONE);
+    label_object(ctx, GL_SAMPLER, ctx.sampler, kLabelSampler);  // exists since its first SamplerParameter
 
     ctx.timers = gl.QueryCounter != nullptr && gl.GetQueryObjectui64v != nullptr && gl.GetQueryObjectuiv != nullptr;
     if (ctx.timers) gl.GenQueries(ssao_context::kFrames * ssao_context::kStamps, &ctx.queries[0][0]);
@@ -214,15 +216,16 @@ ssao_status initialise(ssao_context& ctx, const ssao_context_desc& desc) {
 void release(ssao_context& ctx) {
     GladGLContext& gl = ctx.gl;
     if (!ctx.gl_ready) return;  // GL never (fully) loaded: nothing was made
-    if (ctx.program_ao) gl.DeleteProgram(ctx.program_ao);
-    if (ctx.program_blur) gl.DeleteProgram(ctx.program_blur);
+    for (GLuint program : ctx.programs)
+        if (program) gl.DeleteProgram(program);
     if (ctx.vao) gl.DeleteVertexArrays(1, &ctx.vao);
     if (ctx.fbo) gl.DeleteFramebuffers(1, &ctx.fbo);
     if (ctx.ubo_frame) gl.DeleteBuffers(1, &ctx.ubo_frame);
     if (ctx.ubo_kernel) gl.DeleteBuffers(1, &ctx.ubo_kernel);
     if (ctx.noise_texture) gl.DeleteTextures(1, &ctx.noise_texture);
     if (ctx.sampler) gl.DeleteSamplers(1, &ctx.sampler);
-    if (ctx.temp[0] || ctx.temp[1]) gl.DeleteTextures(2, ctx.temp);
+    for (GLuint texture : ctx.intermediates)
+        if (texture) gl.DeleteTextures(1, &texture);
     if (ctx.output) gl.DeleteTextures(1, &ctx.output);
     if (ctx.timers) gl.DeleteQueries(ssao_context::kFrames * ssao_context::kStamps, &ctx.queries[0][0]);
 }
