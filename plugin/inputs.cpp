@@ -155,6 +155,8 @@ ssao_status inspect_textures(ssao_context& ctx, const ssao_inputs& in, GlStateGu
     out.viewport[1] = vy;
     out.viewport[2] = vw;
     out.viewport[3] = vh;
+    out.depth_texture = in.depth_texture;
+    out.normal_texture = in.normal_texture;
     out.output_texture = in.output_texture;
     return SSAO_OK;
 }

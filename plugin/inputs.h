@@ -33,6 +33,7 @@ struct AnalysedInputs {
     // The viewport resolved (all zero = the whole texture) and checked to lie
     // inside the input textures.
     int viewport[4] = {0, 0, 0, 0};
+    uint32_t depth_texture = 0, normal_texture = 0;  // the host's inputs (checked)
     uint32_t output_texture = 0;  // the host's output texture (checked), 0 = the library's own
 };
 

@@ -72,7 +72,7 @@ ssao_status execute(ssao_context& ctx, const ssao_inputs& in, ssao_output* out) 
         reset_unpack(gl);
     }
     PlanTextures textures;
-    st = update_resources(ctx, plan, textures, in.depth_texture, in.normal_texture, in.output_texture);
+    st = update_resources(ctx, plan, analysed, textures);
     if (st != SSAO_OK) return st;
     if (ctx.kernel_dirty) upload_kernel(ctx);
     upload_frame_block(ctx, make_frame_block(ctx.settings, analysed));

@@ -21,6 +21,10 @@
 // direction; a source scale for half resolution, say) are fields of Pass that
 // the runner sets as uniforms of the same name in every program
 // (programs.cpp, PassUniforms); a program without one ignores it.
+// Limits to know: a pass samples at most SSAO_UNITS_USED (4) units, the ones
+// the state guard saves and the ABI documents; an intermediate of a new
+// format needs its TexFormat here and its GL triple in resources.cpp
+// (gl_format); a pass writes one colour target.
 #pragma once
 
 #include "inputs.h"
@@ -79,7 +83,7 @@ struct Rect {
 
 struct Pass {
     PassKind kind = PassKind::ao;
-    ProgramId program = ProgramId::none;
+    ProgramId program = ProgramId::none;  // none: no draw, the rectangle is cleared to 1 (the clear pass)
     // What the pass samples, by texture unit (SSAO_UNIT_*). The runner binds
     // these; a unit left `none` keeps what it holds unless that is unknown
     // (the host's) or the pass's own target, which it unbinds, so a pass never

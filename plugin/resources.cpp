@@ -74,8 +74,7 @@ bool resources_stale(const ssao_context& ctx, const FramePlan& plan) {
     return output_stale(ctx, plan);
 }
 
-ssao_status update_resources(ssao_context& ctx, const FramePlan& plan, PlanTextures& out, GLuint depth,
-                             GLuint normal, GLuint host_output) {
+ssao_status update_resources(ssao_context& ctx, const FramePlan& plan, const AnalysedInputs& in, PlanTextures& out) {
     const GladGLContext& gl = ctx.gl;
     gl.ActiveTexture(GL_TEXTURE0 + SSAO_UNIT_AO);
     for (int i = 0; i < plan.intermediate_count; ++i) {
@@ -92,10 +91,10 @@ ssao_status update_resources(ssao_context& ctx, const FramePlan& plan, PlanTextu
         ctx.output_format = plan.output_format;
     }
 
-    out.depth = depth;
-    out.normal = normal;
+    out.depth = in.depth_texture;
+    out.normal = in.normal_texture;
     out.noise = ctx.noise_texture;
-    out.output = plan.owned_output ? ctx.output : host_output;
+    out.output = plan.owned_output ? ctx.output : in.output_texture;
     for (int i = 0; i < kMaxIntermediates; ++i) out.intermediates[i] = ctx.intermediates[i];
 
     gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, out.output, 0);

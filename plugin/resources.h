@@ -27,8 +27,7 @@ bool resources_stale(const ssao_context& ctx, const FramePlan& plan);
 // output was (re)allocated its framebuffer completeness is checked:
 // SSAO_ERROR_FRAMEBUFFER when incomplete. Leaves the final output attached to
 // the library's framebuffer (bound).
-ssao_status update_resources(ssao_context& ctx, const FramePlan& plan, PlanTextures& out,
-                             GLuint depth, GLuint normal, GLuint host_output);
+ssao_status update_resources(ssao_context& ctx, const FramePlan& plan, const AnalysedInputs& in, PlanTextures& out);
 
 // Default unpack state for the library's uploads (after the guard saved the host's).
 void reset_unpack(const GladGLContext& gl);
