@@ -3,6 +3,8 @@
 // crosses the boundary.
 #include "context.h"
 #include "settings.h"
+#include "struct_versions.h"
+#include "timers.h"
 
 #include <memory>
 #include <new>
@@ -159,12 +161,11 @@ ssao_status SSAO_CALL api_execute(ssao_context* ctx, const ssao_inputs* inputs, 
 
 ssao_status SSAO_CALL api_get_timings(ssao_context* ctx, ssao_timings* out) {
     if (!ctx || !out) return ctx ? ctx->fail(SSAO_ERROR_NULL_POINTER, "timings is NULL") : SSAO_ERROR_NULL_POINTER;
-    if (out->size != sizeof(ssao_timings))
-        return ctx->fail(SSAO_ERROR_STRUCT_SIZE, "ssao_timings.size does not match this library");
+    if (!ssao_impl::is_known_size<ssao_timings>(out->size))
+        return ctx->fail(SSAO_ERROR_STRUCT_SIZE, "ssao_timings.size matches no version of ssao_timings this library knows");
     return guarded(ctx, [&] {
         ssao_impl::collect_timings(*ctx);
-        *out = ctx->timings;
-        out->size = sizeof(ssao_timings);
+        ssao_impl::write_prefix(out, ctx->timings);  // a 1.0 caller gets the fields up to total_ms
         return SSAO_OK;
     });
 }

@@ -2,9 +2,10 @@
 // checks, shader compilation, and every GL object made once up front.
 #include "context.h"
 
-#include "kernel.h"
-
+#include "debug.h"
+#include "programs.h"
 #include "uniforms.h"
+
 #include <ssao_shaders_embedded.h>
 
 #include <algorithm>
@@ -32,16 +33,13 @@ GLADapiproc load_with_user(void* userptr, const char* name) {
     return reinterpret_cast<GLADapiproc>(u->fn(u->user, name));
 }
 
-// What a fragment shader is built on besides the constants.
-enum class Shared { none, common, common_and_sampling };
-
 // #version first, then the shared constants and code, then the pass's own code.
-std::string assemble(const char* body, Shared shared) {
+std::string assemble(const char* body, SharedCode shared) {
     std::string s = "#version 330 core\n";
     s += k_ssao_constants_h;
     s += "\n";
-    if (shared != Shared::none) s += k_common_glsl;
-    if (shared == Shared::common_and_sampling) s += k_sampling_glsl;
+    if (shared != SharedCode::none) s += k_common_glsl;
+    if (shared == SharedCode::common_and_sampling) s += k_sampling_glsl;
     s += "\n#line 1\n";
     s += body;
     return s;
@@ -66,10 +64,10 @@ bool compile(ssao_context& ctx, GLenum type, const std::string& source, const ch
     return true;
 }
 
-ssao_status link(ssao_context& ctx, const char* fragment_body, Shared shared, const char* name, GLuint& program) {
+ssao_status link(ssao_context& ctx, const char* fragment_body, SharedCode shared, const char* name, GLuint& program) {
     const GladGLContext& gl = ctx.gl;
     GLuint vs = 0, fs = 0;
-    if (!compile(ctx, GL_VERTEX_SHADER, assemble(k_fullscreen_vert, Shared::none), "fullscreen.vert", vs))
+    if (!compile(ctx, GL_VERTEX_SHADER, assemble(k_fullscreen_vert, SharedCode::none), "fullscreen.vert", vs))
         return SSAO_ERROR_SHADER;
     if (!compile(ctx, GL_FRAGMENT_SHADER, assemble(fragment_body, shared), name, fs)) {
         gl.DeleteShader(vs);
@@ -184,19 +182,15 @@ ssao_status initialise(ssao_context& ctx, const ssao_context_desc& desc) {
     gl.GetIntegerv(GL_MAX_DRAW_BUFFERS, &ctx.caps.max_draw_buffers);
     gl.GetIntegerv(GL_MAX_CLIP_DISTANCES, &ctx.caps.max_clip_distances);
 
-    ssao_status st = link(ctx, k_ao_frag, Shared::common_and_sampling, "ao.frag", ctx.program_ao);
-    if (st != SSAO_OK) return st;
-    st = link(ctx, k_visibility_frag, Shared::common_and_sampling, "visibility.frag", ctx.program_visibility);
-    if (st != SSAO_OK) return st;
-    st = link(ctx, k_blur_frag, Shared::common, "blur.frag", ctx.program_blur);
-    if (st != SSAO_OK) return st;
-    ctx.blur_dir_location = gl.GetUniformLocation(ctx.program_blur, "u_blur_dir");
-    ctx.blur_uniforms = {gl.GetUniformLocation(ctx.program_blur, "u_target_origin"),
-                         gl.GetUniformLocation(ctx.program_blur, "u_pack_depth")};
-    ctx.ao_uniforms = {gl.GetUniformLocation(ctx.program_ao, "u_target_origin"),
-                       gl.GetUniformLocation(ctx.program_ao, "u_pack_depth")};
-    ctx.visibility_uniforms = {gl.GetUniformLocation(ctx.program_visibility, "u_target_origin"),
-                               gl.GetUniformLocation(ctx.program_visibility, "u_pack_depth")};
+    ssao_impl::init_debug(ctx);
+
+    for (int i = 0; i < static_cast<int>(ProgramId::count); ++i) {
+        const ProgramInfo& info = program_info(static_cast<ProgramId>(i));
+        const ssao_status st = link(ctx, info.fragment_source, info.shared, info.file_name, ctx.programs[i]);
+        if (st != SSAO_OK) return st;
+        label_object(ctx, GL_PROGRAM, ctx.programs[i], info.label);
+        ctx.pass_uniforms[i] = find_pass_uniforms(gl, ctx.programs[i]);
+    }
 
     // Object creation binds nothing here: buffers and textures are first bound
     // inside execute, under the state guard.
@@ -213,6 +207,7 @@ ssao_status initialise(ssao_context& ctx, const ssao_context_desc& desc) {
     gl.SamplerParameteri(ctx.sampler, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
     gl.SamplerParameteri(ctx.sampler, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
     gl.SamplerParameteri(ctx.sampler, GL_TEXTURE_COMPARE_MODE, GL_NONE);
+    label_object(ctx, GL_SAMPLER, ctx.sampler, kLabelSampler);  // exists since its first SamplerParameter
 
     ctx.timers = gl.QueryCounter != nullptr && gl.GetQueryObjectui64v != nullptr && gl.GetQueryObjectuiv != nullptr;
     if (ctx.timers) gl.GenQueries(ssao_context::kFrames * ssao_context::kStamps, &ctx.queries[0][0]);
@@ -222,16 +217,16 @@ ssao_status initialise(ssao_context& ctx, const ssao_context_desc& desc) {
 void release(ssao_context& ctx) {
     GladGLContext& gl = ctx.gl;
     if (!ctx.gl_ready) return;  // GL never (fully) loaded: nothing was made
-    if (ctx.program_ao) gl.DeleteProgram(ctx.program_ao);
-    if (ctx.program_blur) gl.DeleteProgram(ctx.program_blur);
-    if (ctx.program_visibility) gl.DeleteProgram(ctx.program_visibility);
+    for (GLuint program : ctx.programs)
+        if (program) gl.DeleteProgram(program);
     if (ctx.vao) gl.DeleteVertexArrays(1, &ctx.vao);
     if (ctx.fbo) gl.DeleteFramebuffers(1, &ctx.fbo);
     if (ctx.ubo_frame) gl.DeleteBuffers(1, &ctx.ubo_frame);
     if (ctx.ubo_kernel) gl.DeleteBuffers(1, &ctx.ubo_kernel);
     if (ctx.noise_texture) gl.DeleteTextures(1, &ctx.noise_texture);
     if (ctx.sampler) gl.DeleteSamplers(1, &ctx.sampler);
-    if (ctx.temp[0] || ctx.temp[1]) gl.DeleteTextures(2, ctx.temp);
+    for (GLuint texture : ctx.intermediates)
+        if (texture) gl.DeleteTextures(1, &texture);
     if (ctx.output) gl.DeleteTextures(1, &ctx.output);
     if (ctx.timers) gl.DeleteQueries(ssao_context::kFrames * ssao_context::kStamps, &ctx.queries[0][0]);
 }

@@ -1,8 +1,15 @@
 // context.h - the opaque ssao_context: the GL function table, the compiled
 // programs, the GL objects, the resolved settings and the timer ring.
+// execute (passes.cpp) runs: check_inputs / inspect_textures (inputs.cpp) ->
+// plan_frame (plan.cpp, pure) -> update_resources (resources.cpp) -> frame
+// constants (constants.cpp) -> run_plan (runner.cpp, with timers.cpp and the
+// debug groups of debug.cpp).
 #pragma once
 
+#include "debug.h"
 #include "gl_state_guard.h"
+#include "plan.h"
+#include "programs.h"
 #include "projection.h"
 #include "uniforms.h"
 
@@ -25,28 +32,37 @@ struct ssao_context {
     bool frame_uploaded = false;
     bool kernel_dirty = true;   // kernel / noise need uploading
 
-    GLuint program_ao = 0, program_visibility = 0, program_blur = 0;
-    // Per-pass uniforms of each program (program state, not the host's).
-    struct PassUniforms {
-        GLint target_origin = -1, pack_depth = -1;
-    } ao_uniforms, visibility_uniforms, blur_uniforms;
-    GLint blur_dir_location = -1;
+    // The compiled programs, one per ProgramId (programs.cpp), and the
+    // locations of the per-pass uniforms in each.
+    GLuint programs[static_cast<int>(ssao_impl::ProgramId::count)] = {};
+    ssao_impl::PassUniforms pass_uniforms[static_cast<int>(ssao_impl::ProgramId::count)] = {};
     GLuint vao = 0, fbo = 0, ubo_frame = 0, ubo_kernel = 0, noise_texture = 0, sampler = 0;
 
-    // Intermediate (RG32F: AO and view z) textures and the plugin-owned output, viewport-sized.
-    GLuint temp[2] = {0, 0};
-    int temp_width = 0, temp_height = 0;
+    // The plan's intermediate textures, each with the size and format it was
+    // last allocated at, and the plugin-owned output (resources.cpp). They
+    // are reallocated only when the plan's needs change.
+    GLuint intermediates[ssao_impl::kMaxIntermediates] = {};
+    ssao_impl::Intermediate intermediate_specs[ssao_impl::kMaxIntermediates] = {};
     GLuint output = 0;
     int output_width = 0, output_height = 0;
-    ssao_output_format output_format = SSAO_OUTPUT_DEFAULT;
+    ssao_impl::TexFormat output_format = ssao_impl::TexFormat::r8;
 
-    // Timestamp queries: kFrames frames in flight, kStamps per frame.
-    static constexpr int kFrames = 8, kStamps = 3;  // a CPU up to 8 frames ahead is still measured
+    // Timestamp queries (timers.cpp): kFrames frames in flight, one stamp
+    // before the first pass and one after each pass.
+    static constexpr int kFrames = 8, kStamps = ssao_impl::kMaxPasses + 1;  // a CPU up to 8 frames ahead is still measured
     GLuint queries[kFrames][kStamps] = {};
     uint64_t query_frame[kFrames] = {};  // which execute filled the slot; 0 = empty
+    struct TimedPasses {
+        int count = 0;
+        ssao_impl::PassKind kinds[ssao_impl::kMaxPasses] = {};
+    } query_passes[kFrames];             // the passes the slot's stamps follow
+    bool query_labelled[kFrames][kStamps] = {};
     bool timers = false;
     ssao_timings timings{};
     uint64_t frame = 0;
+
+    // KHR_debug (debug.cpp): groups and labels, or nothing without it.
+    ssao_impl::DebugState debug;
 
     ssao_frame_info info{};
 
@@ -61,6 +77,5 @@ namespace ssao_impl {
 ssao_status initialise(ssao_context& ctx, const ssao_context_desc& desc);
 void release(ssao_context& ctx);
 ssao_status execute(ssao_context& ctx, const ssao_inputs& inputs, ssao_output* out);
-void collect_timings(ssao_context& ctx);
 
 }  // namespace ssao_impl

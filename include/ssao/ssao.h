@@ -75,6 +75,14 @@
  * - Requirements: a GL 3.3 core context or newer. Clip control (4.5 or
  *   ARB_clip_control), timer queries and GL_TEXTURE_TARGET queries (4.5) are
  *   used when present.
+ * - Debug names: with KHR_debug (GL 4.3 or the extension) execute wraps its
+ *   work in the debug group "ssao" and each pass in its own ("ssao: ao", ...);
+ *   pushes and pops are balanced on every return, so the debug-group stack
+ *   depth is unchanged, and no group is pushed when the stack has no room for
+ *   two more. The library's GL objects carry glObjectLabel names "ssao: ...".
+ *   The host sees the group messages in its debug callback (type
+ *   GL_DEBUG_TYPE_PUSH_GROUP / POP_GROUP, source APPLICATION). Without
+ *   KHR_debug nothing of this is called.
  */
 #ifndef SSAO_SSAO_H
 #define SSAO_SSAO_H
@@ -106,6 +114,7 @@ extern "C" {
 #define SSAO_MAX_STEPS 32
 #define SSAO_MAX_DIMENSION 16384
 #define SSAO_TEXTURE_UNITS_USED 4
+#define SSAO_MAX_PASSES 8          /* passes of one execute: room in ssao_timings (1.1) */
 
 /* ---------------------------------------------------------------- status */
 typedef enum ssao_status {
@@ -320,19 +329,30 @@ typedef enum ssao_pass {
     SSAO_PASS_BLUR_X = 2,        /* horizontal blur (or the box blur's single pass) */
     SSAO_PASS_BLUR_Y = 4,        /* vertical blur */
     SSAO_PASS_CLEAR = 8, /* strength 0: output cleared to 1, nothing sampled */
+    /* Where KHR_debug is present each pass runs inside a debug group named
+     * "ssao: ao", "ssao: blur x", "ssao: blur y" or "ssao: clear", all inside
+     * one group "ssao" (see the README, "Debugger names"). */
     SSAO_PASS_MAX_ENUM = 0x7fffffff  /* not a value: keeps the enum 32 bits wide */
 } ssao_pass;
 
 /* GPU times of one earlier frame, from timestamp queries read without
  * stalling: results arrive a few frames late. Needs timer queries (GL 3.3
- * core has them). */
+ * core has them). One timestamp is taken before the first pass and one after
+ * each pass, so the per-pass times add up to total_ms.
+ * Versions: 1.0 ends at total_ms (40 bytes); 1.1 appends the per-pass times.
+ * get_timings fills as much as the caller's size says (either version). */
 typedef struct ssao_timings {
     uint32_t size;               /* sizeof(ssao_timings) */
     uint32_t available;          /* 1 when the fields below hold a measured frame */
     uint64_t frame;              /* which successful execute (1 = first) they were measured on */
-    double ao_ms;                /* sampling pass (or clear) */
+    double ao_ms;                /* sampling pass (or clear): every pass that is not a blur */
     double blur_ms;              /* all blur passes */
-    double total_ms;             /* whole execute on the GPU */
+    double total_ms;             /* whole execute on the GPU (= the sum of pass_ms) */
+    /* 1.1 */
+    uint32_t pass_count;         /* passes that frame ran, 1..SSAO_MAX_PASSES (0 when not available) */
+    uint32_t pass_kind[SSAO_MAX_PASSES]; /* the ssao_pass value of pass i, in the order they ran; 0 beyond pass_count */
+    uint32_t reserved;           /* 0; keeps pass_ms 8-byte aligned without implicit padding */
+    double pass_ms[SSAO_MAX_PASSES];     /* GPU time of pass i; 0 beyond pass_count */
 } ssao_timings;
 
 /* What the library read from the last execute's inputs (for tests and tools). */
@@ -411,7 +431,9 @@ typedef struct ssao_api {
     ssao_status (SSAO_CALL *execute)(ssao_context* ctx, const ssao_inputs* inputs, ssao_output* out);
 
     /* GPU times of the newest frame whose queries have completed, without
-     * waiting. available = 0 until one has. Returns OK, NULL_POINTER, STRUCT_SIZE. */
+     * waiting. available = 0 until one has. out->size may be the 1.0 size
+     * (40: only the fields up to total_ms are written) or sizeof(ssao_timings);
+     * out->size is left as given. Returns OK, NULL_POINTER, STRUCT_SIZE. */
     ssao_status (SSAO_CALL *get_timings)(ssao_context* ctx, ssao_timings* out);
 
     /* What the last successful execute read from its inputs. Returns OK,

@@ -50,6 +50,8 @@ typedef struct unit_layout {
     UNIT_FIELD(ssao_output, passes_run) \
     UNIT_FIELD(ssao_timings, size) UNIT_FIELD(ssao_timings, available) UNIT_FIELD(ssao_timings, frame) \
     UNIT_FIELD(ssao_timings, ao_ms) UNIT_FIELD(ssao_timings, blur_ms) UNIT_FIELD(ssao_timings, total_ms) \
+    UNIT_FIELD(ssao_timings, pass_count) UNIT_FIELD(ssao_timings, pass_kind) UNIT_FIELD(ssao_timings, reserved) \
+    UNIT_FIELD(ssao_timings, pass_ms) \
     UNIT_FIELD(ssao_frame_info, size) UNIT_FIELD(ssao_frame_info, orthographic) \
     UNIT_FIELD(ssao_frame_info, reverse_z) UNIT_FIELD(ssao_frame_info, infinite_far) \
     UNIT_FIELD(ssao_frame_info, depth_bits) UNIT_FIELD(ssao_frame_info, near_distance) \

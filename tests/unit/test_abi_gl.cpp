@@ -771,3 +771,106 @@ TEST_CASE("abi: get_timings has nothing before the first execute and a measured 
     CHECK(t.total_ms == doctest::Approx(t.ao_ms + t.blur_ms).epsilon(1e-6));
     CHECK(t.total_ms < 10000.0);
 }
+
+namespace {
+
+// Executes with `s` until get_timings (full size) reports a frame measured
+// with these settings. `executes` counts the fixture's successful executes,
+// which is how the library numbers frames (ssao_timings.frame).
+ssao_timings measured_timings(GlFixture& f, const Scene& scene, const ssao_settings& s, uint64_t& executes) {
+    set_settings_ok(f, s);
+    const uint64_t first = executes + 1;
+    for (int i = 0; i < 24; ++i) {
+        REQUIRE(api().execute(f.ctx, &scene.inputs, nullptr) == SSAO_OK);
+        ++executes;
+        f.gl().Finish();
+        ssao_timings t = sentinel<ssao_timings>();
+        REQUIRE(api().get_timings(f.ctx, &t) == SSAO_OK);
+        if (t.available == 1u && t.frame >= first) return t;
+    }
+    FAIL("no frame was measured");
+    return sized<ssao_timings>();
+}
+
+}  // namespace
+
+TEST_CASE("abi: get_timings reports one GPU time per pass, in the order the passes ran") {
+    GlFixture f;
+    Scene scene(f.gl(), 64, 64);
+    ssao_settings box = with_blur(SSAO_BLUR_BOX_4X4), off = sized<ssao_settings>();
+    off.strength = SSAO_STRENGTH_OFF;
+    struct Expect {
+        const char* what;
+        ssao_settings settings;
+        std::vector<uint32_t> kinds;
+    };
+    const Expect expect[] = {
+        {"depth-aware", with_blur(SSAO_BLUR_DEPTH_AWARE), {SSAO_PASS_AO, SSAO_PASS_BLUR_X, SSAO_PASS_BLUR_Y}},
+        {"box", box, {SSAO_PASS_AO, SSAO_PASS_BLUR_X}},
+        {"no blur", with_blur(SSAO_BLUR_NONE), {SSAO_PASS_AO}},
+        {"strength off", off, {SSAO_PASS_CLEAR}},
+    };
+    uint64_t executes = 0;
+    for (const Expect& e : expect) {
+        const std::string what_ = e.what;
+        CAPTURE(what_);
+        const ssao_timings t = measured_timings(f, scene, e.settings, executes);
+        CHECK(t.size == sizeof(ssao_timings));
+        REQUIRE(t.pass_count == e.kinds.size());
+        double sum = 0.0, blur = 0.0;
+        for (uint32_t i = 0; i < SSAO_MAX_PASSES; ++i) {
+            CAPTURE(i);
+            if (i < t.pass_count) {
+                CHECK(t.pass_kind[i] == e.kinds[i]);
+                CHECK(t.pass_ms[i] >= 0.0);
+                sum += t.pass_ms[i];
+                if (t.pass_kind[i] == SSAO_PASS_BLUR_X || t.pass_kind[i] == SSAO_PASS_BLUR_Y) blur += t.pass_ms[i];
+            } else {
+                CHECK(t.pass_kind[i] == 0u);  // zero beyond pass_count, not stale values of a longer plan
+                CHECK(t.pass_ms[i] == 0.0);
+            }
+        }
+        CHECK(t.reserved == 0u);
+        // The stamps are shared: the passes add up to the whole, and the two
+        // summary figures are the blur passes and the rest.
+        CHECK(sum == doctest::Approx(t.total_ms).epsilon(1e-9));
+        CHECK(t.blur_ms == doctest::Approx(blur).epsilon(1e-9));
+        CHECK(t.ao_ms == doctest::Approx(t.total_ms - blur).epsilon(1e-9));
+    }
+}
+
+TEST_CASE("abi: get_timings accepts the 1.0 size (fills the prefix only) and the 1.1 size, nothing else") {
+    GlFixture f;
+    Scene scene(f.gl(), kW, kH);
+    uint64_t executes = 0;
+    const ssao_timings full = measured_timings(f, scene, sized<ssao_settings>(), executes);
+    REQUIRE(full.available == 1u);
+    REQUIRE(full.pass_count == 3u);
+
+    // A host compiled against the 1.0 header: 40 bytes, ending at total_ms.
+    constexpr uint32_t kSize10 = 40;
+    ssao_timings old = sentinel<ssao_timings>();
+    old.size = kSize10;
+    const ssao_timings old_before = old;
+    REQUIRE(api().get_timings(f.ctx, &old) == SSAO_OK);
+    CHECK(old.size == kSize10);  // left as the caller set it
+    CHECK(old.available == 1u);
+    CHECK(old.frame == full.frame);  // no execute in between: the same frame
+    CHECK(old.ao_ms == full.ao_ms);
+    CHECK(old.blur_ms == full.blur_ms);
+    CHECK(old.total_ms == full.total_ms);
+    // Nothing past the 1.0 struct is written (it is not the host's memory).
+    CHECK(std::memcmp(reinterpret_cast<const char*>(&old) + kSize10,
+                      reinterpret_cast<const char*>(&old_before) + kSize10, sizeof old - kSize10) == 0);
+
+    for (uint32_t size : {0u, 39u, 41u, 44u, 48u, static_cast<uint32_t>(sizeof(ssao_timings) - 8),
+                          static_cast<uint32_t>(sizeof(ssao_timings) + 8)}) {
+        CAPTURE(size);
+        ssao_timings t = sentinel<ssao_timings>();
+        t.size = size;
+        const ssao_timings before = t;
+        CHECK(api().get_timings(f.ctx, &t) == SSAO_ERROR_STRUCT_SIZE);
+        CHECK(same_bytes(t, before));
+        CHECK(contains(f.last_error(), "ssao_timings"));
+    }
+}

@@ -62,6 +62,13 @@ TEST_CASE("abi: ssao_get_api rejects NULL and a too-small table and other versio
         CHECK(get_api(version, &table) == SSAO_ERROR_VERSION_MISMATCH);
         CHECK(same_bytes(table, before));
     }
+    // A 1.0 host and a 1.1 host are both served by this 1.1 library.
+    for (uint32_t version : {SSAO_MAKE_VERSION(1, 1), SSAO_MAKE_VERSION(1, 0)}) {
+        CAPTURE(version);
+        ssao_api t = sentinel<ssao_api>();
+        REQUIRE(get_api(version, &t) == SSAO_OK);
+        CHECK(t.version == SSAO_MAKE_VERSION(1, 1));
+    }
     ssao_api table = sentinel<ssao_api>();
     REQUIRE(get_api(SSAO_MAKE_VERSION(1, 0), &table) == SSAO_OK);
     CHECK(table.version == SSAO_API_VERSION);

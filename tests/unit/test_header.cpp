@@ -25,7 +25,7 @@ static_assert(std::is_same<decltype(ssao_context_desc::log), ssao_log_fn>::value
 static_assert(std::is_standard_layout<ssao_settings>::value && std::is_trivially_copyable<ssao_settings>::value, "");
 static_assert(std::is_standard_layout<ssao_inputs>::value && std::is_trivially_copyable<ssao_inputs>::value, "");
 static_assert(std::is_standard_layout<ssao_api>::value && std::is_trivially_copyable<ssao_api>::value, "");
-static_assert(SSAO_API_VERSION == 0x00010001u, "");
+static_assert(SSAO_API_VERSION == 0x00010001u, "");  // 1.1: settings.method/thickness/step_count, per-pass timings
 static_assert(SSAO_MAKE_VERSION(3, 7) == 0x00030007u, "");
 static_assert(SSAO_VERSION_MAJOR(SSAO_MAKE_VERSION(3, 7)) == 3u && SSAO_VERSION_MINOR(SSAO_MAKE_VERSION(3, 7)) == 7u, "");
 
@@ -35,6 +35,15 @@ static_assert(offsetof(ssao_settings, size) == 0 && offsetof(ssao_inputs, size) 
                   offsetof(ssao_frame_info, size) == 0 && offsetof(ssao_context_desc, size) == 0 &&
                   offsetof(ssao_api, size) == 0,
               "");
+
+// Append-only: ssao_timings 1.0 (40 bytes) is a prefix of 1.1, field for field.
+static_assert(offsetof(ssao_timings, available) == 4 && offsetof(ssao_timings, frame) == 8 &&
+                  offsetof(ssao_timings, ao_ms) == 16 && offsetof(ssao_timings, blur_ms) == 24 &&
+                  offsetof(ssao_timings, total_ms) == 32 && offsetof(ssao_timings, pass_count) == 40,
+              "the 1.0 fields of ssao_timings moved");
+static_assert(offsetof(ssao_timings, pass_ms) % 8 == 0 && sizeof(ssao_timings) == 40 + 4 + 4 * SSAO_MAX_PASSES + 4 +
+                                                                                     8 * SSAO_MAX_PASSES,
+              "ssao_timings 1.1 has padding");
 
 unit_layout cxx_layout(unit_type t) {
     switch (t) {

@@ -1,0 +1,164 @@
+// inputs.cpp - validation and analysis of ssao_inputs (moved unchanged out of
+// execute): every refusal happens here, before anything of the library's
+// changes, so a refused call leaves the library's own output as it was.
+#include "inputs.h"
+
+#include "context.h"
+
+#include <cmath>
+#include <string>
+
+namespace ssao_impl {
+
+namespace {
+
+// Is `name` a GL_TEXTURE_2D? Without GL 4.5's GL_TEXTURE_TARGET query only
+// "is a texture" can be checked without raising a GL error.
+bool is_texture_2d(ssao_context& ctx, GLuint name) {
+    if (name == 0 || !ctx.gl.IsTexture(name)) return false;
+    if (ctx.caps.texture_target_query) {
+        GLint target = 0;
+        ctx.gl.GetTextureParameteriv(name, GL_TEXTURE_TARGET, &target);
+        return target == GL_TEXTURE_2D;
+    }
+    return true;
+}
+
+// Binds `name` to GL_TEXTURE_2D on `unit` and says whether it took: below GL
+// 4.5 a name of another target cannot be recognised beforehand, the bind then
+// fails (raising GL_INVALID_OPERATION) and leaves the previous binding.
+bool bind_2d(const GladGLContext& gl, GLuint unit, GLuint name) {
+    gl.ActiveTexture(GL_TEXTURE0 + unit);
+    gl.BindTexture(GL_TEXTURE_2D, name);
+    GLint bound = 0;
+    gl.GetIntegerv(GL_TEXTURE_BINDING_2D, &bound);
+    return static_cast<GLuint>(bound) == name;
+}
+
+void level0_size(const GladGLContext& gl, int& w, int& h) {
+    gl.GetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_WIDTH, &w);
+    gl.GetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_HEIGHT, &h);
+}
+
+}  // namespace
+
+ssao_status check_inputs(ssao_context& ctx, const ssao_inputs& in, AnalysedInputs& out) {
+    if (static_cast<int>(in.normal_space) < 0 || in.normal_space > SSAO_NORMAL_SPACE_WORLD)
+        return ctx.fail(SSAO_ERROR_INVALID_ENUM, "inputs.normal_space is not an ssao_normal_space");
+    if (static_cast<int>(in.normal_packing) < 0 || in.normal_packing > SSAO_NORMAL_PACKING_SIGNED)
+        return ctx.fail(SSAO_ERROR_INVALID_ENUM, "inputs.normal_packing is not an ssao_normal_packing");
+    if (static_cast<int>(in.clip_range) < 0 || in.clip_range > SSAO_CLIP_ZERO_TO_ONE)
+        return ctx.fail(SSAO_ERROR_INVALID_ENUM, "inputs.clip_range is not an ssao_clip_range");
+    const bool world_normals = in.normal_space == SSAO_NORMAL_SPACE_WORLD;
+    if (world_normals) {
+        for (float v : in.view_matrix)
+            if (!std::isfinite(v)) return ctx.fail(SSAO_ERROR_INVALID_VALUE, "inputs.view_matrix is not finite");
+    }
+    ProjectionInfo proj;
+    std::string why;
+    const ssao_status pst = analyse_projection(in.projection, in.clip_range, proj, why);
+    if (pst != SSAO_OK) return ctx.fail(pst, "inputs.projection: " + why);
+    if (in.depth_texture == 0) return ctx.fail(SSAO_ERROR_INVALID_TEXTURE, "inputs.depth_texture is 0");
+    if (in.normal_texture == 0) return ctx.fail(SSAO_ERROR_INVALID_TEXTURE, "inputs.normal_texture is 0");
+    if (!is_texture_2d(ctx, in.depth_texture))
+        return ctx.fail(SSAO_ERROR_INVALID_TEXTURE, "inputs.depth_texture is not the name of a GL_TEXTURE_2D");
+    if (!is_texture_2d(ctx, in.normal_texture))
+        return ctx.fail(SSAO_ERROR_INVALID_TEXTURE, "inputs.normal_texture is not the name of a GL_TEXTURE_2D");
+    if (in.output_texture != 0 && !is_texture_2d(ctx, in.output_texture))
+        return ctx.fail(SSAO_ERROR_INVALID_TEXTURE, "inputs.output_texture is not the name of a GL_TEXTURE_2D");
+    if (in.output_texture != 0 && (in.output_texture == in.depth_texture || in.output_texture == in.normal_texture))
+        return ctx.fail(SSAO_ERROR_INVALID_TEXTURE, "inputs.output_texture is also an input (a feedback loop)");
+
+    out.proj = proj;
+    out.world_normals = world_normals;
+    out.normal_to_view = glm::dmat4(1.0);
+    if (world_normals) {
+        for (int c = 0; c < 3; ++c)
+            for (int r = 0; r < 3; ++r) out.normal_to_view[c][r] = in.view_matrix[c * 4 + r];
+    }
+    out.signed_normals = in.normal_packing == SSAO_NORMAL_PACKING_SIGNED;
+    return SSAO_OK;
+}
+
+ssao_status inspect_textures(ssao_context& ctx, const ssao_inputs& in, GlStateGuard& guard, AnalysedInputs& out) {
+    const GladGLContext& gl = ctx.gl;
+    if (!bind_2d(gl, SSAO_UNIT_DEPTH, in.depth_texture))
+        return ctx.fail(SSAO_ERROR_INVALID_TEXTURE, "inputs.depth_texture is not a GL_TEXTURE_2D (it did not bind)");
+    int dw = 0, dh = 0;
+    level0_size(gl, dw, dh);
+    DepthFormat fmt;
+    GLint depth_bits = 0, depth_type = 0, stencil_bits = 0;
+    gl.GetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_DEPTH_SIZE, &depth_bits);
+    gl.GetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_DEPTH_TYPE, &depth_type);
+    gl.GetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_STENCIL_SIZE, &stencil_bits);
+    fmt.bits = depth_bits;
+    fmt.is_float = depth_type == GL_FLOAT;
+    fmt.has_stencil = stencil_bits > 0;
+    const bool supported = (fmt.bits == 16 && !fmt.is_float) || (fmt.bits == 24 && !fmt.is_float) ||
+                           (fmt.bits == 32 && fmt.is_float);
+    if (!supported)
+        return ctx.fail(SSAO_ERROR_UNSUPPORTED_FORMAT,
+                        "inputs.depth_texture has " + std::to_string(fmt.bits) + (fmt.is_float ? "-bit float" : "-bit") +
+                            " depth; D16, D24, D24S8, D32F or D32FS8 is required");
+    if (fmt.has_stencil) {
+        guard.save_depth_stencil_mode(in.depth_texture, SSAO_UNIT_DEPTH);
+        if (ctx.caps.depth_stencil_mode)
+            gl.TexParameteri(GL_TEXTURE_2D, GL_DEPTH_STENCIL_TEXTURE_MODE, GL_DEPTH_COMPONENT);
+    }
+    if (!bind_2d(gl, SSAO_UNIT_NORMAL, in.normal_texture))
+        return ctx.fail(SSAO_ERROR_INVALID_TEXTURE, "inputs.normal_texture is not a GL_TEXTURE_2D (it did not bind)");
+    int nw = 0, nh = 0;
+    level0_size(gl, nw, nh);
+    GLint red_bits = 0, blue_bits = 0, red_type = 0;
+    gl.GetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_RED_SIZE, &red_bits);
+    gl.GetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_BLUE_SIZE, &blue_bits);
+    gl.GetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_RED_TYPE, &red_type);
+    if (nw != dw || nh != dh)
+        return ctx.fail(SSAO_ERROR_INVALID_TEXTURE, "inputs.normal_texture is " + std::to_string(nw) + "x" +
+                                                        std::to_string(nh) + " but the depth texture is " +
+                                                        std::to_string(dw) + "x" + std::to_string(dh));
+    if (red_bits <= 0 || blue_bits <= 0)
+        return ctx.fail(SSAO_ERROR_UNSUPPORTED_FORMAT, "inputs.normal_texture needs three colour channels (x, y, z)");
+    if (red_type == GL_INT || red_type == GL_UNSIGNED_INT)
+        return ctx.fail(SSAO_ERROR_UNSUPPORTED_FORMAT,
+                        "inputs.normal_texture has an integer format; a float, unorm or snorm one is needed");
+
+    int vx = in.viewport[0], vy = in.viewport[1], vw = in.viewport[2], vh = in.viewport[3];
+    if (vx == 0 && vy == 0 && vw == 0 && vh == 0) { vw = dw; vh = dh; }
+    if (vw <= 0 || vh <= 0 || vw > SSAO_MAX_DIMENSION || vh > SSAO_MAX_DIMENSION)
+        return ctx.fail(SSAO_ERROR_INVALID_SIZE, "the viewport is " + std::to_string(vw) + "x" + std::to_string(vh) +
+                                                     "; each side must be 1.." + std::to_string(SSAO_MAX_DIMENSION));
+    if (vx < 0 || vy < 0 || static_cast<int64_t>(vx) + vw > dw || static_cast<int64_t>(vy) + vh > dh)
+        return ctx.fail(SSAO_ERROR_INVALID_SIZE, "the viewport does not lie inside the " + std::to_string(dw) + "x" +
+                                                     std::to_string(dh) + " input textures");
+
+    gl.BindFramebuffer(GL_FRAMEBUFFER, ctx.fbo);
+    if (in.output_texture != 0) {
+        if (!bind_2d(gl, SSAO_UNIT_AO, in.output_texture))
+            return ctx.fail(SSAO_ERROR_INVALID_TEXTURE, "inputs.output_texture is not a GL_TEXTURE_2D (it did not bind)");
+        int ow = 0, oh = 0;
+        level0_size(gl, ow, oh);
+        if (ow < vx + vw || oh < vy + vh)
+            return ctx.fail(SSAO_ERROR_INVALID_SIZE, "inputs.output_texture (" + std::to_string(ow) + "x" +
+                                                         std::to_string(oh) + ") does not contain the viewport");
+        // Checked before anything of the library's changes: a refused call
+        // leaves the library's own output as it was.
+        gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, in.output_texture, 0);
+        if (gl.CheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+            return ctx.fail(SSAO_ERROR_UNSUPPORTED_FORMAT, "inputs.output_texture is not colour-renderable");
+    }
+
+    out.depth = fmt;
+    out.texture_width = dw;
+    out.texture_height = dh;
+    out.viewport[0] = vx;
+    out.viewport[1] = vy;
+    out.viewport[2] = vw;
+    out.viewport[3] = vh;
+    out.depth_texture = in.depth_texture;
+    out.normal_texture = in.normal_texture;
+    out.output_texture = in.output_texture;
+    return SSAO_OK;
+}
+
+}  // namespace ssao_impl

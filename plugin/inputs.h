@@ -1,0 +1,52 @@
+// inputs.h - what execute learns from its ssao_inputs before anything runs:
+// the enums, the projection, the host's textures (targets, formats, sizes) and
+// the viewport, checked and condensed into an AnalysedInputs that the planner
+// and the frame constants read. The struct is plain data (no GL), so unit
+// tests can build one by hand for plan_frame.
+#pragma once
+
+#include "projection.h"
+
+#include <ssao/ssao.h>
+
+#include <cstdint>
+
+struct ssao_context;
+
+namespace ssao_impl {
+
+class GlStateGuard;
+
+struct DepthFormat {
+    int bits = 0;  // 16, 24, 32
+    bool is_float = false;
+    bool has_stencil = false;
+};
+
+struct AnalysedInputs {
+    ProjectionInfo proj;
+    bool world_normals = false;   // normal_space == WORLD (view_matrix checked finite)
+    glm::dmat4 normal_to_view{1.0};  // view_matrix's upper 3x3 for world normals, identity else
+    bool signed_normals = false;  // normal_packing == SIGNED
+    DepthFormat depth;
+    int texture_width = 0, texture_height = 0;  // the depth (= normal) texture's level 0
+    // The viewport resolved (all zero = the whole texture) and checked to lie
+    // inside the input textures.
+    int viewport[4] = {0, 0, 0, 0};
+    uint32_t depth_texture = 0, normal_texture = 0;  // the host's inputs (checked)
+    uint32_t output_texture = 0;  // the host's output texture (checked), 0 = the library's own
+};
+
+// Checks that need no GL state change: the enums, view matrix and projection,
+// and which texture names are 2D textures. Fills in.proj, world_normals,
+// signed_normals. On failure returns the status with ctx.fail() called.
+ssao_status check_inputs(ssao_context& ctx, const ssao_inputs& in, AnalysedInputs& out);
+
+// Inspects the textures (binds them on the library's units: call it inside
+// the state guard, which also saves a D24S8/D32FS8 input's depth-stencil
+// mode before it is changed to read depth). Fills depth, texture size,
+// viewport and output_texture. Leaves the library's framebuffer bound, with
+// the host's output texture (if any) attached and found complete.
+ssao_status inspect_textures(ssao_context& ctx, const ssao_inputs& in, GlStateGuard& guard, AnalysedInputs& out);
+
+}  // namespace ssao_impl

@@ -1,0 +1,133 @@
+// plan.h - the frame plan: a pure function from (resolved settings, analysed
+// inputs) to the ordered passes of one execute and the intermediate textures
+// they need. No GL here: the plan is unit tested without a context
+// (tests/unit/test_plan.cpp), and everything that touches GL reads it:
+//   resources.cpp (allocates the plan's intermediates and the owned output),
+//   runner.cpp    (binds, draws, debug groups and one timestamp per pass),
+//   timers.cpp    (per-pass GPU times; ao_ms / blur_ms from timing_bucket()).
+//
+// How to add a pass (say a depth downsample before the AO):
+//   1. here: a PassKind (its value is the pass's public ssao_pass bit: append
+//      one to ssao_pass in include/ssao/ssao.h), its debug name in pass_name()
+//      and its ao/blur bucket in timing_bucket(); if it runs a new shader, a
+//      ProgramId before `count`;
+//   2. plan.cpp: emit it in plan_frame() with its inputs (texture unit ->
+//      what it samples), its target (an intermediate it declares, or the
+//      output), its rectangle, and the intermediates it needs;
+//   3. the pass file: its fragment shader in shaders/ (listed in
+//      shaders/CMakeLists.txt) and its row in programs.cpp (shader, label).
+// The resources, the runner, the timers and the debug groups follow the plan
+// and need no change. Per-pass values a shader reads (target origin, packing,
+// direction; a source scale for half resolution, say) are fields of Pass that
+// the runner sets as uniforms of the same name in every program
+// (programs.cpp, PassUniforms); a program without one ignores it.
+// Limits to know: a pass samples at most SSAO_UNITS_USED (4) units, the ones
+// the state guard saves and the ABI documents; an intermediate of a new
+// format needs its TexFormat here and its GL triple in resources.cpp
+// (gl_format); a pass writes one colour target.
+#pragma once
+
+#include "inputs.h"
+#include "uniforms.h"  // SSAO_UNIT_* and SSAO_UNITS_USED (shaders/ssao_constants.h)
+
+#include <ssao/ssao.h>
+
+#include <cstdint>
+
+namespace ssao_impl {
+
+// Pass and intermediate limits of one frame. kMaxPasses is the ABI's
+// SSAO_MAX_PASSES: ssao_timings has room for that many per-pass times.
+constexpr int kMaxPasses = SSAO_MAX_PASSES;
+constexpr int kMaxIntermediates = 4;
+
+// What a pass does; the value is its ssao_pass bit (passes_run, pass_kind).
+enum class PassKind : uint32_t {
+    clear = SSAO_PASS_CLEAR,    // strength 0: the output's rectangle cleared to 1, nothing sampled
+    ao = SSAO_PASS_AO,          // the sampling pass
+    blur_x = SSAO_PASS_BLUR_X,  // horizontal blur (or the box blur's single pass)
+    blur_y = SSAO_PASS_BLUR_Y,  // vertical blur
+};
+
+// The compiled programs (programs.cpp has one row per id). A clear draws nothing.
+// ao and visibility are the two estimators (ssao_settings.method) of the ao pass.
+enum class ProgramId : int { none = -1, ao = 0, visibility = 1, blur = 2, count = 3 };
+
+// Formats of the textures the plan renders into.
+enum class TexFormat : uint8_t {
+    rg32f,  // intermediate: (ao, view z) for the next pass
+    r8,     // owned output, SSAO_OUTPUT_R8
+    r16f,   // owned output, SSAO_OUTPUT_R16F
+};
+
+// A texture a pass samples or renders into.
+struct TexRef {
+    enum class Source : uint8_t {
+        none,          // nothing (an input unit the pass leaves unbound)
+        depth,         // the host's depth texture
+        normal,        // the host's normal texture
+        noise,         // the library's rotation-noise texture
+        intermediate,  // FramePlan::intermediates[index]
+        output,        // the final output: the host's output_texture or the library's own
+    };
+    Source source = Source::none;
+    int index = 0;  // intermediates only
+
+    static TexRef of(Source s, int i = 0) { return TexRef{s, i}; }
+    bool operator==(const TexRef& o) const { return source == o.source && index == o.index; }
+    bool operator!=(const TexRef& o) const { return !(*this == o); }
+};
+
+struct Rect {
+    int x = 0, y = 0, width = 0, height = 0;
+};
+
+struct Pass {
+    PassKind kind = PassKind::ao;
+    ProgramId program = ProgramId::none;  // none: no draw, the rectangle is cleared to 1 (the clear pass)
+    // What the pass samples, by texture unit (SSAO_UNIT_*). The runner binds
+    // these; a unit left `none` keeps what it holds unless that is unknown
+    // (the host's) or the pass's own target, which it unbinds, so a pass never
+    // samples the texture it renders into.
+    TexRef inputs[SSAO_UNITS_USED] = {};
+    TexRef target;
+    Rect rect;               // where it draws in its target: origin and size, in target texels
+    bool pack_depth = false; // writes (ao, view z) for a following pass instead of the final AO
+    int direction[2] = {0, 0};  // blur direction (u_blur_dir)
+};
+
+// A texture the plan renders into and a later pass samples.
+struct Intermediate {
+    int width = 0, height = 0;
+    TexFormat format = TexFormat::rg32f;
+};
+
+struct FramePlan {
+    Pass passes[kMaxPasses] = {};
+    int pass_count = 0;
+    Intermediate intermediates[kMaxIntermediates] = {};
+    int intermediate_count = 0;
+    // The final output: the host's texture at the viewport's origin, or the
+    // library's own (owned_output) of output_size and output_format at (0,0).
+    bool owned_output = true;
+    int output_width = 0, output_height = 0;
+    TexFormat output_format = TexFormat::r8;
+    int output_origin[2] = {0, 0};
+
+    // ssao_output.passes_run: the bits of the passes in the plan.
+    uint32_t passes_run() const;
+};
+
+// The plan for one execute. Pure: the same arguments give the same plan.
+FramePlan plan_frame(const ssao_settings& resolved, const AnalysedInputs& in);
+
+// Debug-group name of a pass ("ssao: ao", "ssao: blur x", ...): what
+// RenderDoc and apitrace show. kExecuteGroupName wraps the whole execute.
+const char* pass_name(PassKind kind);
+constexpr const char* kExecuteGroupName = "ssao";
+
+// Which of ssao_timings' two summary figures a pass's GPU time counts in.
+enum class TimingBucket { ao, blur };
+TimingBucket timing_bucket(PassKind kind);
+
+}  // namespace ssao_impl

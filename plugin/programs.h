@@ -1,0 +1,38 @@
+// programs.h - the pass programs: one row per ProgramId (its fragment shader
+// and its debug label), and the per-pass uniforms every program may declare,
+// set from the plan's Pass by the runner.
+#pragma once
+
+#include "plan.h"
+
+#include <glad/gl.h>
+
+namespace ssao_impl {
+
+// The shared GLSL a fragment shader is built on, after the constants header.
+enum class SharedCode { none, common, common_and_sampling };
+
+struct ProgramInfo {
+    ProgramId id;
+    const char* fragment_source;  // the embedded shader (after the constants header and `shared`)
+    SharedCode shared;
+    const char* file_name;        // for compile errors
+    const char* label;            // glObjectLabel name
+};
+
+// The row of `id` (id != none).
+const ProgramInfo& program_info(ProgramId id);
+
+// Locations of the per-pass uniforms in one program (-1: it does not use it;
+// glUniform* ignores location -1).
+struct PassUniforms {
+    GLint target_origin = -1;  // u_target_origin: Pass::rect's origin
+    GLint pack_depth = -1;     // u_pack_depth: Pass::pack_depth
+    GLint blur_dir = -1;       // u_blur_dir: Pass::direction
+};
+
+PassUniforms find_pass_uniforms(const GladGLContext& gl, GLuint program);
+// Sets them for `pass` (its program current).
+void set_pass_uniforms(const GladGLContext& gl, const PassUniforms& u, const Pass& pass);
+
+}  // namespace ssao_impl

@@ -1,0 +1,119 @@
+// resources.cpp - allocation of the plan's textures.
+#include "resources.h"
+
+#include "context.h"
+
+#include <string>
+
+namespace ssao_impl {
+
+namespace {
+
+struct GlFormat {
+    GLenum internal, format, type;
+};
+
+GlFormat gl_format(TexFormat f) {
+    switch (f) {
+        case TexFormat::rg32f: return {GL_RG32F, GL_RG, GL_FLOAT};
+        case TexFormat::r16f: return {GL_R16F, GL_RED, GL_FLOAT};
+        case TexFormat::r8: return {GL_R8, GL_RED, GL_UNSIGNED_BYTE};
+    }
+    return {GL_R8, GL_RED, GL_UNSIGNED_BYTE};
+}
+
+// (Re)specifies level 0 of `tex` (made on first use and labelled then).
+void allocate(const ssao_context& ctx, GLuint& tex, TexFormat format, int w, int h, const char* label) {
+    const GladGLContext& gl = ctx.gl;
+    const bool made = tex == 0;
+    if (made) gl.GenTextures(1, &tex);
+    gl.BindTexture(GL_TEXTURE_2D, tex);
+    if (made) label_object(ctx, GL_TEXTURE, tex, label);
+    const GlFormat f = gl_format(format);
+    // Re-specifying level 0 reallocates in place: no new name, nothing leaks.
+    gl.TexImage2D(GL_TEXTURE_2D, 0, static_cast<GLint>(f.internal), w, h, 0, f.format, f.type, nullptr);
+    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
+}
+
+bool intermediate_stale(const ssao_context& ctx, const FramePlan& plan, int i) {
+    const Intermediate& want = plan.intermediates[i];
+    const Intermediate& have = ctx.intermediate_specs[i];
+    return ctx.intermediates[i] == 0 || have.width != want.width || have.height != want.height ||
+           have.format != want.format;
+}
+
+bool output_stale(const ssao_context& ctx, const FramePlan& plan) {
+    return plan.owned_output && (ctx.output == 0 || ctx.output_width != plan.output_width ||
+                                 ctx.output_height != plan.output_height || ctx.output_format != plan.output_format);
+}
+
+const char* const kIntermediateLabels[kMaxIntermediates] = {"ssao: intermediate 0", "ssao: intermediate 1",
+                                                            "ssao: intermediate 2", "ssao: intermediate 3"};
+
+}  // namespace
+
+GLuint PlanTextures::resolve(const TexRef& ref) const {
+    switch (ref.source) {
+        case TexRef::Source::none: return 0;
+        case TexRef::Source::depth: return depth;
+        case TexRef::Source::normal: return normal;
+        case TexRef::Source::noise: return noise;
+        case TexRef::Source::intermediate: return intermediates[ref.index];
+        case TexRef::Source::output: return output;
+    }
+    return 0;
+}
+
+bool resources_stale(const ssao_context& ctx, const FramePlan& plan) {
+    for (int i = 0; i < plan.intermediate_count; ++i)
+        if (intermediate_stale(ctx, plan, i)) return true;
+    return output_stale(ctx, plan);
+}
+
+ssao_status update_resources(ssao_context& ctx, const FramePlan& plan, const AnalysedInputs& in, PlanTextures& out) {
+    const GladGLContext& gl = ctx.gl;
+    gl.ActiveTexture(GL_TEXTURE0 + SSAO_UNIT_AO);
+    for (int i = 0; i < plan.intermediate_count; ++i) {
+        if (!intermediate_stale(ctx, plan, i)) continue;
+        const Intermediate& want = plan.intermediates[i];
+        allocate(ctx, ctx.intermediates[i], want.format, want.width, want.height, kIntermediateLabels[i]);
+        ctx.intermediate_specs[i] = want;
+    }
+    const bool new_output = output_stale(ctx, plan);
+    if (new_output) {
+        allocate(ctx, ctx.output, plan.output_format, plan.output_width, plan.output_height, kLabelOutput);
+        ctx.output_width = plan.output_width;
+        ctx.output_height = plan.output_height;
+        ctx.output_format = plan.output_format;
+    }
+
+    out.depth = in.depth_texture;
+    out.normal = in.normal_texture;
+    out.noise = ctx.noise_texture;
+    out.output = plan.owned_output ? ctx.output : in.output_texture;
+    for (int i = 0; i < kMaxIntermediates; ++i) out.intermediates[i] = ctx.intermediates[i];
+
+    gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, out.output, 0);
+    if (new_output && gl.CheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+        return ctx.fail(SSAO_ERROR_FRAMEBUFFER, "the library's output framebuffer is incomplete");
+    return SSAO_OK;
+}
+
+// Default unpack state for our uploads (the guard restores the host's).
+void reset_unpack(const GladGLContext& gl) {
+    gl.BindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
+    gl.PixelStorei(GL_UNPACK_SWAP_BYTES, 0);
+    gl.PixelStorei(GL_UNPACK_LSB_FIRST, 0);
+    gl.PixelStorei(GL_UNPACK_ROW_LENGTH, 0);
+    gl.PixelStorei(GL_UNPACK_IMAGE_HEIGHT, 0);
+    gl.PixelStorei(GL_UNPACK_SKIP_ROWS, 0);
+    gl.PixelStorei(GL_UNPACK_SKIP_PIXELS, 0);
+    gl.PixelStorei(GL_UNPACK_SKIP_IMAGES, 0);
+    gl.PixelStorei(GL_UNPACK_ALIGNMENT, 4);
+}
+
+}  // namespace ssao_impl

@@ -1,0 +1,108 @@
+// runner.cpp - the loop over a plan's passes.
+#include "runner.h"
+
+#include "context.h"
+#include "debug.h"
+#include "programs.h"
+#include "timers.h"
+
+namespace ssao_impl {
+
+namespace {
+
+// What each of the library's texture units holds, so a pass binds only what
+// changes. Unknown: whatever the host or an upload left there.
+class UnitBindings {
+public:
+    UnitBindings(const GladGLContext& gl, const PlanTextures& t) : gl_(gl) {
+        // inspect_textures left the host's depth and normal textures bound.
+        set_known(SSAO_UNIT_DEPTH, t.depth);
+        set_known(SSAO_UNIT_NORMAL, t.normal);
+    }
+
+    // Binds the pass's inputs; a unit it does not sample keeps its texture
+    // unless that is unknown or the pass's target (never sample what we
+    // render into), which is unbound.
+    void bind_for(const Pass& pass, const PlanTextures& t) {
+        const GLuint target = t.resolve(pass.target);
+        for (GLuint u = 0; u < SSAO_UNITS_USED; ++u) {
+            const bool sampled = pass.inputs[u].source != TexRef::Source::none;
+            const GLuint want = sampled ? t.resolve(pass.inputs[u]) : 0;
+            if (sampled || !known_[u] || texture_[u] == target) bind(u, want);
+        }
+    }
+
+private:
+    void set_known(GLuint unit, GLuint texture) {
+        known_[unit] = true;
+        texture_[unit] = texture;
+    }
+    void bind(GLuint unit, GLuint texture) {
+        if (known_[unit] && texture_[unit] == texture) return;
+        gl_.ActiveTexture(GL_TEXTURE0 + unit);
+        gl_.BindTexture(GL_TEXTURE_2D, texture);
+        set_known(unit, texture);
+    }
+
+    const GladGLContext& gl_;
+    bool known_[SSAO_UNITS_USED] = {};
+    GLuint texture_[SSAO_UNITS_USED] = {};
+};
+
+// Strength 0: the pass's rectangle of its target cleared to 1 (scissored:
+// the rest of a host's output texture is kept).
+void clear_to_one(const GladGLContext& gl, const Pass& pass) {
+    gl.Enable(GL_SCISSOR_TEST);
+    gl.Scissor(pass.rect.x, pass.rect.y, pass.rect.width, pass.rect.height);
+    const GLfloat one[4] = {1.0f, 1.0f, 1.0f, 1.0f};
+    gl.ClearBufferfv(GL_COLOR, 0, one);
+    gl.Disable(GL_SCISSOR_TEST);
+}
+
+void draw(const ssao_context& ctx, const Pass& pass) {
+    const GladGLContext& gl = ctx.gl;
+    const int program = static_cast<int>(pass.program);
+    gl.Viewport(pass.rect.x, pass.rect.y, pass.rect.width, pass.rect.height);
+    gl.UseProgram(ctx.programs[program]);
+    set_pass_uniforms(gl, ctx.pass_uniforms[program], pass);
+    gl.DrawArrays(GL_TRIANGLES, 0, 3);
+}
+
+// The objects bound here exist only after their first bind: label them then.
+void label_bound_objects(ssao_context& ctx) {
+    if (ctx.debug.objects_labelled) return;
+    label_object(ctx, GL_FRAMEBUFFER, ctx.fbo, kLabelFramebuffer);
+    label_object(ctx, GL_VERTEX_ARRAY, ctx.vao, kLabelVertexArray);
+    ctx.debug.objects_labelled = true;
+}
+
+}  // namespace
+
+void run_plan(ssao_context& ctx, const FramePlan& plan, const PlanTextures& textures) {
+    const GladGLContext& gl = ctx.gl;
+    for (GLuint u = 0; u < SSAO_UNITS_USED; ++u) gl.BindSampler(u, ctx.sampler);
+    set_pass_state(gl, ctx.caps);
+    gl.BindVertexArray(ctx.vao);
+    label_bound_objects(ctx);
+
+    UnitBindings units(gl, textures);
+    const int slot = begin_timed_frame(ctx, plan);
+    for (int i = 0; i < plan.pass_count; ++i) {
+        const Pass& pass = plan.passes[i];
+        {
+            const PassGroup group(ctx, pass_name(pass.kind));
+            gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D,
+                                    textures.resolve(pass.target), 0);
+            if (pass.program == ProgramId::none) {
+                clear_to_one(gl, pass);
+            } else {
+                units.bind_for(pass, textures);
+                draw(ctx, pass);
+            }
+        }
+        stamp_pass(ctx, slot, i);
+    }
+    end_timed_frame(ctx, slot);
+}
+
+}  // namespace ssao_impl

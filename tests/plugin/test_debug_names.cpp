@@ -1,0 +1,250 @@
+// test_debug_names.cpp - what a debugger (RenderDoc, apitrace) sees of the
+// library through KHR_debug: one group "ssao" around every execute, one group
+// per pass inside it named after the pass and in the plan's order, balanced
+// on every return and never overflowing the host's group stack; and a
+// "ssao: ..." label on every GL object the library made.
+#include <doctest/doctest.h>
+
+#include "debug_groups.h"
+#include "gl_fixture.h"
+#include "test_scenes.h"
+
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+using analytic::GBuffer;
+using testgl::DebugGroupLog;
+using testscenes::crease_scene;
+using testscenes::kFov;
+using testscenes::make;
+
+namespace {
+
+using Events = std::vector<DebugGroupLog::Event>;
+
+// The events of one execute that ran `passes` (debug-group names), in order.
+Events expected_groups(const std::vector<std::string>& passes) {
+    Events e{{true, GL_DEBUG_SOURCE_APPLICATION, "ssao"}};
+    for (const std::string& p : passes) {
+        e.push_back({true, GL_DEBUG_SOURCE_APPLICATION, p});
+        e.push_back({false, GL_DEBUG_SOURCE_APPLICATION, p});
+    }
+    e.push_back({false, GL_DEBUG_SOURCE_APPLICATION, "ssao"});
+    return e;
+}
+
+// The names of the passes in the order they ran, from the per-pass timings
+// of a measured frame (the plan's order, as the library reports it).
+std::vector<std::string> names_of(const ssao_timings& t) {
+    const std::map<uint32_t, std::string> name = {{SSAO_PASS_AO, "ssao: ao"},
+                                                  {SSAO_PASS_BLUR_X, "ssao: blur x"},
+                                                  {SSAO_PASS_BLUR_Y, "ssao: blur y"},
+                                                  {SSAO_PASS_CLEAR, "ssao: clear"}};
+    std::vector<std::string> out;
+    for (uint32_t i = 0; i < t.pass_count; ++i) out.push_back(name.at(t.pass_kind[i]));
+    return out;
+}
+
+struct Inputs {
+    GBuffer g;
+    glm::dmat4 proj;
+    GLuint depth = 0, normal = 0;
+    ssao_inputs in{};
+    explicit Inputs(testgl::Fixture& fx, int size = 32)
+        : g(analytic::render(crease_scene(), analytic::perspective(kFov, 1.0, 0.1, 100.0),
+                             SSAO_CLIP_NEGATIVE_ONE_TO_ONE, size, size)),
+          proj(analytic::perspective(kFov, 1.0, 0.1, 100.0)) {
+        depth = fx.make_depth(GL_DEPTH_COMPONENT32F, g.width, g.height, g.depth);
+        normal = fx.make_normals(GL_RGBA16F, g.width, g.height, g.normal);
+        in = fx.inputs(depth, normal, proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE);
+    }
+};
+
+}  // namespace
+
+TEST_CASE("debug groups: each pass in its own group inside 'ssao', in the plan's order, stack depth unchanged") {
+    testgl::Fixture fx;
+    auto& gl = fx.gl();
+    REQUIRE((gl.PushDebugGroup != nullptr));  // GL 4.5: KHR_debug is core
+    Inputs scene(fx);
+    ssao_settings off = make(16, SSAO_BLUR_DEFAULT);
+    off.strength = SSAO_STRENGTH_OFF;
+    struct Case {
+        const char* what;
+        ssao_settings settings;
+        std::vector<std::string> passes;
+    };
+    const Case cases[] = {
+        {"depth-aware", make(16, SSAO_BLUR_DEPTH_AWARE), {"ssao: ao", "ssao: blur x", "ssao: blur y"}},
+        {"gaussian", make(16, SSAO_BLUR_GAUSSIAN), {"ssao: ao", "ssao: blur x", "ssao: blur y"}},
+        {"box", make(16, SSAO_BLUR_BOX_4X4), {"ssao: ao", "ssao: blur x"}},
+        {"no blur", make(16, SSAO_BLUR_NONE), {"ssao: ao"}},
+        {"strength off", off, {"ssao: clear"}},
+    };
+    DebugGroupLog log(gl);
+    for (const Case& c : cases) {
+        const std::string what_ = c.what;
+        CAPTURE(what_);
+        fx.settings(c.settings);
+        // Inside a group of the host's own: the library's nest in it.
+        gl.PushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 7, -1, "host frame");
+        const GLint depth_before = testgl::debug_group_depth(gl);
+        log.clear();
+        ssao_timings t{};
+        t.size = sizeof t;
+        for (int frame = 0; frame < 12 && !(t.available && t.frame > 0 && t.pass_count == c.passes.size()); ++frame) {
+            log.clear();
+            ssao_output out{};
+            out.size = sizeof out;
+            REQUIRE(fx.api().execute(fx.ctx(), &scene.in, &out) == SSAO_OK);
+            CHECK(testgl::debug_group_depth(gl) == depth_before);
+            const std::string events = log.text();
+            CAPTURE(events);
+            CHECK(log.events() == expected_groups(c.passes));
+            gl.Finish();
+            REQUIRE(fx.api().get_timings(fx.ctx(), &t) == SSAO_OK);
+        }
+        // The groups name the passes the library reports it ran, in that order.
+        REQUIRE(t.available == 1u);
+        CHECK(names_of(t) == c.passes);
+        gl.PopDebugGroup();
+    }
+    CHECK(fx.gl_errors().empty());
+}
+
+TEST_CASE("debug groups: a refused execute pushes and pops 'ssao' only, at every stage it can be refused") {
+    testgl::Fixture fx;
+    auto& gl = fx.gl();
+    Inputs scene(fx);
+    const GLuint small_normal = fx.make_normals(GL_RGBA16F, 8, 8, std::vector<glm::vec3>(64, glm::vec3(0, 0, 1)));
+    DebugGroupLog log(gl);
+    struct Bad {
+        const char* what;
+        ssao_inputs in;
+    };
+    ssao_inputs bad_enum = scene.in, no_depth = scene.in, wrong_size = scene.in, bad_viewport = scene.in;
+    bad_enum.clip_range = static_cast<ssao_clip_range>(9);
+    no_depth.depth_texture = 0;
+    wrong_size.normal_texture = small_normal;  // refused after the textures were bound (inside the guard)
+    bad_viewport.viewport[2] = 1000;
+    bad_viewport.viewport[3] = 10;
+    const Bad bad[] = {{"enum", bad_enum}, {"no depth", no_depth}, {"normal size", wrong_size},
+                       {"viewport", bad_viewport}};
+    for (const Bad& b : bad) {
+        const std::string what_ = b.what;
+        CAPTURE(what_);
+        const GLint depth_before = testgl::debug_group_depth(gl);
+        log.clear();
+        CHECK(fx.api().execute(fx.ctx(), &b.in, nullptr) != SSAO_OK);
+        CHECK(testgl::debug_group_depth(gl) == depth_before);
+        const std::string events = log.text();
+        CAPTURE(events);
+        CHECK(log.events() == expected_groups({}));
+    }
+    CHECK(fx.gl_errors().empty());
+}
+
+TEST_CASE("debug groups: a host stack with no room for two more gets none, and no GL error") {
+    testgl::Fixture fx;
+    auto& gl = fx.gl();
+    Inputs scene(fx);
+    fx.settings(make(16, SSAO_BLUR_DEFAULT));
+    GLint max_depth = 0;
+    gl.GetIntegerv(GL_MAX_DEBUG_GROUP_STACK_DEPTH, &max_depth);
+    REQUIRE(max_depth >= 64);  // the spec's minimum
+    DebugGroupLog log(gl);
+    const ssao_output reference = [&] {
+        ssao_output out{};
+        out.size = sizeof out;
+        REQUIRE(fx.api().execute(fx.ctx(), &scene.in, &out) == SSAO_OK);
+        return out;
+    }();
+    const std::vector<float> ao_reference = fx.read_red(reference.texture, scene.g.width, scene.g.height);
+
+    // Fill the host's stack up to `free_slots` below its limit.
+    auto fill_to = [&](int free_slots) {
+        while (testgl::debug_group_depth(gl) < max_depth - free_slots)
+            gl.PushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 1, -1, "host");
+    };
+    auto empty_stack = [&] {
+        while (testgl::debug_group_depth(gl) > 1) gl.PopDebugGroup();
+    };
+    for (int free_slots : {0, 1, 2}) {
+        CAPTURE(free_slots);
+        fill_to(free_slots);
+        const GLint depth_before = testgl::debug_group_depth(gl);
+        log.clear();
+        ssao_output out{};
+        out.size = sizeof out;
+        REQUIRE(fx.api().execute(fx.ctx(), &scene.in, &out) == SSAO_OK);
+        CHECK(testgl::debug_group_depth(gl) == depth_before);
+        const std::string events = log.text();
+        CAPTURE(events);
+        // Two free slots hold "ssao" and one pass group; fewer get nothing.
+        if (free_slots >= 2)
+            CHECK(log.events() == expected_groups({"ssao: ao", "ssao: blur x", "ssao: blur y"}));
+        else
+            CHECK(log.events().empty());
+        CHECK(fx.read_red(out.texture, scene.g.width, scene.g.height) == ao_reference);
+        empty_stack();
+    }
+    CHECK(fx.gl_errors().empty());  // no GL_STACK_OVERFLOW
+}
+
+TEST_CASE("object labels: every GL object the library made carries an 'ssao: ...' name, the host's none") {
+    testgl::Fixture fx;
+    auto& gl = fx.gl();
+    Inputs scene(fx);
+    fx.settings(make(16, SSAO_BLUR_DEFAULT));
+    ssao_output out{};
+    out.size = sizeof out;
+    for (int i = 0; i < 3; ++i) {
+        REQUIRE(fx.api().execute(fx.ctx(), &scene.in, &out) == SSAO_OK);
+        gl.Finish();
+    }
+    CHECK(testgl::object_label(gl, GL_TEXTURE, out.texture) == "ssao: output");
+    CHECK(testgl::object_label(gl, GL_TEXTURE, scene.depth).empty());
+    CHECK(testgl::object_label(gl, GL_TEXTURE, scene.normal).empty());
+
+    // Every live object of each type, by name, and its label.
+    struct Kind {
+        GLenum identifier;
+        GLboolean (*is)(GladGLContext&, GLuint);
+        std::multiset<std::string> expected;  // the library's labels of this type
+    };
+    const Kind kinds[] = {
+        {GL_TEXTURE, [](GladGLContext& g, GLuint n) { return g.IsTexture(n); },
+         {"ssao: intermediate 0", "ssao: intermediate 1", "ssao: noise", "ssao: output"}},
+        {GL_PROGRAM, [](GladGLContext& g, GLuint n) { return g.IsProgram(n); },
+         {"ssao: ao program", "ssao: blur program", "ssao: visibility program"}},
+        {GL_BUFFER, [](GladGLContext& g, GLuint n) { return g.IsBuffer(n); },
+         {"ssao: frame constants", "ssao: kernel"}},
+        {GL_FRAMEBUFFER, [](GladGLContext& g, GLuint n) { return g.IsFramebuffer(n); }, {"ssao: framebuffer"}},
+        {GL_VERTEX_ARRAY, [](GladGLContext& g, GLuint n) { return g.IsVertexArray(n); }, {"ssao: vertex array"}},
+        {GL_SAMPLER, [](GladGLContext& g, GLuint n) { return g.IsSampler(n); }, {"ssao: sampler"}},
+    };
+    for (const Kind& k : kinds) {
+        CAPTURE(k.identifier);
+        std::multiset<std::string> library, unlabelled_host;
+        for (GLuint name = 1; name < 512; ++name) {
+            if (!k.is(gl, name)) continue;
+            const std::string label = testgl::object_label(gl, k.identifier, name);
+            if (label.rfind("ssao: ", 0) == 0)
+                library.insert(label);
+            else
+                CHECK(label.empty());  // the host's objects are left alone
+        }
+        CHECK(library == k.expected);
+    }
+    // Timer queries: every one used so far (one per stamp: 4 a frame, 3 frames) is named.
+    int timers = 0;
+    for (GLuint name = 1; name < 512; ++name)
+        if (gl.IsQuery(name)) {
+            CHECK(testgl::object_label(gl, GL_QUERY, name) == "ssao: timer");
+            ++timers;
+        }
+    CHECK(timers == 3 * 4);
+    CHECK(fx.gl_errors().empty());
+}

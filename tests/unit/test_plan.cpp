@@ -1,0 +1,255 @@
+// test_plan.cpp - the frame plan (plugin/plan.h) without GL: which passes run
+// for which settings, what each samples and writes, the sizes of the
+// intermediates, and the invariants every plan keeps (the last pass writes
+// the output, no pass samples its own target, every intermediate is written
+// before it is read).
+#include "plan.h"
+#include "settings.h"
+
+#include <doctest/doctest.h>
+
+#include <set>
+#include <string>
+#include <vector>
+
+using namespace ssao_impl;
+using Source = TexRef::Source;
+
+namespace {
+
+ssao_settings resolved(ssao_blur blur, float strength = 0.0f) {
+    ssao_settings in{};
+    in.size = sizeof in;
+    in.blur = blur;
+    in.strength = strength;
+    ssao_settings out{};
+    out.size = sizeof out;
+    std::string why;
+    REQUIRE(resolve_settings(in, out, why) == SSAO_OK);
+    return out;
+}
+
+AnalysedInputs inputs(int x, int y, int w, int h, uint32_t host_output = 0) {
+    AnalysedInputs in;
+    in.texture_width = x + w;
+    in.texture_height = y + h;
+    in.viewport[0] = x;
+    in.viewport[1] = y;
+    in.viewport[2] = w;
+    in.viewport[3] = h;
+    in.output_texture = host_output;
+    in.depth.bits = 32;
+    in.depth.is_float = true;
+    return in;
+}
+
+std::vector<PassKind> kinds(const FramePlan& p) {
+    std::vector<PassKind> k;
+    for (int i = 0; i < p.pass_count; ++i) k.push_back(p.passes[i].kind);
+    return k;
+}
+
+// What must hold for every plan, whatever the settings.
+void check_invariants(const FramePlan& p, const AnalysedInputs& in) {
+    REQUIRE(p.pass_count >= 1);
+    REQUIRE(p.pass_count <= kMaxPasses);
+    REQUIRE(p.intermediate_count >= 0);
+    REQUIRE(p.intermediate_count <= kMaxIntermediates);
+    // The final pass writes the output at the viewport's rectangle of it.
+    const Pass& last = p.passes[p.pass_count - 1];
+    CHECK(last.target.source == Source::output);
+    CHECK_FALSE(last.pack_depth);
+    const int ox = in.output_texture ? in.viewport[0] : 0, oy = in.output_texture ? in.viewport[1] : 0;
+    CHECK(last.rect.x == ox);
+    CHECK(last.rect.y == oy);
+    CHECK(last.rect.width == in.viewport[2]);
+    CHECK(last.rect.height == in.viewport[3]);
+    CHECK(p.owned_output == (in.output_texture == 0));
+    CHECK(p.output_origin[0] == ox);
+    CHECK(p.output_origin[1] == oy);
+    CHECK(p.output_width == in.viewport[2]);
+    CHECK(p.output_height == in.viewport[3]);
+
+    std::set<int> written;
+    uint32_t bits = 0;
+    for (int i = 0; i < p.pass_count; ++i) {
+        const Pass& pass = p.passes[i];
+        CAPTURE(i);
+        bits |= static_cast<uint32_t>(pass.kind);
+        // Only the last pass writes the output; the others write an
+        // intermediate, packed (ao, view z), that a later pass reads.
+        if (i + 1 < p.pass_count) {
+            REQUIRE(pass.target.source == Source::intermediate);
+            CHECK(pass.pack_depth);
+            bool read_later = false;
+            for (int j = i + 1; j < p.pass_count; ++j)
+                for (const TexRef& r : p.passes[j].inputs) read_later = read_later || r == pass.target;
+            CHECK(read_later);
+        }
+        if (pass.target.source == Source::intermediate) {
+            REQUIRE(pass.target.index < p.intermediate_count);
+            const Intermediate& t = p.intermediates[pass.target.index];
+            // The pass's rectangle lies inside its target.
+            CHECK(pass.rect.x >= 0);
+            CHECK(pass.rect.y >= 0);
+            CHECK(pass.rect.x + pass.rect.width <= t.width);
+            CHECK(pass.rect.y + pass.rect.height <= t.height);
+        }
+        for (const TexRef& r : pass.inputs) {
+            CHECK(r != pass.target);  // never sample what we render into
+            CHECK(r.source != Source::output);
+            if (r.source == Source::intermediate) {
+                REQUIRE(r.index < p.intermediate_count);
+                CHECK(written.count(r.index) == 1);  // written by an earlier pass
+            }
+        }
+        if (pass.target.source == Source::intermediate) written.insert(pass.target.index);
+        CHECK(std::string(pass_name(pass.kind)).rfind("ssao: ", 0) == 0);
+    }
+    CHECK(p.passes_run() == bits);
+}
+
+}  // namespace
+
+TEST_CASE("plan: blur off gives one AO pass straight into the output") {
+    const AnalysedInputs in = inputs(0, 0, 64, 48);
+    const FramePlan p = plan_frame(resolved(SSAO_BLUR_NONE), in);
+    check_invariants(p, in);
+    REQUIRE(p.pass_count == 1);
+    const Pass& ao = p.passes[0];
+    CHECK(ao.kind == PassKind::ao);
+    CHECK(ao.program == ProgramId::ao);
+    CHECK(ao.inputs[SSAO_UNIT_DEPTH].source == Source::depth);
+    CHECK(ao.inputs[SSAO_UNIT_NORMAL].source == Source::normal);
+    CHECK(ao.inputs[SSAO_UNIT_NOISE].source == Source::noise);
+    CHECK(ao.inputs[SSAO_UNIT_AO].source == Source::none);
+    CHECK(p.intermediate_count == 0);
+    CHECK(p.passes_run() == uint32_t(SSAO_PASS_AO));
+}
+
+TEST_CASE("plan: strength off gives a clear and no sampling, whatever the blur") {
+    for (ssao_blur blur : {SSAO_BLUR_DEPTH_AWARE, SSAO_BLUR_BOX_4X4, SSAO_BLUR_GAUSSIAN, SSAO_BLUR_NONE}) {
+        CAPTURE(blur);
+        for (uint32_t host : {0u, 7u}) {
+            CAPTURE(host);
+            const AnalysedInputs in = inputs(3, 5, 20, 10, host);
+            const FramePlan p = plan_frame(resolved(blur, SSAO_STRENGTH_OFF), in);
+            check_invariants(p, in);
+            REQUIRE(p.pass_count == 1);
+            CHECK(p.passes[0].kind == PassKind::clear);
+            CHECK(p.passes[0].program == ProgramId::none);
+            for (const TexRef& r : p.passes[0].inputs) CHECK(r.source == Source::none);
+            CHECK(p.intermediate_count == 0);
+            CHECK(p.passes_run() == uint32_t(SSAO_PASS_CLEAR));
+        }
+    }
+}
+
+TEST_CASE("plan: the box blur is one blur pass, the separable blurs two") {
+    const AnalysedInputs in = inputs(0, 0, 32, 32);
+    const FramePlan box = plan_frame(resolved(SSAO_BLUR_BOX_4X4), in);
+    check_invariants(box, in);
+    CHECK(kinds(box) == std::vector<PassKind>{PassKind::ao, PassKind::blur_x});
+    CHECK(box.intermediate_count == 1);
+    CHECK(box.passes[1].program == ProgramId::blur);
+    CHECK(box.passes[1].inputs[SSAO_UNIT_AO] == TexRef::of(Source::intermediate, 0));
+    CHECK(box.passes_run() == uint32_t(SSAO_PASS_AO | SSAO_PASS_BLUR_X));
+
+    for (ssao_blur blur : {SSAO_BLUR_DEPTH_AWARE, SSAO_BLUR_GAUSSIAN}) {
+        CAPTURE(blur);
+        const FramePlan p = plan_frame(resolved(blur), in);
+        check_invariants(p, in);
+        CHECK(kinds(p) == std::vector<PassKind>{PassKind::ao, PassKind::blur_x, PassKind::blur_y});
+        CHECK(p.intermediate_count == 2);
+        CHECK(p.passes[0].target == TexRef::of(Source::intermediate, 0));
+        CHECK(p.passes[1].inputs[SSAO_UNIT_AO] == TexRef::of(Source::intermediate, 0));
+        CHECK(p.passes[1].target == TexRef::of(Source::intermediate, 1));
+        CHECK(p.passes[2].inputs[SSAO_UNIT_AO] == TexRef::of(Source::intermediate, 1));
+        CHECK(p.passes[1].direction[0] == 1);
+        CHECK(p.passes[1].direction[1] == 0);
+        CHECK(p.passes[2].direction[0] == 0);
+        CHECK(p.passes[2].direction[1] == 1);
+        CHECK(p.passes_run() == uint32_t(SSAO_PASS_AO | SSAO_PASS_BLUR_X | SSAO_PASS_BLUR_Y));
+    }
+}
+
+TEST_CASE("plan: intermediates are viewport-sized RG32F, odd sizes kept exactly, at any viewport origin") {
+    const int sizes[][4] = {{0, 0, 641, 359}, {0, 0, 1, 1}, {7, 3, 641, 359}, {0, 0, 16384, 3}, {2, 9, 33, 17}};
+    for (const auto& v : sizes) {
+        CAPTURE(v[0]);
+        CAPTURE(v[1]);
+        CAPTURE(v[2]);
+        CAPTURE(v[3]);
+        for (uint32_t host : {0u, 9u}) {
+            const AnalysedInputs in = inputs(v[0], v[1], v[2], v[3], host);
+            const FramePlan p = plan_frame(resolved(SSAO_BLUR_DEPTH_AWARE), in);
+            check_invariants(p, in);
+            REQUIRE(p.intermediate_count == 2);
+            for (int i = 0; i < p.intermediate_count; ++i) {
+                CHECK(p.intermediates[i].width == v[2]);
+                CHECK(p.intermediates[i].height == v[3]);
+                CHECK(p.intermediates[i].format == TexFormat::rg32f);
+            }
+            // Passes into an intermediate cover all of it from (0,0).
+            for (int i = 0; i + 1 < p.pass_count; ++i) {
+                CHECK(p.passes[i].rect.x == 0);
+                CHECK(p.passes[i].rect.y == 0);
+                CHECK(p.passes[i].rect.width == v[2]);
+                CHECK(p.passes[i].rect.height == v[3]);
+            }
+        }
+    }
+}
+
+TEST_CASE("plan: the owned output's format follows the settings; a host output is written in place") {
+    ssao_settings s = resolved(SSAO_BLUR_NONE);
+    CHECK(plan_frame(s, inputs(0, 0, 8, 8)).output_format == TexFormat::r8);
+    s.output_format = SSAO_OUTPUT_R16F;
+    CHECK(plan_frame(s, inputs(0, 0, 8, 8)).output_format == TexFormat::r16f);
+    const AnalysedInputs host = inputs(4, 6, 16, 12, 5);
+    const FramePlan p = plan_frame(s, host);
+    check_invariants(p, host);
+    CHECK_FALSE(p.owned_output);
+    CHECK(p.passes[0].rect.x == 4);
+    CHECK(p.passes[0].rect.y == 6);
+}
+
+TEST_CASE("plan: the same arguments give the same plan (pure)") {
+    const AnalysedInputs in = inputs(1, 2, 30, 20);
+    const ssao_settings s = resolved(SSAO_BLUR_GAUSSIAN);
+    const FramePlan a = plan_frame(s, in), b = plan_frame(s, in);
+    REQUIRE(a.pass_count == b.pass_count);
+    for (int i = 0; i < a.pass_count; ++i) {
+        CHECK(a.passes[i].kind == b.passes[i].kind);
+        CHECK(a.passes[i].target == b.passes[i].target);
+    }
+}
+
+TEST_CASE("plan: pass names are distinct, timing buckets split sampling from blurring") {
+    const PassKind all[] = {PassKind::clear, PassKind::ao, PassKind::blur_x, PassKind::blur_y};
+    std::set<std::string> names;
+    for (PassKind k : all) names.insert(pass_name(k));
+    CHECK(names.size() == 4);
+    CHECK(std::string(pass_name(PassKind::ao)) == "ssao: ao");
+    CHECK(std::string(pass_name(PassKind::blur_x)) == "ssao: blur x");
+    CHECK(std::string(pass_name(PassKind::blur_y)) == "ssao: blur y");
+    CHECK(std::string(pass_name(PassKind::clear)) == "ssao: clear");
+    CHECK(timing_bucket(PassKind::clear) == TimingBucket::ao);
+    CHECK(timing_bucket(PassKind::ao) == TimingBucket::ao);
+    CHECK(timing_bucket(PassKind::blur_x) == TimingBucket::blur);
+    CHECK(timing_bucket(PassKind::blur_y) == TimingBucket::blur);
+}
+
+TEST_CASE("plan: the method picks the AO pass's program and nothing else") {
+    const AnalysedInputs in = inputs(0, 0, 64, 48);
+    ssao_settings kernel = resolved(SSAO_BLUR_DEFAULT), visibility = kernel;
+    kernel.method = SSAO_METHOD_KERNEL;
+    visibility.method = SSAO_METHOD_VISIBILITY;
+    const FramePlan pk = plan_frame(kernel, in), pv = plan_frame(visibility, in);
+    check_invariants(pv, in);
+    REQUIRE(pk.pass_count == pv.pass_count);
+    CHECK(pk.passes[0].program == ProgramId::ao);
+    CHECK(pv.passes[0].program == ProgramId::visibility);
+    for (int i = 1; i < pv.pass_count; ++i) CHECK(pv.passes[i].program == pk.passes[i].program);
+    CHECK(pv.passes_run() == pk.passes_run());
+}
