@@ -12,8 +12,10 @@
 //   reference_normal.exr  channels R,G,B = view-space geometric normal facing the camera (0 for sky)
 // Row 0 of every image is the top row of the picture.
 #include "camera.h"
+#include "camera_flags.h"
 #include "flags.h"
 #include "image_io.h"
+#include "locate.h"
 #include "raytracer.h"
 #include "scene.h"
 
@@ -30,10 +32,6 @@
 #include <sys/stat.h>
 #include <unistd.h>
 #include <vector>
-
-#ifndef SSAO_DEFAULT_SCENE
-#define SSAO_DEFAULT_SCENE "assets/models/spot-on-ground.glb"
-#endif
 
 namespace {
 
@@ -81,14 +79,15 @@ const char* kHelp =
     "  --dump-buffers     also write reference_depth.exr and reference_normal.exr\n"
     "  --threads N        worker threads (default: all cores)\n"
     "  --quiet            no progress bar\n"
-    "  --help             this text\n"
+    "  --help, -h         this text\n"
+    "  --version          the version\n"
     "\n"
     "Writes DIR/reference_ao.exr (Y = AO, A = coverage: 0 for sky, where Y = 1),\n"
     "DIR/reference_stderr.exr (Y = standard error of the mean per pixel) and DIR/reference_ao.png.\n"
     "AO is V_R: the cosine-weighted fraction of the hemisphere around the face normal with no hit\n"
     "within the radius. Pixel centres, row 0 at the top, rays from inverse(projection * view).\n";
 
-enum class Parse { Run, Help, Error };
+enum class Parse { Run, Help, Version, Error };
 
 Parse parse(int argc, char** argv, Options& o, std::string& error) {
     const flags::Valued valued = {
@@ -123,7 +122,9 @@ Parse parse(int argc, char** argv, Options& o, std::string& error) {
         {"--reverse-z", [&] { o.cam.reverse_z = true; }},
     };
     try {
-        if (flags::walk(argc, argv, valued, switches, o.scene_path)) return Parse::Help;
+        const flags::Outcome outcome = flags::walk(argc, argv, valued, switches, o.scene_path);
+        if (outcome == flags::Outcome::Help) return Parse::Help;
+        if (outcome == flags::Outcome::Version) return Parse::Version;
         flags::check_camera(o.cam);
         if (double(o.width) * double(o.height) * double(o.samples) > 4e12)
             fail("--width x --height x --samples is absurdly large (more than 4e12 rays)");
@@ -167,10 +168,11 @@ int main(int argc, char** argv) {
     std::string error;
     switch (parse(argc, argv, o, error)) {
         case Parse::Help: std::fputs(kHelp, stdout); return 0;
+        case Parse::Version: std::printf("%s\n", flags::version_line("ssao-reference").c_str()); return 0;
         case Parse::Error: std::fprintf(stderr, "ssao-reference: %s.\n", error.c_str()); return 2;
         case Parse::Run: break;
     }
-    if (o.scene_path.empty()) o.scene_path = SSAO_DEFAULT_SCENE;
+    if (o.scene_path.empty()) o.scene_path = locate::bundled("models/spot-on-ground.glb");
 
     scene::Scene sc;
     if (!scene::load(o.scene_path, sc, error)) {
