@@ -8,8 +8,10 @@
 // A benchmark, not a test: nothing here asserts, it measures and reports.
 #include "camera.h"
 #include "egl_context.h"
+#include "flags.h"
 #include "gbuffer.h"
 #include "gl_util.h"
+#include "locate.h"
 #include "metrics.h"
 #include "plugin_loader.h"
 #include "raytracer.h"
@@ -39,6 +41,7 @@ struct Options {
     int reference_samples = 512;
     std::vector<int> resolution_scales = {1, 2};  // x the base size, default config + textbook only
     std::string out = "bench-out";
+    std::string plugin;  // empty: plugin::Library::search_order()
 };
 
 struct Config {
@@ -112,54 +115,58 @@ std::vector<Config> sweep() {
     return c;
 }
 
-bool parse(int argc, char** argv, Options& o, std::string& error) {
-    for (int i = 1; i < argc; ++i) {
-        const std::string a = argv[i];
-        auto value = [&](std::string& v) {
-            if (i + 1 >= argc) { error = a + " needs a value"; return false; }
-            v = argv[++i];
-            return true;
-        };
-        auto number = [&](int& v, int lo, int hi) {
-            std::string s;
-            if (!value(s)) return false;
-            char* end = nullptr;
-            const long n = std::strtol(s.c_str(), &end, 10);
-            if (s.empty() || *end != '\0' || n < lo || n > hi) {
-                error = a + " takes a whole number in " + std::to_string(lo) + ".." + std::to_string(hi) + ", not '" + s + "'";
-                return false;
-            }
-            v = static_cast<int>(n);
-            return true;
-        };
-        std::string v;
-        if (a == "--help" || a == "-h") {
-            std::printf(
-                "usage: ssao-bench [options] [scene.glb ...]\n"
-                "  --width N --height N   base resolution (default 160 x 120)\n"
-                "  --frames N             timed frames per configuration (default 15), after\n"
-                "  --warmup N             untimed frames (default 4)\n"
-                "  --reference-samples N  rays per pixel of the ground truth (default 512)\n"
-                "  --out DIR              where results go (default bench-out)\n"
-                "  --quick                fewer frames and rays, base resolution only\n"
-                "Scenes default to the bundled spot and teapot models and assets/scenes/corner.gltf.\n");
-            std::exit(0);
-        } else if (a == "--width") { if (!number(o.width, 8, 4096)) return false; }
-        else if (a == "--height") { if (!number(o.height, 8, 4096)) return false; }
-        else if (a == "--frames") { if (!number(o.frames, 1, 10000)) return false; }
-        else if (a == "--warmup") { if (!number(o.warmup, 0, 10000)) return false; }
-        else if (a == "--reference-samples") { if (!number(o.reference_samples, 16, 1 << 20)) return false; }
-        else if (a == "--out") { if (!value(o.out)) return false; }
-        else if (a == "--quick") { o.frames = 5; o.warmup = 2; o.reference_samples = 128; o.resolution_scales = {1}; }
-        else if (!a.empty() && a[0] == '-') { error = "unknown flag " + a + " (see --help)"; return false; }
-        else o.scenes.push_back(a);
+const char* kHelp =
+    "usage: ssao-bench [options] [scene.glb ...]\n"
+    "  --width N --height N   base resolution, 8..4096 (default 160 x 120)\n"
+    "  --frames N             timed frames per configuration (default 15), after\n"
+    "  --warmup N             untimed frames (default 4)\n"
+    "  --reference-samples N  rays per pixel of the ground truth (default 512)\n"
+    "  --out DIR              where results go (default bench-out)\n"
+    "  --quick                fewer frames and rays, base resolution only\n"
+    "  --plugin PATH          libssao.so to load (default: as ssao-host finds it)\n"
+    "  --help, -h / --version this text / the version\n"
+    "Scenes default to the bundled spot and teapot models and scenes/corner.gltf.\n";
+
+enum class Parse { Run, Help, Version, Error };
+
+// The shared parser (host/flags.h): --flag value and --flag=value alike.
+Parse parse(int argc, char** argv, Options& o, std::string& error) {
+    auto whole = [](int& out, long long lo, long long hi) {
+        return [&out, lo, hi](const std::string& f, const std::string& v) { out = int(flags::integer(f, v, lo, hi)); };
+    };
+    const flags::Valued valued = {
+        {"--width", whole(o.width, 8, 4096)},
+        {"--height", whole(o.height, 8, 4096)},
+        {"--frames", whole(o.frames, 1, 10000)},
+        {"--warmup", whole(o.warmup, 0, 10000)},
+        {"--reference-samples", whole(o.reference_samples, 16, 1 << 20)},
+        {"--out", [&](const std::string& f, const std::string& v) {
+             if (v.empty()) flags::fail(f + " needs a folder name");
+             o.out = v;
+         }},
+        {"--plugin", [&](const std::string& f, const std::string& v) {
+             if (v.empty()) flags::fail(f + " expects a path to libssao.so");
+             o.plugin = v;
+         }},
+    };
+    const flags::Switches switches = {
+        {"--quick", [&] { o.frames = 5; o.warmup = 2; o.reference_samples = 128; o.resolution_scales = {1}; }},
+    };
+    try {
+        switch (flags::walk(argc, argv, valued, switches, [&](const std::string& a) { o.scenes.push_back(a); })) {
+            case flags::Outcome::Help: return Parse::Help;
+            case flags::Outcome::Version: return Parse::Version;
+            case flags::Outcome::Run: break;
+        }
+    } catch (const flags::Error& e) {
+        error = e.message;
+        return Parse::Error;
     }
     if (o.scenes.empty()) {
-        o.scenes = {std::string(SSAO_SOURCE_DIR) + "/assets/models/spot-on-ground.glb",
-                    std::string(SSAO_SOURCE_DIR) + "/assets/models/teapot-on-ground.glb",
-                    std::string(SSAO_SOURCE_DIR) + "/assets/scenes/corner.gltf"};
+        o.scenes = {locate::bundled("models/spot-on-ground.glb"), locate::bundled("models/teapot-on-ground.glb"),
+                    locate::bundled("scenes/corner.gltf")};
     }
-    return true;
+    return Parse::Run;
 }
 
 // Top-row-first (reference) to bottom-row-first (GL read-back).
@@ -487,13 +494,15 @@ void write_outputs(const Options& o, const Measured& m) {
 int main(int argc, char** argv) {
     Options o;
     std::string error;
-    if (!parse(argc, argv, o, error)) {
-        std::fprintf(stderr, "ssao-bench: %s\n", error.c_str());
-        return 2;
+    switch (parse(argc, argv, o, error)) {
+        case Parse::Error: std::fprintf(stderr, "ssao-bench: %s\n", error.c_str()); return 2;
+        case Parse::Help: std::fputs(kHelp, stdout); return 0;
+        case Parse::Version: std::printf("%s\n", flags::version_line("ssao-bench").c_str()); return 0;
+        case Parse::Run: break;
     }
     try {
         plugin::Library lib;
-        if (!lib.open(plugin::Library::default_path(), error)) throw std::runtime_error(error);
+        if (!lib.open_default(o.plugin, error)) throw std::runtime_error(error);
         Measured m;
         for (size_t i = 0; i < o.scenes.size(); ++i)
             for (int scale : o.resolution_scales) {

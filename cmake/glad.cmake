@@ -6,7 +6,7 @@ find_program(SSAO_SYSTEM_PYTHON NAMES python3 PATHS /usr/bin NO_DEFAULT_PATH)
 if(NOT SSAO_SYSTEM_PYTHON)
   set(SSAO_SYSTEM_PYTHON ${Python3_EXECUTABLE})
 endif()
-set(GLAD_DIR ${CMAKE_BINARY_DIR}/glad)
+set(GLAD_DIR ${PROJECT_BINARY_DIR}/glad)
 set(GLAD_EXTENSIONS GL_KHR_debug,GL_ARB_clip_control,GL_ARB_timer_query,GL_ARB_direct_state_access)
 add_custom_command(
   OUTPUT ${GLAD_DIR}/src/gl.c ${GLAD_DIR}/include/glad/gl.h

@@ -1,6 +1,7 @@
 #include "cli.h"
 
 #include "camera.h"
+#include "camera_flags.h"
 #include "flags.h"
 
 #include <cerrno>
@@ -159,7 +160,9 @@ ParseResult parse(int argc, const char* const* argv, Options& o, std::string& er
     };
 
     try {
-        if (flags::walk(argc, argv, valued, switches, o.scene_path)) return ParseResult::Help;
+        const flags::Outcome outcome = flags::walk(argc, argv, valued, switches, o.scene_path);
+        if (outcome == flags::Outcome::Help) return ParseResult::Help;
+        if (outcome == flags::Outcome::Version) return ParseResult::Version;
         flags::check_camera(o.cam);
     } catch (const flags::Error& f) {
         error = f.message;
@@ -190,7 +193,8 @@ std::string help_text(const ssao_settings* d, const std::string& default_scene) 
          "  --sheet / --no-sheet    the E/R/T/Y/U mode sheet modes.png (default: on for all, off for --only ao)\n"
          "  --width N, --height N   image size, 1..16384 (default 800 x 600)\n"
          "  --frames N              plugin executions before reading GPU times, 1..1000 (default 8)\n"
-         "  --plugin PATH           libssao.so to load (default $SSAO_PLUGIN, beside the program, or the build tree)\n"
+         "  --plugin PATH           libssao.so to load (default $SSAO_PLUGIN, else ../lib/libssao.so.1 beside\n"
+         "                          the program, else the build tree's, else the system's; README \"Finding the plugin\")\n"
          "  --gl33                  ask for a GL 3.3 core context (default 4.5 core)\n"
          "\n"
          "Camera (default: the scene's camera, else framed from the scene bounds)\n"
@@ -240,6 +244,7 @@ std::string help_text(const ssao_settings* d, const std::string& default_scene) 
          "  modes.png               panels left to right: E no SSAO, R no rotation, T noise rotation,\n"
          "                          Y accelerating distribution, U hemisphere kernel (each lit with its AO)\n"
          "\n"
+         "  --help, -h / --version  this text / the version (every ssao tool takes both)\n"
          "Exit status: 0 on success, 1 when rendering or loading fails, 2 on a bad command line.\n";
     return h.str();
 }

@@ -23,7 +23,7 @@ enum class NormalFormat { RGBA16F, RGBA8 };
 struct Options {
     std::string scene_path;         // empty = the bundled default scene
     std::string out_dir = "out";
-    std::string plugin_path;        // empty = plugin::Library::default_path()
+    std::string plugin_path;        // empty = plugin::Library::search_order()
     int width = 800;
     int height = 600;
     bool gl33 = false;
@@ -55,7 +55,7 @@ struct Options {
     std::optional<ssao_output_format> output_format;
 };
 
-enum class ParseResult { Run, Help, Error };
+enum class ParseResult { Run, Help, Version, Error };
 
 // Parses argv. On Error, `error` holds one sentence naming the flag and the
 // problem. "--flag value" and "--flag=value" are both accepted.

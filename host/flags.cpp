@@ -1,5 +1,8 @@
 #include "flags.h"
 
+#include <ssao/ssao.h>
+#include <ssao_project_version.h>
+
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -49,12 +52,17 @@ glm::vec3 vec3(const std::string& flag, const std::string& text) {
     return v;
 }
 
-bool walk(int argc, const char* const* argv, const Valued& valued, const Switches& switches, std::string& scene_path) {
-    bool help = false, scene_seen = false;
+Outcome walk(int argc, const char* const* argv, const Valued& valued, const Switches& switches,
+             const Positional& positional) {
+    bool help = false, version = false;
     for (int i = 1; i < argc; ++i) {
         std::string arg = argv[i];
         if (arg == "--help" || arg == "-h") {
             help = true;
+            continue;
+        }
+        if (arg == "--version") {
+            version = true;
             continue;
         }
         if (arg.size() > 1 && arg[0] == '-') {
@@ -80,18 +88,25 @@ bool walk(int argc, const char* const* argv, const Valued& valued, const Switche
             h->second(arg, value);
             continue;
         }
-        if (scene_seen) fail("more than one scene file given: " + quoted(scene_path) + " and " + quoted(arg));
-        scene_path = arg;
-        scene_seen = true;
+        if (!positional) fail("unexpected argument " + quoted(arg) + " (see --help)");
+        positional(arg);
     }
-    return help;
+    return help ? Outcome::Help : version ? Outcome::Version : Outcome::Run;
 }
 
-void check_camera(const camera::Overrides& o) {
-    if (o.ortho_half_height && o.fov_deg) fail("--ortho and --fov exclude each other");
-    if (o.ortho_half_height && o.zfar && std::isinf(*o.zfar)) fail("--far inf needs a perspective camera (not --ortho)");
-    if (o.znear && o.zfar && !(*o.zfar > *o.znear)) fail("--far must be greater than --near");
-    if (o.eye && o.target && glm::all(glm::equal(*o.eye, *o.target))) fail("--eye and --target are the same point");
+Outcome walk(int argc, const char* const* argv, const Valued& valued, const Switches& switches,
+             std::string& scene_path) {
+    bool seen = false;
+    return walk(argc, argv, valued, switches, [&](const std::string& arg) {
+        if (seen) fail("more than one scene file given: " + quoted(scene_path) + " and " + quoted(arg));
+        scene_path = arg;
+        seen = true;
+    });
+}
+
+std::string version_line(const std::string& tool) {
+    return tool + " " + SSAO_PROJECT_VERSION + " (C ABI " + std::to_string(SSAO_VERSION_MAJOR(SSAO_API_VERSION)) + "." +
+           std::to_string(SSAO_VERSION_MINOR(SSAO_API_VERSION)) + ")";
 }
 
 }  // namespace flags

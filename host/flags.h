@@ -1,9 +1,8 @@
-// flags.h - the command-line plumbing ssao-host and ssao-reference share: one
-// argv walk (--flag value, --flag=value, switches, one positional scene) and
-// number parsers whose messages name the flag and the text they refused.
+// flags.h - the one command-line parser of all four tools (ssao-host,
+// ssao-reference, ssao-error, ssao-bench): one argv walk (--flag value and
+// --flag=value alike, switches, positional arguments, --help/-h, --version)
+// and number parsers whose messages name the flag and the text they refused.
 #pragma once
-
-#include "camera.h"
 
 #include <glm/glm.hpp>
 
@@ -13,7 +12,7 @@
 
 namespace flags {
 
-// Thrown by every parser; the tools print `message` and exit non-zero.
+// Thrown by every parser; the tools print `message` and exit with status 2.
 struct Error {
     std::string message;
 };
@@ -29,13 +28,26 @@ glm::vec3 vec3(const std::string& flag, const std::string& text);
 
 using Valued = std::map<std::string, std::function<void(const std::string& flag, const std::string& value)>>;
 using Switches = std::map<std::string, std::function<void()>>;
+// Receives each argument that is not a flag, in order; may fail().
+using Positional = std::function<void(const std::string& arg)>;
+
+enum class Outcome {
+    Run,      // every argument taken
+    Help,     // --help or -h was given: print the tool's help, exit 0
+    Version,  // --version was given: print version_line(tool), exit 0
+};
 
 // Walks argv[1..]: valued flags take the next argument or "=value", switches
-// take none, "--help"/"-h" are noted, anything else is the (single) scene
-// path. Returns whether help was asked for. Throws Error.
-bool walk(int argc, const char* const* argv, const Valued& valued, const Switches& switches, std::string& scene_path);
+// take none; anything else goes to `positional` (an empty Positional refuses
+// it). --help wins over --version. Throws Error.
+Outcome walk(int argc, const char* const* argv, const Valued& valued, const Switches& switches,
+             const Positional& positional);
+// The same, for tools whose one optional positional argument is a scene file.
+Outcome walk(int argc, const char* const* argv, const Valued& valued, const Switches& switches,
+             std::string& scene_path);
 
-// The camera flags' combinations that make no camera. Throws Error.
-void check_camera(const camera::Overrides& o);
+// "TOOL 1.0.0 (C ABI 1.0)": the project version from CMake's project() and
+// the interface version of include/ssao/ssao.h. Ends without a newline.
+std::string version_line(const std::string& tool);
 
 }  // namespace flags

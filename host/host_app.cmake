@@ -17,8 +17,6 @@ add_executable(ssao-host
   ${CMAKE_CURRENT_LIST_DIR}/image_io.cpp)
 target_include_directories(ssao-host PRIVATE ${CMAKE_CURRENT_LIST_DIR})
 target_link_libraries(ssao-host PRIVATE ssao_host_gl ssao_egl ssao_scene glm::glm tinyexr::tinyexr)
-# The bundled default scene is found in the source tree.
-target_compile_definitions(ssao-host PRIVATE SSAO_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
 target_compile_options(ssao-host PRIVATE ${SSAO_WARNINGS})
 # Building the program builds the plugin it loads (never linked: dlopen only).
 add_dependencies(ssao-host ssao)

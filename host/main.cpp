@@ -7,7 +7,9 @@
 #include "egl_context.h"
 #include "gbuffer.h"
 #include "gl_util.h"
+#include "flags.h"
 #include "image_io.h"
+#include "locate.h"
 #include "plugin_loader.h"
 #include "scene.h"
 
@@ -27,10 +29,6 @@
 #include <string>
 #include <vector>
 
-#ifndef SSAO_SOURCE_DIR
-#define SSAO_SOURCE_DIR "."
-#endif
-
 namespace {
 
 namespace fs = std::filesystem;
@@ -39,7 +37,9 @@ struct RunError : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
-std::string default_scene_path() { return std::string(SSAO_SOURCE_DIR) + "/assets/models/spot-on-ground.glb"; }
+// The bundled scene: <prefix>/share/ssao beside an installed program, the
+// source tree's assets/ for an uninstalled build (locate::data_dir).
+std::string default_scene_path() { return locate::bundled("models/spot-on-ground.glb"); }
 
 std::string fmt(double v, int precision = 4) {
     std::ostringstream s;
@@ -246,7 +246,9 @@ int run(const cli::Options& o) {
         if (fs::exists(o.out_dir, ec) && !fs::is_directory(o.out_dir, ec))
             throw RunError("the output path '" + o.out_dir + "' exists and is not a directory");
         if (o.scene_path.empty() && !fs::exists(scene_path, ec))
-            throw RunError("the bundled scene '" + scene_path + "' is missing; pass a .gltf or .glb file");
+            throw RunError("the bundled scene '" + scene_path + "' is missing (looked in $SSAO_DATA_DIR, " +
+                           "<program>/../share/ssao and, for an uninstalled build, the source tree); " +
+                           "pass a .gltf or .glb file");
         if (fs::is_directory(scene_path, ec))
             throw RunError("cannot load '" + scene_path + "': it is a directory, not a .gltf or .glb file");
     }
@@ -264,8 +266,7 @@ int run(const cli::Options& o) {
     // The plugin, through its C ABI only.
     plugin::Library library;
     std::string error;
-    const std::string plugin_path = o.plugin_path.empty() ? plugin::Library::default_path() : o.plugin_path;
-    if (!library.open(plugin_path, error)) throw RunError(error);
+    if (!library.open_default(o.plugin_path, error)) throw RunError(error);
     const ssao_api& api = library.api();
 
     scene::Scene sc;
@@ -484,6 +485,7 @@ int run(const cli::Options& o) {
                 cli::name(settings.blur), settings.blur_radius,
                 settings.strength == SSAO_STRENGTH_OFF ? "0 (off)" : fmt(settings.strength).c_str(),
                 fmt(settings.power).c_str(), cli::name(settings.output_format));
+    std::printf("  plugin: %s\n", library.loaded_path().c_str());
     std::printf("  plugin saw: %s, %s depth%s%s, near %s, far %s\n", info.orthographic ? "orthographic" : "perspective",
                 info.depth_bits == 32 ? "32-bit float" : (std::to_string(info.depth_bits) + "-bit").c_str(),
                 info.reverse_z ? ", reverse-Z" : "", info.infinite_far ? ", infinite far" : "",
@@ -516,7 +518,7 @@ int main(int argc, char** argv) {
             ssao_settings defaults{};
             defaults.size = sizeof defaults;
             bool have = false;
-            if (library.open(options.plugin_path.empty() ? plugin::Library::default_path() : options.plugin_path, error)) {
+            if (library.open_default(options.plugin_path, error)) {
                 ssao_settings zero{};
                 zero.size = sizeof zero;
                 have = library.api().resolve_settings(&zero, &defaults) == SSAO_OK;
@@ -524,6 +526,7 @@ int main(int argc, char** argv) {
             std::fputs(cli::help_text(have ? &defaults : nullptr, default_scene_path()).c_str(), stdout);
             return 0;
         }
+        case cli::ParseResult::Version: std::printf("%s\n", flags::version_line("ssao-host").c_str()); return 0;
         case cli::ParseResult::Run: break;
     }
     try {

@@ -1,13 +1,22 @@
 #include "plugin_loader.h"
 
+#include "locate.h"
+
 #include <dlfcn.h>
 #include <unistd.h>
 
 #include <climits>
 #include <cstdlib>
 
+// Set by host/CMakeLists.txt.
 #ifndef SSAO_PLUGIN_BUILD_PATH
-#define SSAO_PLUGIN_BUILD_PATH "libssao.so"
+#define SSAO_PLUGIN_BUILD_PATH ""
+#endif
+#ifndef SSAO_PLUGIN_SONAME
+#define SSAO_PLUGIN_SONAME "libssao.so.1"
+#endif
+#ifndef SSAO_BIN_TO_LIB
+#define SSAO_BIN_TO_LIB "../lib"
 #endif
 
 namespace plugin {
@@ -17,6 +26,10 @@ Library::~Library() {
 }
 
 bool Library::open(const std::string& path, std::string& error) {
+    if (handle_) {
+        dlclose(handle_);
+        handle_ = nullptr;
+    }
     handle_ = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
     if (!handle_) {
         const char* why = dlerror();
@@ -36,21 +49,41 @@ bool Library::open(const std::string& path, std::string& error) {
                 std::to_string(static_cast<int>(status)) + ")";
         return false;
     }
+    // The file the dynamic loader picked, symlinks and ".." resolved.
+    Dl_info info{};
+    loaded_ = dladdr(reinterpret_cast<void*>(get_api), &info) && info.dli_fname ? info.dli_fname : path;
+    char real[PATH_MAX];
+    if (realpath(loaded_.c_str(), real)) loaded_ = real;
     return true;
 }
 
-std::string Library::default_path() {
-    if (const char* env = std::getenv("SSAO_PLUGIN")) return env;
-    char self[PATH_MAX];
-    const ssize_t n = readlink("/proc/self/exe", self, sizeof self - 1);
-    if (n > 0) {
-        self[n] = '\0';
-        std::string dir(self);
-        dir = dir.substr(0, dir.find_last_of('/'));
-        const std::string beside = dir + "/libssao.so";
-        if (access(beside.c_str(), R_OK) == 0) return beside;
+bool Library::open_default(const std::string& explicit_path, std::string& error) {
+    std::string tried;
+    for (const std::string& candidate : search_order(explicit_path)) {
+        std::string why;
+        if (open(candidate, why)) return true;
+        tried += (tried.empty() ? " " : "; ") + why;
     }
-    return SSAO_PLUGIN_BUILD_PATH;
+    error = "cannot load the SSAO plugin (give --plugin PATH or set SSAO_PLUGIN); tried:" + tried;
+    return false;
+}
+
+std::vector<std::string> Library::search_order(const std::string& explicit_path) {
+    if (!explicit_path.empty()) return {explicit_path};
+    if (const char* env = std::getenv("SSAO_PLUGIN"); env && *env) return {env};
+    std::vector<std::string> order;
+    const std::string exe = locate::executable_dir();
+    if (!exe.empty()) order.push_back(exe + "/" + SSAO_BIN_TO_LIB + "/" + SSAO_PLUGIN_SONAME);
+    if (locate::in_build_tree() && *SSAO_PLUGIN_BUILD_PATH) order.push_back(SSAO_PLUGIN_BUILD_PATH);
+    order.push_back(SSAO_PLUGIN_SONAME);
+    return order;
+}
+
+std::string Library::default_path() {
+    const std::vector<std::string> order = search_order();
+    for (const std::string& candidate : order)
+        if (candidate.find('/') != std::string::npos && access(candidate.c_str(), R_OK) == 0) return candidate;
+    return order.back();
 }
 
 }  // namespace plugin

@@ -12,6 +12,7 @@
 // Prints RMSE, PSNR (peak 1), mean signed error, 99th percentile and max of
 // |error| over the masks all / interior / silhouette band / screen-border band,
 // with the reference's own noise floor; --csv appends the same rows to FILE.
+#include "flags.h"
 #include "image_io.h"
 #include "metrics.h"
 
@@ -41,7 +42,8 @@ const char* kHelp =
     "  --band K          width in pixels of the silhouette and screen-border bands, 0..256 (default 3)\n"
     "  --csv FILE        append one row per mask to FILE (header written when FILE is new)\n"
     "  --label TEXT      first CSV column (default: TEST's path)\n"
-    "  --help            this text\n"
+    "  --help, -h        this text\n"
+    "  --version         the version\n"
     "\n"
     "Masks (sky always excluded): all; silhouette = within K px of a depth discontinuity or sky edge;\n"
     "border = within K px of the image edge; interior = the rest. 'ref noise' is the mean reference\n"
@@ -67,43 +69,24 @@ int main(int argc, char** argv) {
     std::vector<std::string> positional;
     std::string stderr_path, depth_path, limit_path, csv_path, label;
     int band = 3;
-    for (int i = 1; i < argc; ++i) {
-        std::string a = argv[i];
-        std::string value;
-        bool has_value = false;
-        const size_t eq = a.find('=');
-        if (a.rfind("--", 0) == 0 && eq != std::string::npos) {
-            value = a.substr(eq + 1);
-            a = a.substr(0, eq);
-            has_value = true;
+    // The shared parser (host/flags.h): --flag value and --flag=value alike.
+    const flags::Valued valued = {
+        {"--ref-stderr", [&](const std::string&, const std::string& v) { stderr_path = v; }},
+        {"--ref-depth", [&](const std::string&, const std::string& v) { depth_path = v; }},
+        {"--limit", [&](const std::string&, const std::string& v) { limit_path = v; }},
+        {"--csv", [&](const std::string&, const std::string& v) { csv_path = v; }},
+        {"--label", [&](const std::string&, const std::string& v) { label = v; }},
+        {"--band", [&](const std::string& f, const std::string& v) { band = int(flags::integer(f, v, 0, 256)); }},
+    };
+    try {
+        switch (flags::walk(argc, argv, valued, {}, [&](const std::string& a) { positional.push_back(a); })) {
+            case flags::Outcome::Help: std::fputs(kHelp, stdout); return 0;
+            case flags::Outcome::Version: std::printf("%s\n", flags::version_line("ssao-error").c_str()); return 0;
+            case flags::Outcome::Run: break;
         }
-        if (a == "--help" || a == "-h") {
-            std::fputs(kHelp, stdout);
-            return 0;
-        }
-        if (a == "--ref-stderr" || a == "--ref-depth" || a == "--limit" || a == "--band" || a == "--csv" ||
-            a == "--label") {
-            if (!has_value) {
-                if (i + 1 >= argc) return usage_error(a + " needs a value");
-                value = argv[++i];
-            }
-            if (a == "--ref-stderr") stderr_path = value;
-            else if (a == "--ref-depth") depth_path = value;
-            else if (a == "--limit") limit_path = value;
-            else if (a == "--csv") csv_path = value;
-            else if (a == "--label") label = value;
-            else {
-                char* end = nullptr;
-                errno = 0;
-                const long v = std::strtol(value.c_str(), &end, 10);
-                if (value.empty() || *end != '\0' || errno == ERANGE || v < 0 || v > 256)
-                    return usage_error("--band expects a whole number 0..256, got '" + value + "'");
-                band = int(v);
-            }
-            continue;
-        }
-        if (a.size() > 1 && a[0] == '-') return usage_error("unknown flag '" + a + "'");
-        positional.push_back(a);
+    } catch (const flags::Error& e) {
+        std::fprintf(stderr, "ssao-error: %s.\n", e.message.c_str());  // the message names --help already
+        return 2;
     }
     if (positional.size() != 2) return usage_error("expected two images, TEST.exr and REF, got " + std::to_string(positional.size()));
     const std::string test_path = positional[0];

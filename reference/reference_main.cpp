@@ -16,9 +16,11 @@
 //   limit_ao.png          8-bit grey of V_limit
 // Row 0 of every image is the top row of the picture.
 #include "camera.h"
+#include "camera_flags.h"
 #include "depth_limit.h"
 #include "flags.h"
 #include "image_io.h"
+#include "locate.h"
 #include "metrics.h"
 #include "raytracer.h"
 #include "scene.h"
@@ -36,10 +38,6 @@
 #include <sys/stat.h>
 #include <unistd.h>
 #include <vector>
-
-#ifndef SSAO_DEFAULT_SCENE
-#define SSAO_DEFAULT_SCENE "assets/models/spot-on-ground.glb"
-#endif
 
 namespace {
 
@@ -105,7 +103,8 @@ std::string help_text() {
     std::to_string(depth_limit::kReplicas) + " (default " + std::to_string(depth_limit::kDefaultDirections) + ")\n"
     "  --threads N        worker threads (default: all cores)\n"
     "  --quiet            no progress bar\n"
-    "  --help             this text\n"
+    "  --help, -h         this text\n"
+    "  --version          the version\n"
     "\n"
     "Writes DIR/reference_ao.exr (Y = AO, A = coverage: 0 for sky, where Y = 1),\n"
     "DIR/reference_stderr.exr (Y = standard error of the mean per pixel) and DIR/reference_ao.png.\n"
@@ -113,7 +112,7 @@ std::string help_text() {
     "within the radius. Pixel centres, row 0 at the top, rays from inverse(projection * view).\n";
 }
 
-enum class Parse { Run, Help, Error };
+enum class Parse { Run, Help, Version, Error };
 
 Parse parse(int argc, char** argv, Options& o, std::string& error) {
     const flags::Valued valued = {
@@ -160,7 +159,9 @@ Parse parse(int argc, char** argv, Options& o, std::string& error) {
         {"--reverse-z", [&] { o.cam.reverse_z = true; }},
     };
     try {
-        if (flags::walk(argc, argv, valued, switches, o.scene_path)) return Parse::Help;
+        const flags::Outcome outcome = flags::walk(argc, argv, valued, switches, o.scene_path);
+        if (outcome == flags::Outcome::Help) return Parse::Help;
+        if (outcome == flags::Outcome::Version) return Parse::Version;
         flags::check_camera(o.cam);
         if (!o.limit && o.thickness) fail("--thickness applies only with --limit");
         if (!o.limit && o.limit_directions) fail("--limit-directions applies only with --limit");
@@ -206,10 +207,11 @@ int main(int argc, char** argv) {
     std::string error;
     switch (parse(argc, argv, o, error)) {
         case Parse::Help: std::fputs(help_text().c_str(), stdout); return 0;
+        case Parse::Version: std::printf("%s\n", flags::version_line("ssao-reference").c_str()); return 0;
         case Parse::Error: std::fprintf(stderr, "ssao-reference: %s.\n", error.c_str()); return 2;
         case Parse::Run: break;
     }
-    if (o.scene_path.empty()) o.scene_path = SSAO_DEFAULT_SCENE;
+    if (o.scene_path.empty()) o.scene_path = locate::bundled("models/spot-on-ground.glb");
 
     scene::Scene sc;
     if (!scene::load(o.scene_path, sc, error)) {

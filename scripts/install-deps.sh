@@ -8,6 +8,7 @@ packages=(
   python3 python3-glad
   libtinygltf-dev nlohmann-json3-dev libstb-dev libtinyexr-dev
   libembree-dev doctest-dev
+  python3-moderngl python3-numpy
 )
 missing=()
 for p in "${packages[@]}"; do

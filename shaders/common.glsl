@@ -38,7 +38,7 @@ float depth_step(vec4 p, float d) {
     // [-1,1] clip range: the rasteriser held NDC z = 2d - 1 in float before
     // storing d, and view_position goes back through it, so no float depth is
     // finer than one ulp of NDC z (reverse-Z without a [0,1] clip range keeps
-    // standard-Z precision; DESIGN.md).
+    // standard-Z precision; README "Depth precision").
     if (u_depth.y == 0.0 && u_ao2.w == 2.0) ulp = max(ulp, abs(d * 2.0 - 1.0) * 0.5 * 1.1920929e-7);
     return abs(dz_dndc) * u_ao2.w * ulp;
 }

@@ -1,4 +1,5 @@
-// The ray tracer against the closed forms of DESIGN.md ("Ground truth and accuracy"),
+// The ray tracer against closed forms of V_R (listed in the README, "Ground truth:
+// the ray-traced reference", Tests),
 // within 4 standard errors (plus a small allowance for finite geometry).
 #include "geometry.h"
 #include "raytracer.h"

@@ -1,0 +1,50 @@
+# cmake --install build --prefix P installs:
+#   P/lib/libssao.so.1.0.0, libssao.so.1 (SONAME), libssao.so (dev link)
+#   P/include/ssao/ssao.h
+#   P/lib/cmake/ssao/ssaoConfig.cmake, ssaoConfigVersion.cmake, ssaoTargets*.cmake
+#     (ssao::ssao links the library, ssao::headers is the header alone)
+#   P/lib/pkgconfig/ssao.pc
+#   P/bin/ssao-host, ssao-reference, ssao-error, ssao-bench (with SSAO_BUILD_TOOLS)
+#   P/share/ssao/models, scenes (the bundled data the tools find beside bin/)
+#   P/share/doc/ssao/README.md, LICENSE, assets-README.md
+# Every path inside is relative to P, so the tree may be moved after installing.
+include(CMakePackageConfigHelpers)
+
+set(SSAO_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/ssao)
+
+install(TARGETS ssao ssao_headers EXPORT ssaoTargets
+  LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT runtime NAMELINK_COMPONENT dev
+  INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+install(FILES ${PROJECT_SOURCE_DIR}/include/ssao/ssao.h DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/ssao COMPONENT dev)
+install(EXPORT ssaoTargets NAMESPACE ssao:: DESTINATION ${SSAO_CMAKE_DIR} COMPONENT dev)
+
+configure_package_config_file(${CMAKE_CURRENT_LIST_DIR}/ssaoConfig.cmake.in
+  ${PROJECT_BINARY_DIR}/package/ssaoConfig.cmake
+  INSTALL_DESTINATION ${SSAO_CMAKE_DIR})
+# Same major = compatible: the C ABI only grows within a major version.
+write_basic_package_version_file(${PROJECT_BINARY_DIR}/package/ssaoConfigVersion.cmake
+  VERSION ${PROJECT_VERSION} COMPATIBILITY SameMajorVersion)
+install(FILES ${PROJECT_BINARY_DIR}/package/ssaoConfig.cmake ${PROJECT_BINARY_DIR}/package/ssaoConfigVersion.cmake
+  DESTINATION ${SSAO_CMAKE_DIR} COMPONENT dev)
+
+# pkg-config: prefix relative to the .pc file itself, so a moved tree works.
+file(RELATIVE_PATH SSAO_PC_TO_PREFIX ${CMAKE_INSTALL_FULL_LIBDIR}/pkgconfig ${CMAKE_INSTALL_PREFIX})
+string(REGEX REPLACE "/$" "" SSAO_PC_TO_PREFIX "${SSAO_PC_TO_PREFIX}")
+configure_file(${CMAKE_CURRENT_LIST_DIR}/ssao.pc.in ${PROJECT_BINARY_DIR}/package/ssao.pc @ONLY)
+install(FILES ${PROJECT_BINARY_DIR}/package/ssao.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig COMPONENT dev)
+
+set(SSAO_DOC_DIR ${CMAKE_INSTALL_DATADIR}/doc/ssao)
+install(FILES ${PROJECT_SOURCE_DIR}/README.md ${PROJECT_SOURCE_DIR}/LICENSE DESTINATION ${SSAO_DOC_DIR} COMPONENT runtime)
+
+if(SSAO_BUILD_TOOLS)
+  install(TARGETS ssao-host ssao-reference ssao-error ssao-bench RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT tools)
+  # The data the tools find at <bin>/../share/ssao (host/locate.cpp), with the
+  # models' own licences (assets/models/README.md).
+  install(FILES
+      ${PROJECT_SOURCE_DIR}/assets/models/spot-on-ground.glb
+      ${PROJECT_SOURCE_DIR}/assets/models/teapot-on-ground.glb
+      ${PROJECT_SOURCE_DIR}/assets/models/README.md
+    DESTINATION ${CMAKE_INSTALL_DATADIR}/ssao/models COMPONENT tools)
+  install(FILES ${PROJECT_SOURCE_DIR}/assets/scenes/corner.gltf
+    DESTINATION ${CMAKE_INSTALL_DATADIR}/ssao/scenes COMPONENT tools)
+endif()

@@ -1,0 +1,500 @@
+"""ssao.py - the SSAO plugin (libssao.so) from Python, through ctypes only.
+
+A mirror of include/ssao/ssao.h (structs, enums, constants) and a thin wrapper
+of its function table:
+
+    import ssao
+    lib = ssao.Library()                      # $SSAO_PLUGIN, else libssao.so.1 on the search path
+    settings = lib.preset_settings(ssao.SSAO_PRESET_MEDIUM)
+    settings.radius = 0.5
+    with lib.create_context(settings=settings) as ctx:   # a GL 3.3+ context current
+        out = ctx.execute(depth_texture=depth.glo, normal_texture=normals.glo,
+                          projection=proj_column_major,
+                          normal_packing=ssao.SSAO_NORMAL_PACKING_SIGNED)
+        print(out.texture, ctx.timings().total_ms)
+
+Every failing call raises ssao.Error, whose .status is the ssao_status and
+whose .last_error is the library's sentence on it.
+
+Keeping the mirror true: tests/python/test_layout.py compares every struct's
+size and every field's name, order, offset, size and type, every enumerator and
+every constant below with what the C compiler makes of ssao.h. A field appended
+to a struct in the header is one line appended to its _fields_ here; until it
+is, that test fails and names the field.
+"""
+
+import ctypes
+import enum
+import os
+
+__all__ = ["Library", "Context", "Error"]  # plus every SSAO_* constant and ssao_* type below
+
+# ----------------------------------------------------------------- constants
+
+
+def SSAO_MAKE_VERSION(major, minor):
+    return ((major << 16) | minor) & 0xFFFFFFFF
+
+
+SSAO_API_VERSION = SSAO_MAKE_VERSION(1, 1)
+SSAO_MAX_SAMPLES = 64
+SSAO_MAX_BLUR_RADIUS = 16
+SSAO_MAX_STEPS = 32
+SSAO_MAX_PASSES = 8
+SSAO_SETTINGS_SIZE_1_0 = 64
+SSAO_MAX_DIMENSION = 16384
+SSAO_TEXTURE_UNITS_USED = 4
+SSAO_STRENGTH_OFF = -1.0
+
+# --------------------------------------------------------------------- enums
+# Named as in C; every member is also a module constant (ssao.SSAO_OK).
+
+
+class ssao_status(enum.IntEnum):
+    SSAO_OK = 0
+    SSAO_ERROR_NULL_POINTER = 1
+    SSAO_ERROR_STRUCT_SIZE = 2
+    SSAO_ERROR_VERSION_MISMATCH = 3
+    SSAO_ERROR_INVALID_ENUM = 4
+    SSAO_ERROR_INVALID_VALUE = 5
+    SSAO_ERROR_INVALID_SIZE = 6
+    SSAO_ERROR_INVALID_TEXTURE = 7
+    SSAO_ERROR_UNSUPPORTED_FORMAT = 8
+    SSAO_ERROR_INVALID_PROJECTION = 9
+    SSAO_ERROR_GL_VERSION = 10
+    SSAO_ERROR_GL_LOAD = 11
+    SSAO_ERROR_SHADER = 12
+    SSAO_ERROR_FRAMEBUFFER = 13
+    SSAO_ERROR_OUT_OF_MEMORY = 14
+    SSAO_ERROR_INTERNAL = 15
+    SSAO_STATUS_MAX_ENUM = 0x7FFFFFFF
+
+
+class ssao_kernel_shape(enum.IntEnum):
+    SSAO_KERNEL_DEFAULT = 0
+    SSAO_KERNEL_HEMISPHERE = 1
+    SSAO_KERNEL_SPHERE = 2
+    SSAO_KERNEL_SEPARABLE = 3
+    SSAO_KERNEL_MAX_ENUM = 0x7FFFFFFF
+
+
+class ssao_kernel_distribution(enum.IntEnum):
+    SSAO_DISTRIBUTION_DEFAULT = 0
+    SSAO_DISTRIBUTION_ACCELERATING = 1
+    SSAO_DISTRIBUTION_UNIFORM = 2
+    SSAO_DISTRIBUTION_MAX_ENUM = 0x7FFFFFFF
+
+
+class ssao_rotation(enum.IntEnum):
+    SSAO_ROTATION_DEFAULT = 0
+    SSAO_ROTATION_NOISE_4X4 = 1
+    SSAO_ROTATION_HASH = 2
+    SSAO_ROTATION_NONE = 3
+    SSAO_ROTATION_MAX_ENUM = 0x7FFFFFFF
+
+
+class ssao_blur(enum.IntEnum):
+    SSAO_BLUR_DEFAULT = 0
+    SSAO_BLUR_DEPTH_AWARE = 1
+    SSAO_BLUR_BOX_4X4 = 2
+    SSAO_BLUR_GAUSSIAN = 3
+    SSAO_BLUR_NONE = 4
+    SSAO_BLUR_MAX_ENUM = 0x7FFFFFFF
+
+
+class ssao_method(enum.IntEnum):
+    SSAO_METHOD_DEFAULT = 0
+    SSAO_METHOD_KERNEL = 1
+    SSAO_METHOD_VISIBILITY = 2
+    SSAO_METHOD_MAX_ENUM = 0x7FFFFFFF
+
+
+class ssao_output_format(enum.IntEnum):
+    SSAO_OUTPUT_DEFAULT = 0
+    SSAO_OUTPUT_R8 = 1
+    SSAO_OUTPUT_R16F = 2
+    SSAO_OUTPUT_MAX_ENUM = 0x7FFFFFFF
+
+
+class ssao_preset(enum.IntEnum):
+    SSAO_PRESET_DEFAULT = 0
+    SSAO_PRESET_LOW = 1
+    SSAO_PRESET_MEDIUM = 2
+    SSAO_PRESET_HIGH = 3
+    SSAO_PRESET_ULTRA = 4
+    SSAO_PRESET_MAX_ENUM = 0x7FFFFFFF
+
+
+class ssao_clip_range(enum.IntEnum):
+    SSAO_CLIP_DEFAULT = 0
+    SSAO_CLIP_NEGATIVE_ONE_TO_ONE = 1
+    SSAO_CLIP_ZERO_TO_ONE = 2
+    SSAO_CLIP_MAX_ENUM = 0x7FFFFFFF
+
+
+class ssao_normal_space(enum.IntEnum):
+    SSAO_NORMAL_SPACE_DEFAULT = 0
+    SSAO_NORMAL_SPACE_VIEW = 1
+    SSAO_NORMAL_SPACE_WORLD = 2
+    SSAO_NORMAL_SPACE_MAX_ENUM = 0x7FFFFFFF
+
+
+class ssao_normal_packing(enum.IntEnum):
+    SSAO_NORMAL_PACKING_DEFAULT = 0
+    SSAO_NORMAL_PACKING_UNORM = 1
+    SSAO_NORMAL_PACKING_SIGNED = 2
+    SSAO_NORMAL_PACKING_MAX_ENUM = 0x7FFFFFFF
+
+
+class ssao_pass(enum.IntEnum):
+    SSAO_PASS_AO = 1
+    SSAO_PASS_BLUR_X = 2
+    SSAO_PASS_BLUR_Y = 4
+    SSAO_PASS_CLEAR = 8
+    SSAO_PASS_MAX_ENUM = 0x7FFFFFFF
+
+
+class ssao_log_level(enum.IntEnum):
+    SSAO_LOG_INFO = 0
+    SSAO_LOG_WARNING = 1
+    SSAO_LOG_ERROR = 2
+    SSAO_LOG_MAX_ENUM = 0x7FFFFFFF
+
+
+ENUMS = (ssao_status, ssao_kernel_shape, ssao_kernel_distribution, ssao_rotation, ssao_blur,
+         ssao_method, ssao_output_format, ssao_preset, ssao_clip_range, ssao_normal_space, ssao_normal_packing,
+         ssao_pass, ssao_log_level)
+for _e in ENUMS:
+    globals().update(_e.__members__)
+
+# A C enum of these (values 0..0x7fffffff) is an int.
+_enum = ctypes.c_int
+
+# ------------------------------------------------------------------- structs
+
+
+class _Sized(ctypes.Structure):
+    """A struct whose first field is `uint32_t size`, set to sizeof on creation."""
+
+    def __init__(self, *args, **kwargs):
+        super().__init__(*args, **kwargs)
+        if "size" not in kwargs:
+            self.size = ctypes.sizeof(self)
+
+    def __repr__(self):
+        fields = ", ".join("%s=%r" % (name, _plain(getattr(self, name))) for name, _ in self._fields_)
+        return "%s(%s)" % (type(self).__name__, fields)
+
+
+def _plain(value):
+    return list(value) if isinstance(value, ctypes.Array) else value
+
+
+# One line per field, in the header's order: append new fields at the end.
+class ssao_settings(_Sized):
+    _fields_ = [
+        ("size", ctypes.c_uint32),
+        ("sample_count", ctypes.c_uint32),
+        ("radius", ctypes.c_float),
+        ("bias", ctypes.c_float),
+        ("depth_step_bias", ctypes.c_float),
+        ("power", ctypes.c_float),
+        ("strength", ctypes.c_float),
+        ("kernel_shape", _enum),
+        ("distribution", _enum),
+        ("rotation", _enum),
+        ("seed", ctypes.c_uint32),
+        ("blur", _enum),
+        ("blur_radius", ctypes.c_uint32),
+        ("blur_sigma", ctypes.c_float),
+        ("blur_depth_tolerance", ctypes.c_float),
+        ("output_format", _enum),
+        # 1.1
+        ("method", _enum),
+        ("thickness", ctypes.c_float),
+        ("step_count", ctypes.c_uint32),
+    ]
+
+
+class ssao_inputs(_Sized):
+    _fields_ = [
+        ("size", ctypes.c_uint32),
+        ("depth_texture", ctypes.c_uint32),
+        ("normal_texture", ctypes.c_uint32),
+        ("normal_space", _enum),
+        ("normal_packing", _enum),
+        ("projection", ctypes.c_float * 16),
+        ("view_matrix", ctypes.c_float * 16),
+        ("clip_range", _enum),
+        ("viewport", ctypes.c_int32 * 4),
+        ("output_texture", ctypes.c_uint32),
+    ]
+
+
+class ssao_output(_Sized):
+    _fields_ = [
+        ("size", ctypes.c_uint32),
+        ("texture", ctypes.c_uint32),
+        ("origin", ctypes.c_int32 * 2),
+        ("passes_run", ctypes.c_uint32),
+    ]
+
+
+class ssao_timings(_Sized):
+    _fields_ = [
+        ("size", ctypes.c_uint32),
+        ("available", ctypes.c_uint32),
+        ("frame", ctypes.c_uint64),
+        ("ao_ms", ctypes.c_double),
+        ("blur_ms", ctypes.c_double),
+        ("total_ms", ctypes.c_double),
+        # 1.1
+        ("pass_count", ctypes.c_uint32),
+        ("pass_kind", ctypes.c_uint32 * SSAO_MAX_PASSES),
+        ("reserved", ctypes.c_uint32),
+        ("pass_ms", ctypes.c_double * SSAO_MAX_PASSES),
+    ]
+
+
+class ssao_frame_info(_Sized):
+    _fields_ = [
+        ("size", ctypes.c_uint32),
+        ("orthographic", ctypes.c_uint32),
+        ("reverse_z", ctypes.c_uint32),
+        ("infinite_far", ctypes.c_uint32),
+        ("depth_bits", ctypes.c_uint32),
+        ("near_distance", ctypes.c_float),
+        ("far_distance", ctypes.c_float),
+    ]
+
+
+# Opaque; only ever handled through a pointer.
+class ssao_context(ctypes.Structure):
+    _fields_ = []
+
+
+ssao_gl_proc = ctypes.c_void_p  # void (*)(void), carried as an address
+ssao_get_proc_address_fn = ctypes.CFUNCTYPE(ctypes.c_void_p, ctypes.c_void_p, ctypes.c_char_p)
+ssao_log_fn = ctypes.CFUNCTYPE(None, ctypes.c_void_p, _enum, ctypes.c_char_p)
+
+
+class ssao_context_desc(_Sized):
+    _fields_ = [
+        ("size", ctypes.c_uint32),
+        ("get_proc_address", ssao_get_proc_address_fn),
+        ("get_proc_address_user", ctypes.c_void_p),
+        ("log", ssao_log_fn),
+        ("log_user", ctypes.c_void_p),
+        ("settings", ctypes.POINTER(ssao_settings)),
+    ]
+
+
+_ctx_p = ctypes.POINTER(ssao_context)
+_status = _enum
+
+
+class ssao_api(_Sized):
+    _fields_ = [
+        ("size", ctypes.c_uint32),
+        ("version", ctypes.c_uint32),
+        ("status_string", ctypes.CFUNCTYPE(ctypes.c_char_p, _status)),
+        ("resolve_settings", ctypes.CFUNCTYPE(_status, ctypes.POINTER(ssao_settings), ctypes.POINTER(ssao_settings))),
+        ("preset_settings", ctypes.CFUNCTYPE(_status, _enum, ctypes.POINTER(ssao_settings))),
+        ("create_context", ctypes.CFUNCTYPE(_status, ctypes.POINTER(ssao_context_desc), ctypes.POINTER(_ctx_p))),
+        ("destroy_context", ctypes.CFUNCTYPE(_status, _ctx_p)),
+        ("set_settings", ctypes.CFUNCTYPE(_status, _ctx_p, ctypes.POINTER(ssao_settings))),
+        ("get_settings", ctypes.CFUNCTYPE(_status, _ctx_p, ctypes.POINTER(ssao_settings))),
+        ("execute", ctypes.CFUNCTYPE(_status, _ctx_p, ctypes.POINTER(ssao_inputs), ctypes.POINTER(ssao_output))),
+        ("get_timings", ctypes.CFUNCTYPE(_status, _ctx_p, ctypes.POINTER(ssao_timings))),
+        ("get_frame_info", ctypes.CFUNCTYPE(_status, _ctx_p, ctypes.POINTER(ssao_frame_info))),
+        ("last_error", ctypes.CFUNCTYPE(ctypes.c_char_p, _ctx_p)),
+    ]
+
+
+PFN_ssao_get_api = ctypes.CFUNCTYPE(_status, ctypes.c_uint32, ctypes.POINTER(ssao_api))
+
+# Every struct the header defines, for the layout test.
+STRUCTS = (ssao_settings, ssao_inputs, ssao_output, ssao_timings, ssao_frame_info, ssao_context_desc, ssao_api)
+
+# ------------------------------------------------------------------ wrapper
+
+
+class Error(Exception):
+    """A call into the library failed: .function, .status (ssao_status), .last_error (str)."""
+
+    def __init__(self, function, status, last_error):
+        try:
+            status = ssao_status(status)
+        except ValueError:
+            pass
+        self.function = function
+        self.status = status
+        self.last_error = last_error
+        name = status.name if isinstance(status, ssao_status) else str(status)
+        super().__init__("%s failed: %s%s" % (function, name, ": " + last_error if last_error else ""))
+
+
+def _text(raw):
+    return raw.decode("utf-8", "replace") if raw else ""
+
+
+def _search_order(path):
+    """Where Library() looks: the explicit path alone, else $SSAO_PLUGIN alone,
+    else the soname through the dynamic loader's search (LD_LIBRARY_PATH,
+    ld.so.cache, /usr/lib...)."""
+    if path:
+        return [str(path)]
+    env = os.environ.get("SSAO_PLUGIN")
+    if env:
+        return [env]
+    return ["libssao.so.1", "libssao.so"]
+
+
+def egl_get_proc_address():
+    """A get_proc_address for create_context on the current EGL context
+    (moderngl's EGL backend, or any host on EGL)."""
+    egl = ctypes.CDLL("libEGL.so.1")
+    egl.eglGetProcAddress.restype = ctypes.c_void_p
+    egl.eglGetProcAddress.argtypes = [ctypes.c_char_p]
+
+    def get(_user, name):
+        return egl.eglGetProcAddress(name)
+
+    return get
+
+
+class Library:
+    """libssao.so, opened with dlopen (ctypes.CDLL), and its function table."""
+
+    def __init__(self, path=None):
+        errors = []
+        self._dll = None
+        for candidate in _search_order(path):
+            try:
+                self._dll = ctypes.CDLL(candidate, mode=os.RTLD_NOW | os.RTLD_LOCAL)
+                self.path = candidate
+                break
+            except OSError as e:
+                errors.append(str(e))
+        if self._dll is None:
+            raise OSError("cannot load the SSAO plugin (pass a path or set SSAO_PLUGIN): " + "; ".join(errors))
+        get_api = PFN_ssao_get_api(("ssao_get_api", self._dll))
+        self.api = ssao_api()
+        status = get_api(SSAO_API_VERSION, ctypes.byref(self.api))
+        if status != SSAO_OK:
+            raise Error("ssao_get_api", status, "the library refused interface version 1.0")
+        self.version = (self.api.version >> 16, self.api.version & 0xFFFF)
+
+    def status_string(self, status):
+        return _text(self.api.status_string(int(status)))
+
+    def _check(self, function, status, message=None):
+        if status != SSAO_OK:
+            raise Error(function, status, message if message is not None else self.status_string(status))
+
+    def resolve_settings(self, settings=None):
+        """Every zero (default) field resolved; raises Error on an invalid value."""
+        settings = settings if settings is not None else ssao_settings()
+        out = ssao_settings()
+        self._check("resolve_settings", self.api.resolve_settings(ctypes.byref(settings), ctypes.byref(out)))
+        return out
+
+    def preset_settings(self, preset):
+        out = ssao_settings()
+        self._check("preset_settings", self.api.preset_settings(int(preset), ctypes.byref(out)))
+        return out
+
+    def create_context(self, get_proc_address=None, settings=None, log=None):
+        """A Context on the GL context current on this thread. get_proc_address(user, name)
+        returns a GL function's address (default: eglGetProcAddress); log(level, message)
+        receives the library's messages."""
+        return Context(self, get_proc_address or egl_get_proc_address(), settings, log)
+
+
+class Context:
+    """One ssao_context. Use it (and destroy it) with its GL context current."""
+
+    def __init__(self, library, get_proc_address, settings, log):
+        self._lib = library
+        self._api = library.api
+        self._messages = []
+
+        def on_log(_user, level, message):
+            text = _text(message)
+            if level == SSAO_LOG_ERROR:
+                self._messages.append(text)
+            if log:
+                log(ssao_log_level(level), text)
+
+        # The callbacks must live as long as the context: the library may call them any time.
+        self._get_proc = ssao_get_proc_address_fn(get_proc_address)
+        self._log = ssao_log_fn(on_log)
+        desc = ssao_context_desc()
+        desc.get_proc_address = self._get_proc
+        desc.log = self._log
+        if settings is not None:
+            desc.settings = ctypes.pointer(settings)
+        self._ctx = _ctx_p()
+        status = self._api.create_context(ctypes.byref(desc), ctypes.byref(self._ctx))
+        if status != SSAO_OK:
+            raise Error("create_context", status, self._messages[-1] if self._messages else library.status_string(status))
+
+    # The context's own sentence on its last failure.
+    def last_error(self):
+        return _text(self._api.last_error(self._ctx))
+
+    def _check(self, function, status):
+        if status != SSAO_OK:
+            raise Error(function, status, self.last_error() or self._lib.status_string(status))
+
+    def set_settings(self, settings):
+        self._check("set_settings", self._api.set_settings(self._ctx, ctypes.byref(settings)))
+
+    def get_settings(self):
+        out = ssao_settings()
+        self._check("get_settings", self._api.get_settings(self._ctx, ctypes.byref(out)))
+        return out
+
+    def execute(self, inputs=None, **fields):
+        """Runs the pass. Either an ssao_inputs, or its fields as keywords
+        (projection and view_matrix: 16 floats, column-major; viewport: 4 ints).
+        Returns the ssao_output."""
+        if inputs is None:
+            inputs = ssao_inputs()
+            for name, value in fields.items():
+                if name in ("projection", "view_matrix"):
+                    value = (ctypes.c_float * 16)(*[float(v) for v in value])
+                elif name == "viewport":
+                    value = (ctypes.c_int32 * 4)(*[int(v) for v in value])
+                elif not hasattr(inputs, name):
+                    raise TypeError("ssao_inputs has no field %r" % name)
+                setattr(inputs, name, value)
+        elif fields:
+            raise TypeError("give an ssao_inputs or its fields, not both")
+        out = ssao_output()
+        self._check("execute", self._api.execute(self._ctx, ctypes.byref(inputs), ctypes.byref(out)))
+        return out
+
+    def timings(self):
+        out = ssao_timings()
+        self._check("get_timings", self._api.get_timings(self._ctx, ctypes.byref(out)))
+        return out
+
+    def frame_info(self):
+        out = ssao_frame_info()
+        self._check("get_frame_info", self._api.get_frame_info(self._ctx, ctypes.byref(out)))
+        return out
+
+    def destroy(self):
+        """Deletes the context's GL objects (its GL context must be current). Idempotent."""
+        if self._ctx:
+            status = self._api.destroy_context(self._ctx)
+            self._ctx = _ctx_p()
+            self._check("destroy_context", status)
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self.destroy()
+        return False

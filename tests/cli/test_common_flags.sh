@@ -1,0 +1,66 @@
+#!/usr/bin/env bash
+# The four tools behave alike (CTest: cli.common_flags):
+#   test_common_flags.sh HOST REFERENCE ERROR BENCH
+# --version and --help exit 0; an unknown flag or a missing value exits 2 with
+# one line on stderr naming the flag; --flag=value and --flag value give the
+# same result (identical output files, or the same message for a bad value).
+set -uo pipefail
+host=$1 reference=$2 error=$3 bench=$4
+work=$(mktemp -d /tmp/ssao-cli.XXXXXX)
+trap 'rm -rf "$work"' EXIT
+failures=0
+check() {  # check DESCRIPTION COMMAND...: the command must succeed
+  local what=$1; shift
+  if "$@"; then echo "ok      $what"; else echo "FAILED  $what"; failures=$((failures + 1)); fi
+}
+
+# expect_usage_error TOOL FLAG ARGS...: exit 2, exactly one stderr line, naming FLAG.
+expect_usage_error() {
+  local tool=$1 flag=$2; shift 2
+  "$tool" "$@" >"$work/stdout" 2>"$work/stderr"
+  local code=$? lines
+  lines=$(wc -l <"$work/stderr")
+  [ "$code" -eq 2 ] && [ "$lines" -eq 1 ] && grep -qF -- "$flag" "$work/stderr" ||
+    { echo "  $(basename "$tool") $*: exit $code, $lines stderr lines: $(cat "$work/stderr")"; return 1; }
+}
+
+for tool in "$host" "$reference" "$error" "$bench"; do
+  name=$(basename "$tool")
+  check "$name --version prints '$name X.Y.Z (C ABI M.m)'" \
+    bash -c '[[ "$("$1" --version)" =~ ^$2\ [0-9]+\.[0-9]+\.[0-9]+\ \(C\ ABI\ [0-9]+\.[0-9]+\)$ ]]' _ "$tool" "$name"
+  check "$name --help exits 0 and lists --version" bash -c '"$1" --help | grep -q -- --version' _ "$tool"
+  check "$name -h is --help" bash -c 'cmp -s <("$1" -h) <("$1" --help)' _ "$tool"
+  check "$name --bogus: exit 2, one line naming it" expect_usage_error "$tool" --bogus --bogus
+  check "$name --bogus=1: exit 2, one line naming it" expect_usage_error "$tool" --bogus --bogus=1
+done
+
+# A valued flag without its value, and a bad value in both spellings (same message).
+check "ssao-host --width (no value): exit 2" expect_usage_error "$host" --width --width
+check "ssao-bench --width (no value): exit 2" expect_usage_error "$bench" --width --width
+check "ssao-error --band (no value): exit 2" expect_usage_error "$error" --band a.exr b.exr --band
+# ssao-error needs its two images before a flag's value is looked at.
+images_for() { [ "$(basename "$1")" = ssao-error ] && echo "a.exr b.exr"; }
+for pair in "$host:--width:0" "$reference:--samples:x" "$error:--band:300" "$bench:--width:4" "$bench:--frames:x"; do
+  IFS=: read -r tool flag value <<<"$pair"
+  a=$("$tool" $(images_for "$tool") "$flag=$value" 2>&1 >/dev/null); ca=$?
+  b=$("$tool" $(images_for "$tool") "$flag" "$value" 2>&1 >/dev/null); cb=$?
+  check "$(basename "$tool") $flag=$value and $flag $value: both exit 2 with the same message ($a)" \
+    test "$ca" -eq 2 -a "$cb" -eq 2 -a "$a" = "$b" -a -n "$a"
+done
+check "a switch takes no value: ssao-reference --quiet=1 exits 2" expect_usage_error "$reference" --quiet --quiet=1
+
+# Same run, both spellings: identical files.
+check "ssao-host --width=48 --out=DIR and --width 48 --out DIR write identical ao.exr" bash -c '
+  "$1" --width=48 --height=32 --frames=1 --only=ao --out="$2/h1" >/dev/null &&
+  "$1" --width 48 --height 32 --frames 1 --only ao --out "$2/h2" >/dev/null &&
+  cmp -s "$2/h1/ao.exr" "$2/h2/ao.exr"' _ "$host" "$work"
+check "ssao-reference --samples=8 and --samples 8 write identical reference_ao.exr" bash -c '
+  "$1" --width=24 --height=16 --samples=8 --quiet --out="$2/r1" >/dev/null &&
+  "$1" --width 24 --height 16 --samples 8 --quiet --out "$2/r2" >/dev/null &&
+  cmp -s "$2/r1/reference_ao.exr" "$2/r2/reference_ao.exr"' _ "$reference" "$work"
+check "ssao-error --band=2 and --band 2 print the same table" bash -c '
+  cmp -s <("$1" "$2/r1/reference_ao.exr" "$2/r1" --band=2 --label=x) <("$1" "$2/r1/reference_ao.exr" "$2/r1" --band 2 --label x)' \
+  _ "$error" "$work"
+
+[ "$failures" -eq 0 ] && echo "common flags: all passed" || echo "common flags: $failures FAILED"
+exit $((failures > 0))

@@ -1,0 +1,74 @@
+"""test_wrapper.py PLUGIN [PYTHON_DIR] - python/ssao.py's wrapper without a GL
+context: the table, settings, presets, and errors raised as ssao.Error with
+the library's status and sentence."""
+
+import ctypes
+import os
+import sys
+
+failures = []
+
+
+def check(ok, what):
+    print(("ok      " if ok else "FAILED  ") + what)
+    if not ok:
+        failures.append(what)
+
+
+def raises(fn, status):
+    try:
+        fn()
+    except Exception as e:  # noqa: BLE001 - the type is what is checked
+        return isinstance(e, ssao.Error) and e.status == status and bool(e.last_error), e
+    return False, None
+
+
+def main():
+    global ssao
+    plugin = sys.argv[1]
+    sys.path.insert(0, sys.argv[2] if len(sys.argv) > 2 else os.path.join(os.path.dirname(__file__), "..", "..", "python"))
+    import ssao
+
+    lib = ssao.Library(plugin)
+    check(lib.version == (ssao.SSAO_API_VERSION >> 16, ssao.SSAO_API_VERSION & 0xFFFF) == (1, 1), "interface version 1.1 (got %s)" % (lib.version,))
+    check(lib.status_string(ssao.SSAO_OK) != "" and lib.status_string(12345) != "",
+          "status_string answers every status: %r" % lib.status_string(ssao.SSAO_ERROR_INVALID_VALUE))
+
+    s = ssao.ssao_settings()
+    check(s.size == ctypes.sizeof(ssao.ssao_settings), "a new struct carries its size (%d)" % s.size)
+    d = lib.resolve_settings()
+    check(d.sample_count == 16 and abs(d.radius - 0.5) < 1e-6 and d.blur == ssao.SSAO_BLUR_DEPTH_AWARE,
+          "a zeroed ssao_settings resolves to the documented defaults: %r" % d)
+    low = lib.preset_settings(ssao.SSAO_PRESET_LOW)
+    check(low.sample_count == 4 and low.blur == ssao.SSAO_BLUR_NONE, "preset low: 4 samples, no blur (%d, %d)"
+          % (low.sample_count, low.blur))
+
+    bad = ssao.ssao_settings(sample_count=1000)
+    ok, e = raises(lambda: lib.resolve_settings(bad), ssao.SSAO_ERROR_INVALID_VALUE)
+    check(ok, "sample_count 1000 raises ssao.Error(INVALID_VALUE) with a sentence: %r" % (e,))
+    ok, e = raises(lambda: lib.preset_settings(99), ssao.SSAO_ERROR_INVALID_ENUM)
+    check(ok, "preset 99 raises ssao.Error(INVALID_ENUM): %r" % (e,))
+    wrong_size = ssao.ssao_settings(size=3)
+    ok, e = raises(lambda: lib.resolve_settings(wrong_size), ssao.SSAO_ERROR_STRUCT_SIZE)
+    check(ok, "size 3 raises ssao.Error(STRUCT_SIZE): %r" % (e,))
+
+    # No GL context is current: create_context fails and says why (through the log).
+    try:
+        lib.create_context()
+        check(False, "create_context without a current GL context raises")
+    except ssao.Error as e:
+        check(e.status in (ssao.SSAO_ERROR_GL_VERSION, ssao.SSAO_ERROR_GL_LOAD) and e.last_error,
+              "create_context without a current GL context raises %s: %r" % (e.status.name, e.last_error))
+
+    try:
+        ssao.Library("/nonexistent/libssao.so")
+        check(False, "a missing library raises OSError")
+    except OSError as e:
+        check("/nonexistent/libssao.so" in str(e), "a missing library raises OSError naming it: %s" % e)
+
+    print("test_wrapper: %s" % ("all checks passed" if not failures else "%d FAILED" % len(failures)))
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
