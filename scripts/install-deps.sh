@@ -8,6 +8,8 @@ packages=(
   python3 python3-glad
   libtinygltf-dev nlohmann-json3-dev libstb-dev libtinyexr-dev
   libembree-dev doctest-dev
+  libglfw3-dev xvfb xauth                # ssao-viewer and its tests in a virtual X server
+  python3-pil fonts-dejavu-core          # scripts/make-pictures.sh
 )
 missing=()
 for p in "${packages[@]}"; do
