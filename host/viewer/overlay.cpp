@@ -68,19 +68,19 @@ std::string printf_string(const char* format, ...) {
 std::vector<std::string> overlay_lines(const State& s, const ssao_timings& t, int width, int height) {
     std::vector<std::string> lines;
     const modes::Mode* mode = s.mode ? modes::find(s.mode) : nullptr;
-    lines.push_back(printf_string("ssao-viewer %dx%d   mode %s   preset %s   view %s", width, height,
+    lines.push_back(printf_string("ssao-viewer %dx%d  mode %s  preset %s  view %s", width, height,
                                   mode ? (std::string(1, mode->letter) + " " + mode->name).c_str() : "-",
                                   preset_name(s.preset), s.view == View::Lit ? "lit" : "AO only"));
     const ssao_settings& c = s.settings;
     if (!s.ssao) {
         lines.push_back("SSAO off (lit without AO)");
     } else {
-        lines.push_back(printf_string("samples %u  radius %.3g  bias %.3g  kernel %s  distribution %s  rotation %s",
-                                      c.sample_count, double(c.radius), double(c.bias), cli::name(c.kernel_shape),
+        lines.push_back(printf_string("samples %u  radius %.3g  bias %.3g  strength %.3g  power %.3g", c.sample_count,
+                                      double(c.radius), double(c.bias),
+                                      c.strength == SSAO_STRENGTH_OFF ? 0.0 : double(c.strength), double(c.power)));
+        lines.push_back(printf_string("kernel %s  distribution %s  rotation %s", cli::name(c.kernel_shape),
                                       cli::name(c.distribution), cli::name(c.rotation)));
-        lines.push_back(printf_string("blur %s (radius %u)  strength %.3g  power %.3g", cli::name(c.blur),
-                                      c.blur_radius, c.strength == SSAO_STRENGTH_OFF ? 0.0 : double(c.strength),
-                                      double(c.power)));
+        lines.push_back(printf_string("blur %s (radius %u)", cli::name(c.blur), c.blur_radius));
         // HOOK(method), HOOK(half-resolution): print the estimator and the
         // resolution here once ssao_settings has them.
         if (t.available)
