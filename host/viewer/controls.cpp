@@ -77,11 +77,20 @@ void Controls::key(int k, int action) {
         case GLFW_KEY_O: state_.overlay = !state_.overlay; break;
         case GLFW_KEY_F12: screenshot_ = true; break;
         case GLFW_KEY_ESCAPE: quit_ = true; break;
-        // HOOK(method): the estimator key. The lead is adding ssao_settings.method;
-        // when the header has it, M steps through its values here (and the
-        // overlay prints it). Until then the key says so instead of guessing an ABI.
-        case GLFW_KEY_M: state_.notice = "M: this plugin has no estimator choice"; break;
-        // HOOK(half-resolution): likewise for the half-resolution switch.
+        case GLFW_KEY_M:
+#ifdef SSAO_SETTINGS_SIZE_1_0   // interface 1.1 has ssao_settings.method
+            // The estimator: the chapter's point kernel or ray-marched visibility
+            // (resolved settings already hold the visibility's thickness and steps).
+            state_.settings.method =
+                state_.settings.method == SSAO_METHOD_VISIBILITY ? SSAO_METHOD_KERNEL : SSAO_METHOD_VISIBILITY;
+#else
+            // HOOK(method): a 1.0 header has no estimator choice; the key says so
+            // instead of guessing an ABI.
+            state_.notice = "M: this plugin has no estimator choice";
+#endif
+            break;
+        // HOOK(half-resolution): when ssao_settings gains a half-resolution
+        // switch, H toggles it here (and overlay.cpp prints it).
         case GLFW_KEY_H: state_.notice = "H: this plugin has no half-resolution switch"; break;
         default: break;
     }

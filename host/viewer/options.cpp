@@ -70,7 +70,8 @@ std::string help_text(const std::string& default_scene) {
            "  1 2 3 4              presets low, medium, high, ultra     0   the plugin's defaults\n"
            "  B                    next blur: depth-aware, 4x4 box, gaussian, none\n"
            "  V                    view: lit, AO only                   O   overlay on/off\n"
-           "  M, H                 estimator, half resolution (when the plugin offers them)\n"
+           "  M                    estimator: point kernel or ray-marched visibility (interface 1.1)\n"
+           "  H                    half resolution (when the plugin offers it)\n"
            "  F12                  screenshot                           Esc quit\n";
 }
 

@@ -80,9 +80,16 @@ std::vector<std::string> overlay_lines(const State& s, const ssao_timings& t, in
                                       c.strength == SSAO_STRENGTH_OFF ? 0.0 : double(c.strength), double(c.power)));
         lines.push_back(printf_string("kernel %s  distribution %s  rotation %s", cli::name(c.kernel_shape),
                                       cli::name(c.distribution), cli::name(c.rotation)));
+#ifdef SSAO_SETTINGS_SIZE_1_0   // interface 1.1 has ssao_settings.method
+        if (c.method == SSAO_METHOD_VISIBILITY)
+            lines.push_back(printf_string("blur %s (radius %u)  estimator visibility (%u steps, thickness %.3g)",
+                                          cli::name(c.blur), c.blur_radius, c.step_count, double(c.thickness)));
+        else
+            lines.push_back(printf_string("blur %s (radius %u)  estimator kernel", cli::name(c.blur), c.blur_radius));
+#else
         lines.push_back(printf_string("blur %s (radius %u)", cli::name(c.blur), c.blur_radius));
-        // HOOK(method), HOOK(half-resolution): print the estimator and the
-        // resolution here once ssao_settings has them.
+#endif
+        // HOOK(half-resolution): print the resolution here once ssao_settings has it.
         if (t.available)
             lines.push_back(printf_string("GPU ms (frame %llu): ao %.3f  blur %.3f  total %.3f",
                                           static_cast<unsigned long long>(t.frame), t.ao_ms, t.blur_ms, t.total_ms));
