@@ -28,7 +28,6 @@ glm::vec3 direction(float yaw, float pitch) {
 Controls::Controls(const ssao_api& api, cli::Options base, const scene::Scene& scene, float aspect)
     : api_(api), base_(std::move(base)), scene_(scene) {
     choose_preset(base_.preset);
-    state_.notice.clear();
     bool from_scene = false;
     start_ = camera_ = run_setup::build_camera(base_, scene_, aspect, from_scene);
     const float diagonal = glm::length(scene_.bounds_max - scene_.bounds_min);
@@ -46,6 +45,7 @@ void Controls::choose_preset(std::optional<ssao_preset> p) {
 }
 
 void Controls::key(int k, int action) {
+    if (k >= GLFW_KEY_KP_0 && k <= GLFW_KEY_KP_9) k = GLFW_KEY_0 + (k - GLFW_KEY_KP_0);   // the keypad's digits too
     if (action == GLFW_RELEASE) {
         held_.erase(k);
         return;

@@ -111,7 +111,10 @@ int run(const viewer::Options& o) {
 
         int w = 0, h = 0;
         window->framebuffer_size(w, h);
-        if (w <= 0 || h <= 0) continue;   // minimised: nothing to draw
+        if (w <= 0 || h <= 0) {   // minimised: nothing to draw until it comes back
+            window->wait(0.1);
+            continue;
+        }
         if (w != width || h != height) {
             width = w;
             height = h;

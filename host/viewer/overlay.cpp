@@ -98,7 +98,7 @@ std::vector<std::string> overlay_lines(const State& s, const ssao_timings& t, in
     }
     if (!s.notice.empty()) lines.push_back(s.notice);
     lines.push_back("WASD QZ move  IJKL turn  ERTYU modes  1-4 presets  0 defaults");
-    lines.push_back("B blur  V view  O overlay  F12 screenshot  Esc quit");
+    lines.push_back("B blur  M estimator  V view  O overlay  F12 screenshot  Esc quit");
     return lines;
 }
 

@@ -57,6 +57,8 @@ void (*Window::get_proc(void* /*user*/, const char* name))(void) { return glfwGe
 
 void Window::poll() { glfwPollEvents(); }
 
+void Window::wait(double seconds) { glfwWaitEventsTimeout(seconds); }
+
 bool Window::should_close() const { return glfwWindowShouldClose(window_) != 0; }
 
 void Window::request_size(int width, int height) { glfwSetWindowSize(window_, width, height); }

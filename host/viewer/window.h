@@ -29,6 +29,7 @@ public:
     // Called with (GLFW key, GLFW action) for every key event.
     void on_key(std::function<void(int, int)> handler) { key_handler_ = std::move(handler); }
     void poll();                       // handles pending window events
+    void wait(double seconds);         // sleeps until an event arrives or `seconds` pass
     bool should_close() const;
     void request_size(int width, int height);
     void framebuffer_size(int& width, int& height) const;

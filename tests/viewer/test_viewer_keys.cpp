@@ -196,6 +196,8 @@ TEST_CASE("1..4 pick the plugin's presets with the scene's radius, 0 the default
         CHECK(c.state().ssao);
         CHECK(c.state().mode == 0);
     }
+    tap(c, GLFW_KEY_KP_3);   // the keypad's digits work alike
+    CHECK((c.state().preset && *c.state().preset == SSAO_PRESET_HIGH));
     tap(c, GLFW_KEY_0);
     CHECK(std::memcmp(&c.state().settings, &defaults, sizeof defaults) == 0);
     CHECK_FALSE(c.state().preset);
