@@ -63,6 +63,30 @@ std::string printf_string(const char* format, ...) {
     return buffer;
 }
 
+const char* pass_name(uint32_t kind) {
+    switch (kind) {
+        case SSAO_PASS_AO: return "ao";
+        case SSAO_PASS_BLUR_X: return "blur x";
+        case SSAO_PASS_BLUR_Y: return "blur y";
+        case SSAO_PASS_CLEAR: return "clear";
+        default: return "pass";
+    }
+}
+
+// The GPU milliseconds of the newest timed frame, pass by pass.
+std::string gpu_line(const ssao_timings& t) {
+    std::string line = printf_string("GPU ms (frame %llu):", static_cast<unsigned long long>(t.frame));
+#ifdef SSAO_MAX_PASSES   // interface 1.1 timings: every pass on its own
+    if (t.pass_count > 0 && t.pass_count <= SSAO_MAX_PASSES) {
+        for (uint32_t i = 0; i < t.pass_count; ++i)
+            line += printf_string(" %s %.3f ", pass_name(t.pass_kind[i]), t.pass_ms[i]);
+        return line + printf_string(" total %.3f", t.total_ms);
+    }
+#endif
+    // 1.0 timings: the sampling pass and the blur passes together.
+    return line + printf_string(" %s %.3f  blur %.3f  total %.3f", pass_name(SSAO_PASS_AO), t.ao_ms, t.blur_ms, t.total_ms);
+}
+
 }  // namespace
 
 std::vector<std::string> overlay_lines(const State& s, const ssao_timings& t, int width, int height) {
@@ -91,8 +115,7 @@ std::vector<std::string> overlay_lines(const State& s, const ssao_timings& t, in
 #endif
         // HOOK(half-resolution): print the resolution here once ssao_settings has it.
         if (t.available)
-            lines.push_back(printf_string("GPU ms (frame %llu): ao %.3f  blur %.3f  total %.3f",
-                                          static_cast<unsigned long long>(t.frame), t.ao_ms, t.blur_ms, t.total_ms));
+            lines.push_back(gpu_line(t));
         else
             lines.push_back("GPU ms: waiting for the first timed frame");
     }

@@ -301,6 +301,18 @@ TEST_CASE("the overlay states the settings, the GPU milliseconds and what a key 
     CHECK(contains(lines, "mode U hemisphere"));
     CHECK(contains(lines, "blur box"));
     CHECK(contains(lines, "ao 1.250  blur 0.500  total 1.750"));
+#ifdef SSAO_MAX_PASSES   // interface 1.1 timings: every pass on its own
+    t.pass_count = 3;
+    t.pass_kind[0] = SSAO_PASS_AO;
+    t.pass_kind[1] = SSAO_PASS_BLUR_X;
+    t.pass_kind[2] = SSAO_PASS_BLUR_Y;
+    t.pass_ms[0] = 1.25;
+    t.pass_ms[1] = 0.25;
+    t.pass_ms[2] = 0.25;
+    CHECK(contains(viewer::overlay_lines(c.state(), t, 320, 240),
+                   "GPU ms (frame 7): ao 1.250  blur x 0.250  blur y 0.250  total 1.750"));
+    t.pass_count = 0;
+#endif
     tap(c, GLFW_KEY_3);
     CHECK(contains(viewer::overlay_lines(c.state(), t, 320, 240), "preset HIGH"));
     tap(c, GLFW_KEY_E);
