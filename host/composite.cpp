@@ -83,6 +83,22 @@ void main() {
 
 bool is_orthographic(const glm::mat4& p) { return p[3][3] == 1.0f && p[2][3] == 0.0f; }
 
+// RGBA float pixels, bottom row first, as RGB8 top row first.
+std::vector<uint8_t> to_rgb8_top_down(const std::vector<float>& rgba, int width, int height) {
+    std::vector<uint8_t> rgb(static_cast<size_t>(width) * static_cast<size_t>(height) * 3);
+    for (int y = 0; y < height; ++y) {
+        const size_t src_row = static_cast<size_t>(height - 1 - y) * static_cast<size_t>(width);
+        const size_t dst_row = static_cast<size_t>(y) * static_cast<size_t>(width);
+        for (int x = 0; x < width; ++x)
+            for (int c = 0; c < 3; ++c) {
+                const float v = std::clamp(rgba[(src_row + static_cast<size_t>(x)) * 4 + static_cast<size_t>(c)], 0.0f, 1.0f);
+                rgb[(dst_row + static_cast<size_t>(x)) * 3 + static_cast<size_t>(c)] =
+                    static_cast<uint8_t>(std::lround(v * 255.0f));
+            }
+    }
+    return rgb;
+}
+
 }  // namespace
 
 Lighting default_lighting(const glm::vec3& bounds_min, const glm::vec3& bounds_max, const glm::mat4& view) {
@@ -135,6 +151,13 @@ void Compositor::release() {
 std::vector<uint8_t> Compositor::render(const gbuffer::GBuffer& g, const glm::mat4& view,
                                         const glm::mat4& projection, GLuint ao_texture, glm::ivec2 ao_origin,
                                         const Lighting& l) {
+    draw(g, view, projection, ao_texture, ao_origin, l);
+    const std::vector<float> rgba = gl_util::read_texture(gl_, target_, 0, 0, width_, height_, 4);
+    return to_rgb8_top_down(rgba, width_, height_);
+}
+
+void Compositor::draw(const gbuffer::GBuffer& g, const glm::mat4& view, const glm::mat4& projection,
+                      GLuint ao_texture, glm::ivec2 ao_origin, const Lighting& l) {
     auto& gl = gl_;
     gl.BindFramebuffer(GL_FRAMEBUFFER, fbo_);
     gl.Viewport(0, 0, width_, height_);
@@ -180,20 +203,6 @@ std::vector<uint8_t> Compositor::render(const gbuffer::GBuffer& g, const glm::ma
     }
     gl.BindFramebuffer(GL_FRAMEBUFFER, 0);
     gl_util::check(gl, "the composite pass");
-
-    const std::vector<float> rgba = gl_util::read_texture(gl, target_, 0, 0, width_, height_, 4);
-    std::vector<uint8_t> rgb(static_cast<size_t>(width_) * static_cast<size_t>(height_) * 3);
-    for (int y = 0; y < height_; ++y) {
-        const size_t src_row = static_cast<size_t>(height_ - 1 - y) * static_cast<size_t>(width_);
-        const size_t dst_row = static_cast<size_t>(y) * static_cast<size_t>(width_);
-        for (int x = 0; x < width_; ++x)
-            for (int c = 0; c < 3; ++c) {
-                const float v = std::clamp(rgba[(src_row + static_cast<size_t>(x)) * 4 + static_cast<size_t>(c)], 0.0f, 1.0f);
-                rgb[(dst_row + static_cast<size_t>(x)) * 3 + static_cast<size_t>(c)] =
-                    static_cast<uint8_t>(std::lround(v * 255.0f));
-            }
-    }
-    return rgb;
 }
 
 }  // namespace composite

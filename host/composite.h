@@ -41,6 +41,11 @@ public:
     // top row first.
     std::vector<uint8_t> render(const gbuffer::GBuffer& g, const glm::mat4& view, const glm::mat4& projection,
                                 GLuint ao_texture, glm::ivec2 ao_origin, const Lighting& lighting);
+    // The same lighting, left in framebuffer() (RGBA8, width x height) for a
+    // window to blit instead of read back.
+    void draw(const gbuffer::GBuffer& g, const glm::mat4& view, const glm::mat4& projection,
+              GLuint ao_texture, glm::ivec2 ao_origin, const Lighting& lighting);
+    GLuint framebuffer() const { return fbo_; }
 
 private:
     void release();

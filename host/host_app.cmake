@@ -10,13 +10,22 @@ target_include_directories(ssao_host_gl PUBLIC ${CMAKE_CURRENT_LIST_DIR} ${PROJE
 target_link_libraries(ssao_host_gl PUBLIC ssao_glad ssao_scene glm::glm)
 target_compile_options(ssao_host_gl PRIVATE ${SSAO_WARNINGS})
 
-add_executable(ssao-host
-  ${CMAKE_CURRENT_LIST_DIR}/main.cpp
+# The rest of ssao-host except main(): its flags, the settings and camera a run
+# starts from, the lighting pass and the picture files; ssao-viewer uses them too.
+add_library(ssao_host_app STATIC
   ${CMAKE_CURRENT_LIST_DIR}/cli.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/run_setup.cpp
   ${CMAKE_CURRENT_LIST_DIR}/composite.cpp
   ${CMAKE_CURRENT_LIST_DIR}/image_io.cpp)
-target_include_directories(ssao-host PRIVATE ${CMAKE_CURRENT_LIST_DIR})
-target_link_libraries(ssao-host PRIVATE ssao_host_gl ssao_egl ssao_scene glm::glm tinyexr::tinyexr)
+target_include_directories(ssao_host_app PUBLIC ${CMAKE_CURRENT_LIST_DIR})
+target_link_libraries(ssao_host_app PUBLIC ssao_host_gl ssao_scene ssao_locate glm::glm PRIVATE tinyexr::tinyexr)
+target_compile_options(ssao_host_app PRIVATE ${SSAO_WARNINGS})
+
+add_executable(ssao-host ${CMAKE_CURRENT_LIST_DIR}/main.cpp)
+target_link_libraries(ssao-host PRIVATE ssao_host_app ssao_egl)
 target_compile_options(ssao-host PRIVATE ${SSAO_WARNINGS})
 # Building the program builds the plugin it loads (never linked: dlopen only).
 add_dependencies(ssao-host ssao)
+
+# ssao-viewer: the same scene, G-buffer and plugin in a GLFW window.
+include(${CMAKE_CURRENT_LIST_DIR}/viewer/viewer.cmake OPTIONAL)

@@ -10,7 +10,9 @@
 #include "flags.h"
 #include "image_io.h"
 #include "locate.h"
+#include "modes.h"
 #include "plugin_loader.h"
+#include "run_setup.h"
 #include "scene.h"
 
 #include <ssao/ssao.h>
@@ -19,7 +21,6 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
-#include <cfloat>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -37,9 +38,6 @@ struct RunError : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
-// The bundled scene: <prefix>/share/ssao beside an installed program, the
-// source tree's assets/ for an uninstalled build (locate::data_dir).
-std::string default_scene_path() { return locate::bundled("models/spot-on-ground.glb"); }
 
 std::string fmt(double v, int precision = 4) {
     std::ostringstream s;
@@ -56,100 +54,6 @@ std::string with_commas(size_t n) {
     return s;
 }
 
-// ---------------------------------------------------------------- settings
-// Precedence: flags > scene hints > preset > plugin defaults. The radius is
-// scene-scaled (scene::ao_radius: the scene's hint, else 0.05 x its diagonal).
-
-ssao_settings build_settings(const ssao_api& api, const cli::Options& o, const scene::Scene& sc, std::string& radius_note) {
-    ssao_settings s{};
-    s.size = sizeof(ssao_settings);
-    if (o.preset) {
-        const ssao_status st = api.preset_settings(*o.preset, &s);
-        if (st != SSAO_OK) throw RunError(std::string("the plugin refused the preset: ") + api.status_string(st));
-        // Presets trade samples and blur for time; the radius (and the bias that
-        // follows it) stays scene-scaled.
-        s.radius = 0.0f;
-        s.bias = 0.0f;
-    }
-    const scene::AoHints& h = sc.hints;
-    if (h.radius && !(std::isfinite(*h.radius) && *h.radius > 0.0f))
-        throw RunError("the scene's hint ssao.radius = " + fmt(*h.radius) + " is not a number > 0");
-    if (const auto r = scene::ao_radius(sc)) {
-        s.radius = r->radius;
-        radius_note = r->source;
-    } else {
-        radius_note = "plugin default; the scene has no extent";
-    }
-    if (h.samples) {
-        if (*h.samples < 1 || *h.samples > SSAO_MAX_SAMPLES)
-            throw RunError("the scene's hint ssao.samples = " + std::to_string(*h.samples) + " is out of range 1..64");
-        s.sample_count = static_cast<uint32_t>(*h.samples);
-    }
-    if (h.blur) {
-        const auto b = cli::parse_blur(*h.blur);
-        if (!b) throw RunError("the scene's hint ssao.blur = '" + *h.blur + "' is not depth-aware|box|gaussian|none");
-        s.blur = *b;
-    }
-    if (h.bias) {
-        if (!(std::isfinite(*h.bias) && *h.bias >= 0.0f))
-            throw RunError("the scene's hint ssao.bias = " + fmt(*h.bias) + " is not a number >= 0");
-        s.bias = *h.bias > 0.0f ? *h.bias : FLT_MIN;
-    }
-    if (h.power) {
-        if (!(std::isfinite(*h.power) && *h.power > 0.0f && *h.power <= 16.0f))
-            throw RunError("the scene's hint ssao.power = " + fmt(*h.power) + " is out of range (0, 16]");
-        s.power = *h.power;
-    }
-    // Flags. A zero field means "default" in the ABI, so an explicit 0 for a
-    // bias becomes the smallest positive float and strength 0 SSAO_STRENGTH_OFF.
-    if (o.samples) s.sample_count = static_cast<uint32_t>(*o.samples);
-    if (o.radius) {
-        s.radius = *o.radius;
-        radius_note = "--radius";
-    }
-    if (o.bias) s.bias = *o.bias > 0.0f ? *o.bias : FLT_MIN;
-    if (o.depth_step_bias) s.depth_step_bias = *o.depth_step_bias > 0.0f ? *o.depth_step_bias : FLT_MIN;
-    if (o.power) s.power = *o.power;
-    if (o.strength) s.strength = *o.strength > 0.0f ? *o.strength : SSAO_STRENGTH_OFF;
-    if (o.kernel) s.kernel_shape = *o.kernel;
-    if (o.distribution) s.distribution = *o.distribution;
-    if (o.rotation) s.rotation = *o.rotation;
-    if (o.seed) s.seed = *o.seed;
-    if (o.blur) s.blur = *o.blur;
-    if (o.blur_radius) s.blur_radius = static_cast<uint32_t>(*o.blur_radius);
-    if (o.blur_sigma) s.blur_sigma = *o.blur_sigma;
-    if (o.blur_tolerance) s.blur_depth_tolerance = *o.blur_tolerance;
-    if (o.output_format) s.output_format = *o.output_format;
-
-    ssao_settings resolved{};
-    resolved.size = sizeof(ssao_settings);
-    const ssao_status st = api.resolve_settings(&s, &resolved);
-    if (st != SSAO_OK)
-        throw RunError(std::string("the SSAO settings are invalid: ") + api.status_string(st));
-    return resolved;
-}
-
-// ------------------------------------------------------------------ camera
-const glm::vec3 kBundledEye(2.3f, 1.6f, -2.6f), kBundledTarget(0.0f, 0.65f, 0.0f);
-
-camera::Camera build_camera(const cli::Options& o, const scene::Scene& sc, float aspect, bool& from_scene) {
-    from_scene = sc.camera.has_value();
-    camera::Overrides ov = o.cam;
-    // The bundled scene's bounds are dominated by its 8 x 8 ground, so framing
-    // them shows a small cow: without a scene argument and without camera
-    // flags, look at the cow from a three-quarter view instead.
-    if (o.scene_path.empty() && !ov.eye && !ov.target && !ov.ortho_half_height) {
-        ov.eye = kBundledEye;
-        ov.target = kBundledTarget;
-    }
-    const camera::Camera c = camera::apply(sc, camera::choose(sc, aspect), ov);
-    if (!(glm::length(c.target - c.eye) > 0.0f)) throw RunError("the camera's eye and target are the same point");
-    if (c.orthographic && std::isinf(c.zfar)) throw RunError("an orthographic camera needs a finite far plane");
-    if (!c.orthographic && !(c.znear > 0.0f)) throw RunError("the near plane " + fmt(c.znear) + " must be > 0");
-    if (!(c.zfar > c.znear))
-        throw RunError("the far plane " + fmt(c.zfar) + " must lie beyond the near plane " + fmt(c.znear));
-    return c;
-}
 
 // ------------------------------------------------------------------ plugin
 struct PluginContext {
@@ -194,21 +98,6 @@ std::vector<uint8_t> to_bytes(const std::vector<float>& v) {
     return b;
 }
 
-struct Mode {
-    char letter;
-    bool ssao;
-    ssao_rotation rotation;
-    ssao_kernel_distribution distribution;
-    ssao_kernel_shape kernel;
-};
-// The reference implementation's E/R/T/Y/U keys.
-const Mode kModes[5] = {
-    {'E', false, SSAO_ROTATION_NONE, SSAO_DISTRIBUTION_UNIFORM, SSAO_KERNEL_SPHERE},
-    {'R', true, SSAO_ROTATION_NONE, SSAO_DISTRIBUTION_UNIFORM, SSAO_KERNEL_SPHERE},
-    {'T', true, SSAO_ROTATION_NOISE_4X4, SSAO_DISTRIBUTION_UNIFORM, SSAO_KERNEL_SPHERE},
-    {'Y', true, SSAO_ROTATION_NOISE_4X4, SSAO_DISTRIBUTION_ACCELERATING, SSAO_KERNEL_SPHERE},
-    {'U', true, SSAO_ROTATION_NOISE_4X4, SSAO_DISTRIBUTION_ACCELERATING, SSAO_KERNEL_HEMISPHERE},
-};
 
 // Bytes of memory available (MemAvailable of /proc/meminfo), 0 if unknown.
 uint64_t available_memory() {
@@ -240,7 +129,7 @@ uint64_t bytes_needed(int w, int h, bool full, bool sheet) {
 // ------------------------------------------------------------------- run
 int run(const cli::Options& o) {
     const int W = o.width, H = o.height;
-    const std::string scene_path = o.scene_path.empty() ? default_scene_path() : o.scene_path;
+    const std::string scene_path = o.scene_path.empty() ? run_setup::default_scene_path() : o.scene_path;
     {
         std::error_code ec;
         if (fs::exists(o.out_dir, ec) && !fs::is_directory(o.out_dir, ec))
@@ -274,10 +163,10 @@ int run(const cli::Options& o) {
     if (sc.mesh.triangle_count() == 0) throw RunError("'" + scene_path + "' has nothing to draw (no triangles)");
 
     std::string radius_note;
-    const ssao_settings settings = build_settings(api, o, sc, radius_note);
+    const ssao_settings settings = run_setup::build_settings(api, o, sc, radius_note);
     const float aspect = static_cast<float>(W) / static_cast<float>(H);
     bool camera_from_scene = false;
-    const camera::Camera cam = build_camera(o, sc, aspect, camera_from_scene);
+    const camera::Camera cam = run_setup::build_camera(o, sc, aspect, camera_from_scene);
     const glm::mat4 view = camera::view_matrix(cam);
     const glm::mat4 projection = camera::projection_matrix(cam, aspect);
     for (int i = 0; i < 16; ++i)
@@ -373,15 +262,13 @@ int run(const cli::Options& o) {
                 const size_t sheet_row = row_bytes * 5;
                 modes_png.assign(sheet_row * static_cast<size_t>(H), 0);
                 for (int m = 0; m < 5; ++m) {
-                    const Mode& mode = kModes[m];
+                    const modes::Mode& mode = modes::kModes[m];
                     std::vector<uint8_t> panel;
                     if (!mode.ssao) {
                         panel = no_ao;
                     } else {
                         ssao_settings ms = settings;
-                        ms.rotation = mode.rotation;
-                        ms.distribution = mode.distribution;
-                        ms.kernel_shape = mode.kernel;
+                        modes::apply(mode, ms);
                         st = api.set_settings(plugin.ctx, &ms);
                         if (st != SSAO_OK) throw RunError("the SSAO plugin refused a mode's settings: " + plugin.error(st));
                         ssao_output mode_output{};
@@ -523,7 +410,7 @@ int main(int argc, char** argv) {
                 zero.size = sizeof zero;
                 have = library.api().resolve_settings(&zero, &defaults) == SSAO_OK;
             }
-            std::fputs(cli::help_text(have ? &defaults : nullptr, default_scene_path()).c_str(), stdout);
+            std::fputs(cli::help_text(have ? &defaults : nullptr, run_setup::default_scene_path()).c_str(), stdout);
             return 0;
         }
         case cli::ParseResult::Version: std::printf("%s\n", flags::version_line("ssao-host").c_str()); return 0;

@@ -8,7 +8,9 @@ packages=(
   python3 python3-glad
   libtinygltf-dev nlohmann-json3-dev libstb-dev libtinyexr-dev
   libembree-dev doctest-dev
-  python3-moderngl python3-numpy
+  python3-moderngl python3-numpy          # the Python host and its tests
+  libglfw3-dev xvfb xauth                # ssao-viewer and its tests in a virtual X server
+  python3-pil fonts-dejavu-core          # scripts/make-pictures.sh
 )
 missing=()
 for p in "${packages[@]}"; do

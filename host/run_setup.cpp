@@ -1,0 +1,120 @@
+// run_setup.cpp - see run_setup.h. Moved out of host/main.cpp so that
+// ssao-host and ssao-viewer start from the same scene, settings and camera.
+#include "run_setup.h"
+
+#include "locate.h"
+
+#include <cfloat>
+#include <cmath>
+#include <sstream>
+
+namespace run_setup {
+
+namespace {
+
+std::string fmt(double v) {
+    std::ostringstream s;
+    s.precision(4);
+    s << v;
+    return s.str();
+}
+
+}  // namespace
+
+// The bundled scene: <prefix>/share/ssao beside an installed program, the
+// source tree's assets/ for an uninstalled build (locate::data_dir).
+std::string default_scene_path() { return locate::bundled("models/spot-on-ground.glb"); }
+
+// Precedence: flags > scene hints > preset > plugin defaults. The radius is
+// scene-scaled (scene::ao_radius: the scene's hint, else 0.05 x its diagonal).
+ssao_settings build_settings(const ssao_api& api, const cli::Options& o, const scene::Scene& sc, std::string& radius_note) {
+    ssao_settings s{};
+    s.size = sizeof(ssao_settings);
+    if (o.preset) {
+        const ssao_status st = api.preset_settings(*o.preset, &s);
+        if (st != SSAO_OK) throw Error(std::string("the plugin refused the preset: ") + api.status_string(st));
+        // Presets trade samples and blur for time; the radius (and the bias that
+        // follows it) stays scene-scaled.
+        s.radius = 0.0f;
+        s.bias = 0.0f;
+    }
+    const scene::AoHints& h = sc.hints;
+    if (h.radius && !(std::isfinite(*h.radius) && *h.radius > 0.0f))
+        throw Error("the scene's hint ssao.radius = " + fmt(*h.radius) + " is not a number > 0");
+    if (const auto r = scene::ao_radius(sc)) {
+        s.radius = r->radius;
+        radius_note = r->source;
+    } else {
+        radius_note = "plugin default; the scene has no extent";
+    }
+    if (h.samples) {
+        if (*h.samples < 1 || *h.samples > SSAO_MAX_SAMPLES)
+            throw Error("the scene's hint ssao.samples = " + std::to_string(*h.samples) + " is out of range 1..64");
+        s.sample_count = static_cast<uint32_t>(*h.samples);
+    }
+    if (h.blur) {
+        const auto b = cli::parse_blur(*h.blur);
+        if (!b) throw Error("the scene's hint ssao.blur = '" + *h.blur + "' is not depth-aware|box|gaussian|none");
+        s.blur = *b;
+    }
+    if (h.bias) {
+        if (!(std::isfinite(*h.bias) && *h.bias >= 0.0f))
+            throw Error("the scene's hint ssao.bias = " + fmt(*h.bias) + " is not a number >= 0");
+        s.bias = *h.bias > 0.0f ? *h.bias : FLT_MIN;
+    }
+    if (h.power) {
+        if (!(std::isfinite(*h.power) && *h.power > 0.0f && *h.power <= 16.0f))
+            throw Error("the scene's hint ssao.power = " + fmt(*h.power) + " is out of range (0, 16]");
+        s.power = *h.power;
+    }
+    // Flags. A zero field means "default" in the ABI, so an explicit 0 for a
+    // bias becomes the smallest positive float and strength 0 SSAO_STRENGTH_OFF.
+    if (o.samples) s.sample_count = static_cast<uint32_t>(*o.samples);
+    if (o.radius) {
+        s.radius = *o.radius;
+        radius_note = "--radius";
+    }
+    if (o.bias) s.bias = *o.bias > 0.0f ? *o.bias : FLT_MIN;
+    if (o.depth_step_bias) s.depth_step_bias = *o.depth_step_bias > 0.0f ? *o.depth_step_bias : FLT_MIN;
+    if (o.power) s.power = *o.power;
+    if (o.strength) s.strength = *o.strength > 0.0f ? *o.strength : SSAO_STRENGTH_OFF;
+    if (o.kernel) s.kernel_shape = *o.kernel;
+    if (o.distribution) s.distribution = *o.distribution;
+    if (o.rotation) s.rotation = *o.rotation;
+    if (o.seed) s.seed = *o.seed;
+    if (o.blur) s.blur = *o.blur;
+    if (o.blur_radius) s.blur_radius = static_cast<uint32_t>(*o.blur_radius);
+    if (o.blur_sigma) s.blur_sigma = *o.blur_sigma;
+    if (o.blur_tolerance) s.blur_depth_tolerance = *o.blur_tolerance;
+    if (o.output_format) s.output_format = *o.output_format;
+
+    ssao_settings resolved{};
+    resolved.size = sizeof(ssao_settings);
+    const ssao_status st = api.resolve_settings(&s, &resolved);
+    if (st != SSAO_OK)
+        throw Error(std::string("the SSAO settings are invalid: ") + api.status_string(st));
+    return resolved;
+}
+
+const glm::vec3 kBundledEye(2.3f, 1.6f, -2.6f), kBundledTarget(0.0f, 0.65f, 0.0f);
+
+camera::Camera build_camera(const cli::Options& o, const scene::Scene& sc, float aspect, bool& from_scene) {
+    from_scene = sc.camera.has_value();
+    camera::Overrides ov = o.cam;
+    // The bundled scene's bounds are dominated by its 8 x 8 ground, so framing
+    // them shows a small cow: without a scene argument and without camera
+    // flags, look at the cow from a three-quarter view instead.
+    if (o.scene_path.empty() && !ov.eye && !ov.target && !ov.ortho_half_height) {
+        ov.eye = kBundledEye;
+        ov.target = kBundledTarget;
+    }
+    const camera::Camera c = camera::apply(sc, camera::choose(sc, aspect), ov);
+    if (!(glm::length(c.target - c.eye) > 0.0f)) throw Error("the camera's eye and target are the same point");
+    if (c.orthographic && std::isinf(c.zfar)) throw Error("an orthographic camera needs a finite far plane");
+    if (!c.orthographic && !(c.znear > 0.0f)) throw Error("the near plane " + fmt(c.znear) + " must be > 0");
+    if (!(c.zfar > c.znear))
+        throw Error("the far plane " + fmt(c.zfar) + " must lie beyond the near plane " + fmt(c.znear));
+    return c;
+}
+
+}  // namespace run_setup

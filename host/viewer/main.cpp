@@ -1,0 +1,160 @@
+// ssao-viewer: the SSAO plugin on a glTF scene in a window, driven by the
+// reference demo's keys. The same scene loader, G-buffer, lighting and plugin
+// (through dlopen and the C ABI) as ssao-host; see the README, "ssao-viewer".
+#include "controls.h"
+#include "image_io.h"
+#include "flags.h"
+#include "options.h"
+#include "overlay.h"
+#include "plugin_loader.h"
+#include "renderer.h"
+#include "run_setup.h"
+#include "scene.h"
+#include "script.h"
+#include "window.h"
+
+#include <GLFW/glfw3.h>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr float kScriptSecondsPerFrame = 1.0f / 30.0f;   // scripted runs move by fixed steps
+
+// Resident memory of this process in KiB (VmRSS), 0 if unknown.
+long resident_kib() {
+    std::FILE* f = std::fopen("/proc/self/status", "r");
+    if (!f) return 0;
+    char line[256];
+    long kib = 0;
+    while (std::fgets(line, sizeof line, f))
+        if (std::sscanf(line, "VmRSS: %ld kB", &kib) == 1) break;
+    std::fclose(f);
+    return kib;
+}
+
+void write_screenshot(viewer::Window& window, const std::string& dir, long frame, int width, int height) {
+    char name[64];
+    std::snprintf(name, sizeof name, "frame-%05ld.png", frame);
+    image_io::StagedOutput out(dir);
+    out.png(name, width, height, 3, window.read_pixels(width, height));
+    out.commit();
+    std::printf("screenshot: %s\n", (fs::absolute(dir) / name).lexically_normal().c_str());
+    std::fflush(stdout);
+}
+
+int run(const viewer::Options& o) {
+    std::vector<viewer::ScriptEvent> script;
+    std::string error;
+    if (!o.script_path.empty() && !viewer::load_script(o.script_path, script, error)) throw std::runtime_error(error);
+
+    const std::string scene_path = o.scene_path.empty() ? run_setup::default_scene_path() : o.scene_path;
+    plugin::Library library;
+    if (!library.open_default(o.plugin_path, error))
+        throw std::runtime_error(error);
+    const ssao_api& api = library.api();
+    scene::Scene sc;
+    if (!scene::load(scene_path, sc, error)) throw std::runtime_error("cannot load the scene: " + error);
+    if (sc.mesh.triangle_count() == 0) throw std::runtime_error("'" + scene_path + "' has nothing to draw (no triangles)");
+
+    cli::Options base;
+    base.scene_path = o.scene_path;
+    base.preset = o.preset;
+    viewer::Controls controls(api, base, sc, float(o.width) / float(o.height));
+
+    auto window = viewer::Window::open(o.width, o.height, "ssao-viewer", error);
+    if (!window) throw std::runtime_error(error);
+    window->on_key([&](int key, int action) { controls.key(key, action); });
+    GladGLContext& gl = window->gl();
+    std::printf("ssao-viewer: %s on %s\n", fs::absolute(scene_path).lexically_normal().c_str(), window->renderer().c_str());
+    std::fflush(stdout);
+
+    int width = 0, height = 0;
+    window->framebuffer_size(width, height);
+    viewer::Renderer renderer(gl, api, viewer::Window::get_proc, sc, controls.state().settings, width, height);
+    viewer::Overlay overlay(gl);
+    controls.set_aspect(float(width) / float(height));
+
+    size_t next_event = 0;
+    auto last = std::chrono::steady_clock::now();
+    for (long frame = 0; o.frames == 0 || frame < o.frames; ++frame) {
+        window->poll();
+        for (; next_event < script.size() && script[next_event].frame <= frame; ++next_event) {
+            const viewer::ScriptEvent& e = script[next_event];
+            switch (e.kind) {
+                case viewer::ScriptEvent::Kind::Press: controls.key(e.key, GLFW_PRESS); break;
+                case viewer::ScriptEvent::Kind::Release: controls.key(e.key, GLFW_RELEASE); break;
+                case viewer::ScriptEvent::Kind::Resize:
+                    window->request_size(e.width, e.height);
+                    window->poll();
+                    break;
+                case viewer::ScriptEvent::Kind::Memory:
+                    std::printf("frame %ld: %dx%d, resident %ld KiB\n", frame, width, height, resident_kib());
+                    std::fflush(stdout);
+                    break;
+                case viewer::ScriptEvent::Kind::Quit: return 0;
+            }
+        }
+        if (window->should_close() || controls.quit()) break;
+
+        const auto now = std::chrono::steady_clock::now();
+        const float seconds = o.script_path.empty() ? std::min(std::chrono::duration<float>(now - last).count(), 0.1f)
+                                                    : kScriptSecondsPerFrame;
+        last = now;
+        controls.advance(seconds);
+
+        int w = 0, h = 0;
+        window->framebuffer_size(w, h);
+        if (w <= 0 || h <= 0) {   // minimised: nothing to draw until it comes back
+            window->wait(0.1);
+            continue;
+        }
+        if (w != width || h != height) {
+            width = w;
+            height = h;
+            renderer.resize(width, height);
+            controls.set_aspect(float(width) / float(height));
+        }
+
+        renderer.render(controls.camera(), controls.state());
+        if (controls.state().overlay)
+            overlay.draw(viewer::overlay_lines(controls.state(), renderer.timings(), width, height), width, height,
+                         std::max(1, std::min(width, height) / 360));
+        if (controls.take_screenshot()) write_screenshot(*window, o.screenshot_dir, frame, width, height);
+        window->swap();
+    }
+    return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    viewer::Options options;
+    std::string error;
+    switch (viewer::parse(argc, argv, options, error)) {
+        case viewer::Parse::Error:
+            std::fprintf(stderr, "ssao-viewer: %s\n", error.c_str());
+            return 2;
+        case viewer::Parse::Help: std::fputs(viewer::help_text(run_setup::default_scene_path()).c_str(), stdout); return 0;
+        case viewer::Parse::Version: std::printf("%s\n", flags::version_line("ssao-viewer").c_str()); return 0;
+        case viewer::Parse::Run: break;
+    }
+    try {
+        return run(options);
+    } catch (const std::exception& e) {
+        // One line on stderr, whatever the message.
+        std::string message = e.what();
+        for (char& c : message)
+            if (c == '\n' || c == '\r') c = ' ';
+        std::fflush(stdout);
+        std::fprintf(stderr, "ssao-viewer: error: %s\n", message.c_str());
+        return 1;
+    }
+}

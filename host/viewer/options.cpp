@@ -1,0 +1,83 @@
+#include "options.h"
+
+#include "flags.h"
+
+namespace viewer {
+
+namespace {
+
+std::optional<ssao_preset> preset_named(const std::string& v) {
+    if (v == "low") return SSAO_PRESET_LOW;
+    if (v == "medium") return SSAO_PRESET_MEDIUM;
+    if (v == "high") return SSAO_PRESET_HIGH;
+    if (v == "ultra") return SSAO_PRESET_ULTRA;
+    return std::nullopt;
+}
+
+}  // namespace
+
+Parse parse(int argc, const char* const* argv, Options& o, std::string& error) {
+    const flags::Valued valued = {
+        {"--width", [&](const std::string& f, const std::string& v) { o.width = int(flags::integer(f, v, 1, 16384)); }},
+        {"--height", [&](const std::string& f, const std::string& v) { o.height = int(flags::integer(f, v, 1, 16384)); }},
+        {"--plugin", [&](const std::string& f, const std::string& v) {
+             if (v.empty()) flags::fail(f + " needs a path");
+             o.plugin_path = v;
+         }},
+        {"--preset", [&](const std::string& f, const std::string& v) {
+             o.preset = preset_named(v);
+             if (!o.preset) flags::fail(f + " " + flags::quoted(v) + " is not low|medium|high|ultra");
+         }},
+        {"--script", [&](const std::string& f, const std::string& v) {
+             if (v.empty()) flags::fail(f + " needs a file");
+             o.script_path = v;
+         }},
+        {"--frames", [&](const std::string& f, const std::string& v) { o.frames = long(flags::integer(f, v, 1, 100000000)); }},
+        {"--screenshot-dir", [&](const std::string& f, const std::string& v) {
+             if (v.empty()) flags::fail(f + " needs a folder");
+             o.screenshot_dir = v;
+         }},
+    };
+    try {
+        switch (flags::walk(argc, argv, valued, {}, o.scene_path)) {
+            case flags::Outcome::Help: return Parse::Help;
+            case flags::Outcome::Version: return Parse::Version;
+            case flags::Outcome::Run: break;
+        }
+    } catch (const flags::Error& e) {
+        error = e.message;
+        return Parse::Error;
+    }
+    return Parse::Run;
+}
+
+std::string help_text(const std::string& default_scene) {
+    return "ssao-viewer - the SSAO plugin on a glTF scene in a window (GLFW), keys as the reference demo.\n"
+           "\n"
+           "usage: ssao-viewer [SCENE.gltf|SCENE.glb] [flags]\n"
+           "  SCENE                glTF scene (default: " + default_scene + ")\n"
+           "  --width N            window width in pixels (default 800)\n"
+           "  --height N           window height in pixels (default 600)\n"
+           "  --preset NAME        start from low|medium|high|ultra (default: the plugin's defaults, as ssao-host)\n"
+           "  --plugin PATH        libssao.so to load (default: $SSAO_PLUGIN, then the same places as ssao-host)\n"
+           "  --script FILE        timed key presses and resizes (lines 'FRAME KEY', 'FRAME hold KEY N',\n"
+           "                       'FRAME resize W H', 'FRAME memory', 'FRAME quit'; frames count from 0)\n"
+           "  --frames N           exit after N frames\n"
+           "  --screenshot-dir DIR where F12 writes frame-NNNNN.png (default: the current folder)\n"
+           "  --help, -h           this text\n"
+           "  --version            the version\n"
+           "\n"
+           "keys:\n"
+           "  W A S D              move forward, left, back, right      Q Z   move up, down\n"
+           "  I J K L              turn up, left, down, right\n"
+           "  E R T Y U            the reference demo's modes: E no SSAO, R no rotation, T random rotation,\n"
+           "                       Y concentrated kernel, U hemisphere\n"
+           "  1 2 3 4              presets low, medium, high, ultra     0   the plugin's defaults\n"
+           "  B                    next blur: depth-aware, 4x4 box, gaussian, none\n"
+           "  V                    view: lit, AO only                   O   overlay on/off\n"
+           "  M                    estimator: point kernel or ray-marched visibility (interface 1.1)\n"
+           "  H                    half resolution (when the plugin offers it)\n"
+           "  F12                  screenshot                           Esc quit\n";
+}
+
+}  // namespace viewer

@@ -1,0 +1,28 @@
+// options.h - ssao-viewer's command line.
+#pragma once
+
+#include <ssao/ssao.h>
+
+#include <optional>
+#include <string>
+
+namespace viewer {
+
+struct Options {
+    std::string scene_path;          // empty = the bundled scene
+    std::string plugin_path;         // empty = plugin::Library::default_path()
+    int width = 800, height = 600;   // the window's client area, as ssao-host's default image
+    std::optional<ssao_preset> preset;
+    std::string script_path;         // --script: timed key presses
+    long frames = 0;                 // --frames: exit after this many frames (0 = run until closed)
+    std::string screenshot_dir = "."; // where F12 writes
+};
+
+enum class Parse { Run, Help, Version, Error };
+
+// "--flag value" and "--flag=value"; on Error `error` names the flag.
+Parse parse(int argc, const char* const* argv, Options& out, std::string& error);
+
+std::string help_text(const std::string& default_scene);
+
+}  // namespace viewer

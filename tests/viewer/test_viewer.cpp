@@ -1,0 +1,316 @@
+// ssao-viewer as a user runs it: in a virtual X server (xvfb-run; Mesa's
+// llvmpipe through GLX), driven by --script, its F12 screenshots compared with
+// the pictures ssao-host writes for the same scene, camera and size (the oracle:
+// same G-buffer, plugin and lighting) and with ssao-reference's ray-traced AO.
+#define DOCTEST_CONFIG_IMPLEMENT_WITH_MAIN
+#include <doctest/doctest.h>
+
+#define STB_IMAGE_IMPLEMENTATION
+#include <stb/stb_image.h>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::string kViewer = SSAO_VIEWER_EXE;
+const std::string kHost = SSAO_HOST_EXE;
+const std::string kReference = SSAO_REFERENCE_EXE;   // empty when not built
+const std::string kXvfbRun = SSAO_XVFB_RUN;          // empty when not installed
+const std::string kWork = SSAO_TEST_WORK_DIR;
+// The bundled scene's view, as ssao-host and ssao-viewer choose it.
+const std::vector<std::string> kBundledView = {"--eye", "2.3,1.6,-2.6", "--target", "0,0.65,0"};
+
+std::string read_file(const std::string& path) {
+    std::ifstream f(path, std::ios::binary);
+    std::ostringstream s;
+    s << f.rdbuf();
+    return s.str();
+}
+
+std::string fresh_dir(const std::string& name) {
+    const fs::path p = fs::path(kWork) / name;
+    fs::remove_all(p);
+    fs::create_directories(p);
+    return p.string();
+}
+
+std::string quote(const std::string& s) {
+    std::string q = "'";
+    for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return q + "'";
+}
+
+struct Run {
+    int exit_code = -1;   // -1: killed by a signal or the timeout
+    std::string out, err;
+    std::vector<std::string> err_lines() const {
+        std::vector<std::string> lines;
+        std::istringstream in(err);
+        for (std::string l; std::getline(in, l);) lines.push_back(l);
+        return lines;
+    }
+};
+
+// Runs `program args` (after `prefix`, e.g. env settings or xvfb-run) with a
+// 120 s limit, capturing both streams.
+Run run(const std::string& prefix, const std::string& program, const std::vector<std::string>& args,
+        const std::string& dir) {
+    std::string cmd = prefix + " timeout -s KILL 120 " + quote(program);
+    for (const auto& a : args) cmd += " " + quote(a);
+    const std::string out = dir + "/stdout.txt", err = dir + "/stderr.txt";
+    cmd += " >" + quote(out) + " 2>" + quote(err);
+    const int status = std::system(cmd.c_str());
+    Run r;
+    if (WIFEXITED(status) && WEXITSTATUS(status) <= 128) r.exit_code = WEXITSTATUS(status);
+    r.out = read_file(out);
+    r.err = read_file(err);
+    return r;
+}
+
+// The viewer in a fresh virtual X server of 320 x 240.
+Run run_viewer(const std::vector<std::string>& args, const std::string& dir) {
+    REQUIRE_MESSAGE(!kXvfbRun.empty(), "xvfb-run is not installed: apt-get install xvfb xauth (scripts/install-deps.sh)");
+    return run(quote(kXvfbRun) + " -a -s '-screen 0 320x240x24'", kViewer, args, dir);
+}
+
+std::string write_script(const std::string& dir, const std::string& text) {
+    const std::string path = dir + "/script.txt";
+    std::ofstream(path) << text;
+    return path;
+}
+
+struct Png {
+    int w = 0, h = 0, channels = 0;
+    std::vector<unsigned char> px;
+    int at(int x, int y, int c = 0) const {
+        return px[(static_cast<size_t>(y) * static_cast<size_t>(w) + static_cast<size_t>(x)) * static_cast<size_t>(channels) +
+                  static_cast<size_t>(c)];
+    }
+    // Sum of the colour channels (grey counts once per channel of an RGB image).
+    int sum(int x, int y) const {
+        int s = 0;
+        for (int c = 0; c < channels; ++c) s += at(x, y, c);
+        return s;
+    }
+};
+
+Png load_png(const std::string& path) {
+    Png p;
+    unsigned char* data = stbi_load(path.c_str(), &p.w, &p.h, &p.channels, 0);
+    REQUIRE_MESSAGE(data != nullptr, "cannot read " << path);
+    p.px.assign(data, data + static_cast<size_t>(p.w) * static_cast<size_t>(p.h) * static_cast<size_t>(p.channels));
+    stbi_image_free(data);
+    return p;
+}
+
+std::string shot(const std::string& dir, int frame) {
+    char name[32];
+    std::snprintf(name, sizeof name, "/frame-%05d.png", frame);
+    return dir + name;
+}
+
+// Pixels of `a` (RGB) whose channels differ from `b`'s channel `from`..: b may
+// be grey (each channel compared with its one channel) or RGB, or a panel of a
+// wider sheet starting at column `x0`. Pixels inside `skip` (x, y < skip) are
+// left out (the host's panel labels).
+int differing(const Png& a, const Png& b, int x0 = 0, int skip = 0) {
+    REQUIRE(a.h == b.h);
+    REQUIRE(x0 + a.w <= b.w);
+    int n = 0;
+    for (int y = 0; y < a.h; ++y)
+        for (int x = 0; x < a.w; ++x) {
+            if (x < skip && y < skip) continue;
+            for (int c = 0; c < a.channels; ++c)
+                if (a.at(x, y, c) != b.at(x0 + x, y, b.channels == 1 ? 0 : c)) {
+                    ++n;
+                    break;
+                }
+        }
+    return n;
+}
+
+// ssao-host's pictures of the bundled scene at w x h.
+std::string host_pictures(const std::string& name, int w, int h, bool only_ao = false) {
+    const std::string dir = fresh_dir(name);
+    std::vector<std::string> args = {"--width", std::to_string(w), "--height", std::to_string(h), "--out", dir};
+    if (only_ao) args.insert(args.end(), {"--only", "ao"});
+    const Run r = run("", kHost, args, dir);
+    INFO("ssao-host: " << r.err);
+    REQUIRE(r.exit_code == 0);
+    return dir;
+}
+
+}  // namespace
+
+TEST_CASE("without a display it exits with one clear line") {
+    const std::string dir = fresh_dir("no_display");
+    for (const std::string env : {"env -u DISPLAY -u WAYLAND_DISPLAY", "env -u WAYLAND_DISPLAY DISPLAY=:987"}) {
+        CAPTURE(env);
+        const Run r = run(env, kViewer, {"--frames", "3", "--screenshot-dir", dir}, dir);
+        CHECK(r.exit_code == 1);
+        const std::vector<std::string> lines = r.err_lines();
+        REQUIRE(lines.size() == 1);
+        CHECK(lines[0].rfind("ssao-viewer: error: cannot open a display (", 0) == 0);
+        CHECK(lines[0].find("xvfb-run") != std::string::npos);
+    }
+    // A bad script is refused before any window, naming the file and the line.
+    const std::string script = write_script(dir, "1 E\n2 resize 10\n");
+    const Run r = run("env -u DISPLAY", kViewer, {"--script", script}, dir);
+    CHECK(r.exit_code == 1);
+    REQUIRE(r.err_lines().size() == 1);
+    CHECK(r.err_lines()[0] == "ssao-viewer: error: script " + script + ":2: expected 'FRAME resize WIDTH HEIGHT'");
+    const Run bad_flag = run("", kViewer, {"--width", "0"}, dir);
+    CHECK(bad_flag.exit_code == 2);
+    CHECK(bad_flag.err_lines().size() == 1);
+}
+
+TEST_CASE("each mode key shows ssao-host's picture of that mode, U darkens contacts and E nothing") {
+    const int W = 160, H = 120;
+    const std::string host = host_pictures("modes_host", W, H);
+    const std::string dir = fresh_dir("modes");
+    const std::string script = write_script(dir,
+                                            "0 F12\n"    // with the overlay
+                                            "1 O\n"
+                                            "1 F12\n"    // the first frame's settings: ssao-host's defaults
+                                            "2 E\n 3 F12\n 4 R\n 5 F12\n 6 T\n 7 F12\n 8 Y\n 9 F12\n 10 U\n 11 F12\n"
+                                            "12 V\n 13 F12\n"   // AO only, mode U
+                                            "14 E\n 15 F12\n");  // AO only, mode E
+    const Run r = run_viewer({"--width", std::to_string(W), "--height", std::to_string(H), "--script", script,
+                              "--frames", "16", "--screenshot-dir", dir},
+                             dir);
+    INFO("stdout: " << r.out << "\nstderr: " << r.err);
+    REQUIRE(r.exit_code == 0);
+    CHECK(r.out.find("screenshot: " + shot(dir, 15)) != std::string::npos);
+
+    const Png lit_ao = load_png(host + "/lit_ao.png"), lit_no_ao = load_png(host + "/lit_no_ao.png");
+    const Png ao = load_png(host + "/ao.png"), sheet = load_png(host + "/modes.png");
+    const Png first = load_png(shot(dir, 1));
+    REQUIRE((first.w == W && first.h == H && first.channels == 3));
+    CHECK(differing(first, lit_ao) == 0);
+    // E R T Y U against the host's mode sheet (panels left to right, each
+    // labelled in its top-left corner, which is left out).
+    const int frames[5] = {3, 5, 7, 9, 11};
+    for (int m = 0; m < 5; ++m) {
+        CAPTURE("ERTYU"[m]);
+        CHECK(differing(load_png(shot(dir, frames[m])), sheet, m * W, 12) == 0);
+    }
+    const Png e = load_png(shot(dir, 3)), u = load_png(shot(dir, 11));
+    CHECK(differing(e, lit_no_ao) == 0);
+    CHECK(differing(u, lit_ao) == 0);
+    // AO only: U is the host's AO image, E is white everywhere.
+    const Png u_ao = load_png(shot(dir, 13)), e_ao = load_png(shot(dir, 15));
+    CHECK(differing(u_ao, ao) == 0);
+    int not_white = 0;
+    for (unsigned char v : e_ao.px) not_white += v != 255;
+    CHECK(not_white == 0);
+
+    // The AO only darkens (it scales the ambient term), and it darkens where
+    // the ray-traced truth says surfaces meet, not in the open.
+    int brighter = 0;
+    for (int y = 0; y < H; ++y)
+        for (int x = 0; x < W; ++x) brighter += u.sum(x, y) > e.sum(x, y);
+    CHECK(brighter == 0);
+    if (!kReference.empty()) {
+        std::vector<std::string> args = {"--width", std::to_string(W), "--height", std::to_string(H), "--samples", "256",
+                                         "--quiet", "--out", dir};
+        args.insert(args.end(), kBundledView.begin(), kBundledView.end());
+        const Run ref = run("", kReference, args, dir);
+        REQUIRE_MESSAGE(ref.exit_code == 0, ref.err);
+        const Png truth = load_png(dir + "/reference_ao.png");
+        double contact = 0, open = 0;
+        int contacts = 0, opens = 0;
+        for (int y = 0; y < H; ++y)
+            for (int x = 0; x < W; ++x) {
+                const int t = truth.at(x, y);
+                const double darker = (e.sum(x, y) - u.sum(x, y)) / 3.0;
+                if (e.sum(x, y) == 0) continue;   // sky
+                if (t < 0.7 * 255) contact += darker, ++contacts;
+                else if (t >= 0.98 * 255) open += darker, ++opens;
+            }
+        REQUIRE(contacts > 100);
+        REQUIRE(opens > 1000);
+        MESSAGE("U darker than E by " << contact / contacts << " levels at " << contacts << " contact pixels, "
+                                      << open / opens << " at " << opens << " open ones");
+        CHECK(contact / contacts > 3.0);
+        CHECK(contact / contacts > 10.0 * (open / opens));
+    }
+
+    // The overlay covers a band at the top left and nothing else.
+    const Png with_overlay = load_png(shot(dir, 0));
+    int inside = 0, outside = 0;
+    for (int y = 0; y < H; ++y)
+        for (int x = 0; x < W; ++x)
+            for (int c = 0; c < 3; ++c)
+                if (with_overlay.at(x, y, c) != first.at(x, y, c)) {
+                    (y < 90 ? inside : outside) += 1;
+                    break;
+                }
+    CHECK(inside > 1000);
+    CHECK(outside == 0);
+}
+
+TEST_CASE("after a resize the AO matches a fresh start at that size") {
+    const std::string dir = fresh_dir("resize");
+    const std::string script = write_script(dir,
+                                            "0 O\n0 V\n"
+                                            "2 resize 192 96\n5 F12\n"
+                                            "6 resize 128 112\n9 F12\n"
+                                            "10 resize 160 120\n13 F12\n");
+    const Run r = run_viewer({"--width", "160", "--height", "120", "--script", script, "--frames", "14",
+                              "--screenshot-dir", dir},
+                             dir);
+    INFO("stdout: " << r.out << "\nstderr: " << r.err);
+    REQUIRE(r.exit_code == 0);
+    const struct {
+        int frame, w, h;
+    } after[] = {{5, 192, 96}, {9, 128, 112}, {13, 160, 120}};
+    for (const auto& a : after) {
+        CAPTURE(a.w);
+        CAPTURE(a.h);
+        const Png got = load_png(shot(dir, a.frame));
+        REQUIRE((got.w == a.w && got.h == a.h));
+        const Png fresh = load_png(host_pictures("resize_host", a.w, a.h, true) + "/ao.png");
+        CHECK(differing(got, fresh) == 0);
+    }
+    // And a fresh viewer at the first new size.
+    const std::string fresh_dir_ = fresh_dir("resize_fresh");
+    const Run f = run_viewer({"--width", "192", "--height", "96", "--script",
+                              write_script(fresh_dir_, "0 O\n0 V\n1 F12\n"), "--frames", "2", "--screenshot-dir",
+                              fresh_dir_},
+                             fresh_dir_);
+    REQUIRE(f.exit_code == 0);
+    CHECK(differing(load_png(shot(dir, 5)), load_png(shot(fresh_dir_, 1))) == 0);
+}
+
+TEST_CASE("resizing reallocates without leaking") {
+    const std::string dir = fresh_dir("leak");
+    // 60 resizes between 160 x 120 and 256 x 192, the memory read after 10 and after 60.
+    std::string text;
+    for (int i = 0; i < 60; ++i) text += std::to_string(2 * i) + (i % 2 ? " resize 256 192\n" : " resize 160 120\n");
+    text += "21 memory\n119 memory\n";
+    const Run r = run_viewer({"--width", "160", "--height", "120", "--script", write_script(dir, text), "--frames", "121"},
+                             dir);
+    INFO("stdout: " << r.out << "\nstderr: " << r.err);
+    REQUIRE(r.exit_code == 0);
+    std::vector<long> kib;
+    std::istringstream in(r.out);
+    for (std::string line; std::getline(in, line);) {
+        const size_t at = line.find("resident ");
+        if (at != std::string::npos) kib.push_back(std::stol(line.substr(at + 9)));
+    }
+    REQUIRE(kib.size() == 2);
+    MESSAGE("resident after 10 resizes " << kib[0] << " KiB, after 60 " << kib[1] << " KiB");
+    // A G-buffer and lighting target left behind per resize would be ~1.5 MiB each: 75 MiB.
+    CHECK(kib[1] - kib[0] < 8 * 1024);
+}
