@@ -2,6 +2,7 @@
 // entry point checks its pointers and struct sizes, and no C++ exception
 // crosses the boundary.
 #include "context.h"
+#include "raw_enum.h"
 #include "settings.h"
 
 #include <memory>
@@ -26,7 +27,8 @@ ssao_status guarded(ssao_context* ctx, F&& body) {
 }
 
 const char* SSAO_CALL status_string(ssao_status status) {
-    switch (status) {
+    // On the raw bits (raw_enum.h): a C caller may pass any 32-bit value.
+    switch (ssao_impl::raw_enum(status)) {
         case SSAO_OK: return "success";
         case SSAO_ERROR_NULL_POINTER: return "a required pointer argument was NULL";
         case SSAO_ERROR_STRUCT_SIZE: return "a struct's size field matches no known version of that struct";
@@ -62,7 +64,7 @@ ssao_status SSAO_CALL api_preset_settings(ssao_preset preset, ssao_settings* out
     if (out->size != sizeof(ssao_settings)) return SSAO_ERROR_STRUCT_SIZE;
     return guarded(nullptr, [&] {
         std::string why;
-        return ssao_impl::preset_settings(preset, *out, why);
+        return ssao_impl::preset_settings(ssao_impl::raw_enum(preset), *out, why);
     });
 }
 

@@ -3,6 +3,7 @@
 // all inside one GL state guard.
 #include "context.h"
 #include "kernel.h"
+#include "raw_enum.h"
 #include "settings.h"
 #include "uniforms.h"
 
@@ -66,6 +67,14 @@ struct DetachOnExit {
         gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, 0, 0);
     }
 };
+
+// Is level 0 of the texture bound to GL_TEXTURE_2D (on the active unit) of
+// an integer format (GL_INT or GL_UNSIGNED_INT components)?
+bool has_integer_format(const GladGLContext& gl) {
+    GLint red_type = 0;
+    gl.GetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_RED_TYPE, &red_type);
+    return red_type == GL_INT || red_type == GL_UNSIGNED_INT;
+}
 
 void level0_size(const GladGLContext& gl, int& w, int& h) {
     gl.GetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_WIDTH, &w);
@@ -171,11 +180,12 @@ ssao_status execute(ssao_context& ctx, const ssao_inputs& in, ssao_output* out) 
     const ssao_settings& s = ctx.settings;
 
     // ---- checks that need no GL state change
-    if (static_cast<int>(in.normal_space) < 0 || in.normal_space > SSAO_NORMAL_SPACE_WORLD)
+    // Raw bits first (raw_enum.h): a caller may store any 32-bit value.
+    if (!raw_enum_at_most(in.normal_space, SSAO_NORMAL_SPACE_WORLD))
         return ctx.fail(SSAO_ERROR_INVALID_ENUM, "inputs.normal_space is not an ssao_normal_space");
-    if (static_cast<int>(in.normal_packing) < 0 || in.normal_packing > SSAO_NORMAL_PACKING_SIGNED)
+    if (!raw_enum_at_most(in.normal_packing, SSAO_NORMAL_PACKING_SIGNED))
         return ctx.fail(SSAO_ERROR_INVALID_ENUM, "inputs.normal_packing is not an ssao_normal_packing");
-    if (static_cast<int>(in.clip_range) < 0 || in.clip_range > SSAO_CLIP_ZERO_TO_ONE)
+    if (!raw_enum_at_most(in.clip_range, SSAO_CLIP_ZERO_TO_ONE))
         return ctx.fail(SSAO_ERROR_INVALID_ENUM, "inputs.clip_range is not an ssao_clip_range");
     const bool world_normals = in.normal_space == SSAO_NORMAL_SPACE_WORLD;
     if (world_normals) {
@@ -228,17 +238,16 @@ ssao_status execute(ssao_context& ctx, const ssao_inputs& in, ssao_output* out) 
         return ctx.fail(SSAO_ERROR_INVALID_TEXTURE, "inputs.normal_texture is not a GL_TEXTURE_2D (it did not bind)");
     int nw = 0, nh = 0;
     level0_size(gl, nw, nh);
-    GLint red_bits = 0, blue_bits = 0, red_type = 0;
+    GLint red_bits = 0, blue_bits = 0;
     gl.GetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_RED_SIZE, &red_bits);
     gl.GetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_BLUE_SIZE, &blue_bits);
-    gl.GetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_RED_TYPE, &red_type);
     if (nw != dw || nh != dh)
         return ctx.fail(SSAO_ERROR_INVALID_TEXTURE, "inputs.normal_texture is " + std::to_string(nw) + "x" +
                                                         std::to_string(nh) + " but the depth texture is " +
                                                         std::to_string(dw) + "x" + std::to_string(dh));
     if (red_bits <= 0 || blue_bits <= 0)
         return ctx.fail(SSAO_ERROR_UNSUPPORTED_FORMAT, "inputs.normal_texture needs three colour channels (x, y, z)");
-    if (red_type == GL_INT || red_type == GL_UNSIGNED_INT)
+    if (has_integer_format(gl))
         return ctx.fail(SSAO_ERROR_UNSUPPORTED_FORMAT,
                         "inputs.normal_texture has an integer format; a float, unorm or snorm one is needed");
 
@@ -261,6 +270,11 @@ ssao_status execute(ssao_context& ctx, const ssao_inputs& in, ssao_output* out) 
         if (ow < vx + vw || oh < vy + vh)
             return ctx.fail(SSAO_ERROR_INVALID_SIZE, "inputs.output_texture (" + std::to_string(ow) + "x" +
                                                          std::to_string(oh) + ") does not contain the viewport");
+        // AO is a float written through a float output: an integer texture
+        // (R32UI, RGBA8UI) would be complete but receive float bit patterns.
+        if (has_integer_format(gl))
+            return ctx.fail(SSAO_ERROR_UNSUPPORTED_FORMAT,
+                            "inputs.output_texture has an integer format; a float, unorm or snorm one is needed");
         // Checked before anything of the library's changes: a refused call
         // leaves the library's own output as it was.
         gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, in.output_texture, 0);

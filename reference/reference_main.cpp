@@ -26,6 +26,8 @@
 #include <limits>
 #include <map>
 #include <sstream>
+#include <new>
+#include <stdexcept>
 #include <string>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -162,7 +164,7 @@ bool make_dirs(const std::string& path, std::string& error) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
+static int run(int argc, char** argv) {
     Options o;
     std::string error;
     switch (parse(argc, argv, o, error)) {
@@ -288,4 +290,17 @@ int main(int argc, char** argv) {
     std::printf("time      %.2f s, %.2f Mrays/s\n", img.seconds, double(img.rays) / std::max(img.seconds, 1e-9) * 1e-6);
     for (const auto& p : written) std::printf("wrote     %s\n", p.c_str());
     return 0;
+}
+
+// Images are allocated at the requested size, so a large --width/--height (or
+// a huge input) can run out of memory: say so instead of aborting.
+int main(int argc, char** argv) {
+    try {
+        return run(argc, argv);
+    } catch (const std::bad_alloc&) {
+        std::fputs("ssao-reference: out of memory (the image size or the scene is too large for this machine).\n", stderr);
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "ssao-reference: unexpected failure (%s).\n", e.what());
+    }
+    return 1;
 }

@@ -8,6 +8,7 @@ packages=(
   python3 python3-glad
   libtinygltf-dev nlohmann-json3-dev libstb-dev libtinyexr-dev
   libembree-dev doctest-dev
+  clang-14 libclang-rt-14-dev
 )
 missing=()
 for p in "${packages[@]}"; do
