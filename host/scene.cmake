@@ -6,6 +6,7 @@ find_path(SSAO_TINYGLTF_INCLUDE_DIR tiny_gltf.h REQUIRED)
 find_library(SSAO_TINYGLTF_LIBRARY tinygltf REQUIRED)
 add_library(ssao_scene STATIC
   ${CMAKE_CURRENT_LIST_DIR}/scene.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/scene_limits.cpp
   ${CMAKE_CURRENT_LIST_DIR}/camera.cpp
   ${CMAKE_CURRENT_LIST_DIR}/camera_flags.cpp)
 target_include_directories(ssao_scene PUBLIC ${CMAKE_CURRENT_LIST_DIR})

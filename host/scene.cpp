@@ -31,6 +31,7 @@
 #include <functional>
 #include <limits>
 #include <sstream>
+#include <sys/stat.h>
 
 namespace scene {
 namespace {
@@ -148,7 +149,8 @@ double read_component(const unsigned char* p, int component_type, bool normalize
 
 class Loader {
 public:
-    Loader(const tinygltf::Model& m, const std::string& path) : model_(m), path_(path) {}
+    Loader(const tinygltf::Model& m, const std::string& path, const Limits& limits)
+        : model_(m), path_(path), limits_(limits) {}
 
     std::string error;
 
@@ -327,6 +329,74 @@ public:
         return true;
     }
 
+    // The scene budget, checked before anything is flattened: nodes that
+    // repeat a mesh multiply its triangles, and nodes shared as children
+    // multiply whole subtrees (a chain of nodes with two children each
+    // doubles per level). So each node's flattened triangles and node
+    // instances are summed once (memoised over the node graph, saturating),
+    // from the accessors' counts alone; visit() checks everything else.
+    bool within_budget(const std::vector<int>& roots) {
+        memo_.assign(model_.nodes.size(), Cost{});
+        Cost total;
+        for (int r : roots) {
+            const Cost c = cost(r, 0);
+            total.triangles = saturating_add(total.triangles, c.triangles);
+            total.instances = saturating_add(total.instances, c.instances);
+        }
+        if (total.instances > limits_.max_node_instances)
+            return fail("has more than " + std::to_string(limits_.max_node_instances) +
+                        " node instances once flattened (nodes shared as children repeat their subtrees); "
+                        "this is the scene budget");
+        if (total.triangles > limits_.max_triangles)
+            return fail("has more than " + std::to_string(limits_.max_triangles) +
+                        " triangles once its nodes are flattened (meshes repeated by nodes count each time); "
+                        "this is the scene budget");
+        return true;
+    }
+
+    struct Cost {
+        uint64_t triangles = 0, instances = 0;
+        int state = 0;  // 0 not yet, 1 in progress (a cycle if met again), 2 done
+    };
+    static uint64_t saturating_add(uint64_t a, uint64_t b) {
+        return a > std::numeric_limits<uint64_t>::max() - b ? std::numeric_limits<uint64_t>::max() : a + b;
+    }
+    uint64_t mesh_triangles(int mesh_index) const {
+        if (mesh_index < 0 || size_t(mesh_index) >= model_.meshes.size()) return 0;
+        uint64_t n = 0;
+        for (const tinygltf::Primitive& prim : model_.meshes[size_t(mesh_index)].primitives) {
+            int counted = prim.indices;
+            if (counted < 0) {
+                const auto pos = prim.attributes.find("POSITION");
+                counted = pos == prim.attributes.end() ? -1 : pos->second;
+            }
+            if (counted >= 0 && size_t(counted) < model_.accessors.size())
+                n = saturating_add(n, triangles_of(prim.mode, model_.accessors[size_t(counted)].count));
+        }
+        return n;
+    }
+    // Invalid nodes, cycles and overdeep trees cost nothing here: visit()
+    // reports them (it stops at the first failure, so they cost it little).
+    Cost cost(int node_index, int depth) {
+        if (node_index < 0 || size_t(node_index) >= model_.nodes.size() || depth > 256) return Cost{};
+        Cost& memo = memo_[size_t(node_index)];
+        if (memo.state == 2) return memo;
+        if (memo.state == 1) return Cost{};
+        memo.state = 1;
+        const tinygltf::Node& node = model_.nodes[size_t(node_index)];
+        Cost c;
+        c.triangles = mesh_triangles(node.mesh);
+        c.instances = 1;
+        for (int child : node.children) {
+            const Cost k = cost(child, depth + 1);
+            c.triangles = saturating_add(c.triangles, k.triangles);
+            c.instances = saturating_add(c.instances, k.instances);
+        }
+        c.state = 2;
+        memo_[size_t(node_index)] = c;  // memo_ is not resized during the walk
+        return c;
+    }
+
     static glm::dmat4 local_matrix(const tinygltf::Node& n) {
         if (n.matrix.size() == 16) {
             glm::dmat4 m;
@@ -385,6 +455,8 @@ public:
 
     const tinygltf::Model& model_;
     std::string path_;
+    Limits limits_;
+    std::vector<Cost> memo_;  // within_budget's per-node cost
     Mesh out_;
     std::optional<GltfCamera> camera_;
 };
@@ -410,24 +482,69 @@ void read_hints(const tinygltf::Value& extras, AoHints& h) {
 
 }  // namespace
 
-bool load(const std::string& path, Scene& out, std::string& error) {
-    error.clear();
+namespace {
+
+std::string size_text(uint64_t bytes) {
+    if (bytes % (uint64_t(1) << 30) == 0) return std::to_string(bytes >> 30) + " GiB";
+    if (bytes % (uint64_t(1) << 20) == 0) return std::to_string(bytes >> 20) + " MiB";
+    return std::to_string(bytes) + " bytes";
+}
+
+// Reads at most limits.max_bytes: a regular file is judged by its size
+// before reading, a stream (pipe, /dev/zero) while it is read.
+bool read_bounded(const std::string& path, const Limits& limits, std::vector<unsigned char>& bytes,
+                  std::string& error) {
+    const std::string too_large = path + ": the file is larger than " + size_text(limits.max_bytes) + ".";
+    struct stat st {};
+    if (::stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode) && uint64_t(st.st_size) > limits.max_bytes) {
+        error = too_large;
+        return false;
+    }
     std::ifstream f(path, std::ios::binary);
     if (!f) {
         error = path + ": cannot open the file (missing or unreadable).";
         return false;
     }
-    std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+    try {
+        std::vector<char> chunk(size_t(1) << 16);
+        while (f) {
+            f.read(chunk.data(), std::streamsize(chunk.size()));
+            const auto got = size_t(f.gcount());
+            if (uint64_t(bytes.size()) + got > limits.max_bytes) {
+                error = too_large;
+                return false;
+            }
+            bytes.insert(bytes.end(), chunk.begin(), chunk.begin() + std::ptrdiff_t(got));
+        }
+    } catch (const std::bad_alloc&) {
+        error = path + ": out of memory while reading the file.";
+        return false;
+    }
     if (f.bad()) {
         error = path + ": cannot read the file.";
         return false;
     }
+    return true;
+}
+
+}  // namespace
+
+bool load(const std::string& path, Scene& out, std::string& error, const Limits& limits) {
+    error.clear();
+    std::vector<unsigned char> bytes;
+    if (!read_bounded(path, limits, bytes, error)) return false;
+    return load_from_memory(bytes, path, out, error, limits);
+}
+
+bool load_from_memory(const std::vector<unsigned char>& bytes, const std::string& path, Scene& out,
+                      std::string& error, const Limits& limits) {
+    error.clear();
     if (bytes.empty()) {
         error = path + ": the file is empty.";
         return false;
     }
-    if (bytes.size() > (size_t(1) << 31)) {
-        error = path + ": the file is larger than 2 GiB.";
+    if (bytes.size() > limits.max_bytes) {
+        error = path + ": the file is larger than " + size_text(limits.max_bytes) + ".";
         return false;
     }
     // Binary when it says so, by magic or by extension; JSON otherwise.
@@ -438,6 +555,19 @@ bool load(const std::string& path, Scene& out, std::string& error) {
             error = path + ": the file " + why + ".";
             return false;
         }
+    }
+    // The JSON text: all of a .gltf, the first chunk of a .glb (check_glb
+    // has checked its length against the file).
+    const unsigned char* json = bytes.data();
+    size_t json_size = bytes.size();
+    if (binary) {
+        json = bytes.data() + 20;
+        json_size = read_u32le(bytes.data() + 12);
+    }
+    if (json_nesting_depth(json, json_size, limits.max_json_depth) > limits.max_json_depth) {
+        error = path + ": the JSON nests arrays or objects deeper than " + std::to_string(limits.max_json_depth) +
+                " levels, which no glTF needs.";
+        return false;
     }
 
     std::string base_dir;
@@ -465,7 +595,7 @@ bool load(const std::string& path, Scene& out, std::string& error) {
         return false;
     }
 
-    Loader loader(model, path);
+    Loader loader(model, path, limits);
     try {
         std::vector<int> roots;
         int scene_index = model.defaultScene >= 0 ? model.defaultScene : 0;
@@ -483,6 +613,10 @@ bool load(const std::string& path, Scene& out, std::string& error) {
                     if (c >= 0 && size_t(c) < is_child.size()) is_child[size_t(c)] = true;
             for (size_t i = 0; i < model.nodes.size(); ++i)
                 if (!is_child[i]) roots.push_back(int(i));
+        }
+        if (!loader.within_budget(roots)) {
+            error = loader.error;
+            return false;
         }
         for (int r : roots)
             if (!loader.visit(r, glm::dmat4(1.0), 0)) {

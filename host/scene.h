@@ -3,6 +3,8 @@
 // so the rasteriser (host) and the ray tracer (reference) see the same geometry.
 #pragma once
 
+#include "scene_limits.h"
+
 #include <glm/glm.hpp>
 
 #include <optional>
@@ -62,6 +64,13 @@ std::optional<AoRadius> ao_radius(const Scene& s);
 // Loads .gltf or .glb. On failure returns false and sets `error` to one
 // sentence naming the problem (missing file, malformed JSON, truncated glb,
 // accessor past its buffer, non-triangle primitive, nothing to draw, ...).
-bool load(const std::string& path, Scene& out, std::string& error);
+// `limits` (scene_limits.h) bounds the file size, the JSON nesting and the
+// flattened triangles, each failing with its own sentence.
+bool load(const std::string& path, Scene& out, std::string& error, const Limits& limits = Limits{});
+
+// The same on bytes already in memory; `path` names them in messages and
+// decides .glb by extension, as for a file.
+bool load_from_memory(const std::vector<unsigned char>& bytes, const std::string& path, Scene& out,
+                      std::string& error, const Limits& limits = Limits{});
 
 }  // namespace scene

@@ -2,6 +2,7 @@
 // entry point checks its pointers and struct sizes, and no C++ exception
 // crosses the boundary.
 #include "context.h"
+#include "raw_enum.h"
 #include "settings.h"
 #include "struct_versions.h"
 #include "timers.h"
@@ -28,7 +29,8 @@ ssao_status guarded(ssao_context* ctx, F&& body) {
 }
 
 const char* SSAO_CALL status_string(ssao_status status) {
-    switch (status) {
+    // On the raw bits (raw_enum.h): a C caller may pass any 32-bit value.
+    switch (ssao_impl::raw_enum(status)) {
         case SSAO_OK: return "success";
         case SSAO_ERROR_NULL_POINTER: return "a required pointer argument was NULL";
         case SSAO_ERROR_STRUCT_SIZE: return "a struct's size field matches no known version of that struct";
@@ -68,7 +70,7 @@ ssao_status SSAO_CALL api_preset_settings(ssao_preset preset, ssao_settings* out
     return guarded(nullptr, [&] {
         std::string why;
         ssao_settings resolved{};
-        const ssao_status st = ssao_impl::preset_settings(preset, resolved, why);
+        const ssao_status st = ssao_impl::preset_settings(ssao_impl::raw_enum(preset), resolved, why);
         if (st == SSAO_OK) ssao_impl::store_settings(resolved, *out);
         return st;
     });

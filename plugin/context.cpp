@@ -64,6 +64,37 @@ bool compile(ssao_context& ctx, GLenum type, const std::string& source, const ch
     return true;
 }
 
+// Points the program's samplers at their texture units. With GL 4.1's
+// glProgramUniform the host's current program is never touched. Without it
+// the program is made current for the calls; a host program flagged for
+// deletion is deleted by that and cannot be made current again (restoring
+// its name would raise GL_INVALID_VALUE and leave ours current), so then 0 is.
+void set_sampler_units(const GladGLContext& gl, GLuint program) {
+    const struct { const char* name; int unit; } samplers[] = {
+        {"u_depth_tex", SSAO_UNIT_DEPTH}, {"u_normal_tex", SSAO_UNIT_NORMAL},
+        {"u_noise_tex", SSAO_UNIT_NOISE}, {"u_ao_tex", SSAO_UNIT_AO}};
+    if (gl.ProgramUniform1i) {
+        for (const auto& s : samplers) {
+            const GLint loc = gl.GetUniformLocation(program, s.name);
+            if (loc >= 0) gl.ProgramUniform1i(program, loc, s.unit);
+        }
+        return;
+    }
+    GLint previous = 0;
+    gl.GetIntegerv(GL_CURRENT_PROGRAM, &previous);
+    if (previous != 0) {
+        GLint flagged = GL_FALSE;
+        gl.GetProgramiv(static_cast<GLuint>(previous), GL_DELETE_STATUS, &flagged);
+        if (flagged) previous = 0;
+    }
+    gl.UseProgram(program);
+    for (const auto& s : samplers) {
+        const GLint loc = gl.GetUniformLocation(program, s.name);
+        if (loc >= 0) gl.Uniform1i(loc, s.unit);
+    }
+    gl.UseProgram(static_cast<GLuint>(previous));
+}
+
 ssao_status link(ssao_context& ctx, const char* fragment_body, SharedCode shared, const char* name, GLuint& program) {
     const GladGLContext& gl = ctx.gl;
     GLuint vs = 0, fs = 0;
@@ -91,17 +122,7 @@ ssao_status link(ssao_context& ctx, const char* fragment_body, SharedCode shared
     if (frame_block != GL_INVALID_INDEX) gl.UniformBlockBinding(program, frame_block, SSAO_UBO_FRAME);
     const GLuint kernel_block = gl.GetUniformBlockIndex(program, "SsaoKernel");
     if (kernel_block != GL_INVALID_INDEX) gl.UniformBlockBinding(program, kernel_block, SSAO_UBO_KERNEL);
-    GLint previous = 0;
-    gl.GetIntegerv(GL_CURRENT_PROGRAM, &previous);
-    gl.UseProgram(program);
-    const struct { const char* name; int unit; } samplers[] = {
-        {"u_depth_tex", SSAO_UNIT_DEPTH}, {"u_normal_tex", SSAO_UNIT_NORMAL},
-        {"u_noise_tex", SSAO_UNIT_NOISE}, {"u_ao_tex", SSAO_UNIT_AO}};
-    for (const auto& s : samplers) {
-        const GLint loc = gl.GetUniformLocation(program, s.name);
-        if (loc >= 0) gl.Uniform1i(loc, s.unit);
-    }
-    gl.UseProgram(static_cast<GLuint>(previous));
+    set_sampler_units(gl, program);
     return SSAO_OK;
 }
 

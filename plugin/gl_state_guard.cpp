@@ -47,6 +47,9 @@ GlStateGuard::GlStateGuard(const GladGLContext& gl, const GlCaps& caps, GLuint u
         gl.GetInteger64i_v(GL_UNIFORM_BUFFER_SIZE, ubo_index_[i], &ubo_size_[i]);
     }
     gl.GetIntegerv(GL_VIEWPORT, viewport_);
+    // With viewport arrays index 0 may hold a sub-pixel (float) viewport,
+    // which the integer query rounds: it is saved and restored as floats too.
+    if (caps.viewports > 1) gl.GetFloati_v(GL_VIEWPORT, 0, viewport_array_[0]);
     gl.GetIntegerv(GL_SCISSOR_BOX, scissor_);
     scissor_test_ = gl.IsEnabled(GL_SCISSOR_TEST);
     for (int i = 1; i < std::min(caps.viewports, kMaxViewports); ++i) {
@@ -140,6 +143,7 @@ GlStateGuard::~GlStateGuard() {
         gl.ScissorIndexedv(v, scissor_array_[i]);
         if (scissor_test_array_[i]) gl.Enablei(GL_SCISSOR_TEST, v); else gl.Disablei(GL_SCISSOR_TEST, v);
     }
+    if (caps_.viewports > 1) gl.ViewportIndexedfv(0, viewport_array_[0]);
     set_enabled(gl, GL_DEPTH_TEST, depth_test_);
     set_enabled(gl, GL_STENCIL_TEST, stencil_test_);
     set_enabled(gl, GL_CULL_FACE, cull_face_);

@@ -4,6 +4,7 @@
 #include "inputs.h"
 
 #include "context.h"
+#include "raw_enum.h"
 
 #include <cmath>
 #include <string>
@@ -17,6 +18,12 @@ namespace {
 bool is_texture_2d(ssao_context& ctx, GLuint name) {
     if (name == 0 || !ctx.gl.IsTexture(name)) return false;
     if (ctx.caps.texture_target_query) {
+        // A buffer texture has no GL_TEXTURE_TARGET to query (asking raises
+        // GL_INVALID_OPERATION) but answers its level-0 buffer query: it has
+        // a data store, which a GL_TEXTURE_2D never has.
+        GLint store = 0;
+        ctx.gl.GetTextureLevelParameteriv(name, 0, GL_TEXTURE_BUFFER_DATA_STORE_BINDING, &store);
+        if (store != 0) return false;
         GLint target = 0;
         ctx.gl.GetTextureParameteriv(name, GL_TEXTURE_TARGET, &target);
         return target == GL_TEXTURE_2D;
@@ -35,6 +42,14 @@ bool bind_2d(const GladGLContext& gl, GLuint unit, GLuint name) {
     return static_cast<GLuint>(bound) == name;
 }
 
+// Is level 0 of the texture bound to GL_TEXTURE_2D (on the active unit) of
+// an integer format (GL_INT or GL_UNSIGNED_INT components)?
+bool has_integer_format(const GladGLContext& gl) {
+    GLint red_type = 0;
+    gl.GetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_RED_TYPE, &red_type);
+    return red_type == GL_INT || red_type == GL_UNSIGNED_INT;
+}
+
 void level0_size(const GladGLContext& gl, int& w, int& h) {
     gl.GetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_WIDTH, &w);
     gl.GetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_HEIGHT, &h);
@@ -43,11 +58,12 @@ void level0_size(const GladGLContext& gl, int& w, int& h) {
 }  // namespace
 
 ssao_status check_inputs(ssao_context& ctx, const ssao_inputs& in, AnalysedInputs& out) {
-    if (static_cast<int>(in.normal_space) < 0 || in.normal_space > SSAO_NORMAL_SPACE_WORLD)
+    // Raw bits first (raw_enum.h): a caller may store any 32-bit value.
+    if (!raw_enum_at_most(in.normal_space, SSAO_NORMAL_SPACE_WORLD))
         return ctx.fail(SSAO_ERROR_INVALID_ENUM, "inputs.normal_space is not an ssao_normal_space");
-    if (static_cast<int>(in.normal_packing) < 0 || in.normal_packing > SSAO_NORMAL_PACKING_SIGNED)
+    if (!raw_enum_at_most(in.normal_packing, SSAO_NORMAL_PACKING_SIGNED))
         return ctx.fail(SSAO_ERROR_INVALID_ENUM, "inputs.normal_packing is not an ssao_normal_packing");
-    if (static_cast<int>(in.clip_range) < 0 || in.clip_range > SSAO_CLIP_ZERO_TO_ONE)
+    if (!raw_enum_at_most(in.clip_range, SSAO_CLIP_ZERO_TO_ONE))
         return ctx.fail(SSAO_ERROR_INVALID_ENUM, "inputs.clip_range is not an ssao_clip_range");
     const bool world_normals = in.normal_space == SSAO_NORMAL_SPACE_WORLD;
     if (world_normals) {
@@ -109,17 +125,16 @@ ssao_status inspect_textures(ssao_context& ctx, const ssao_inputs& in, GlStateGu
         return ctx.fail(SSAO_ERROR_INVALID_TEXTURE, "inputs.normal_texture is not a GL_TEXTURE_2D (it did not bind)");
     int nw = 0, nh = 0;
     level0_size(gl, nw, nh);
-    GLint red_bits = 0, blue_bits = 0, red_type = 0;
+    GLint red_bits = 0, blue_bits = 0;
     gl.GetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_RED_SIZE, &red_bits);
     gl.GetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_BLUE_SIZE, &blue_bits);
-    gl.GetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_RED_TYPE, &red_type);
     if (nw != dw || nh != dh)
         return ctx.fail(SSAO_ERROR_INVALID_TEXTURE, "inputs.normal_texture is " + std::to_string(nw) + "x" +
                                                         std::to_string(nh) + " but the depth texture is " +
                                                         std::to_string(dw) + "x" + std::to_string(dh));
     if (red_bits <= 0 || blue_bits <= 0)
         return ctx.fail(SSAO_ERROR_UNSUPPORTED_FORMAT, "inputs.normal_texture needs three colour channels (x, y, z)");
-    if (red_type == GL_INT || red_type == GL_UNSIGNED_INT)
+    if (has_integer_format(gl))
         return ctx.fail(SSAO_ERROR_UNSUPPORTED_FORMAT,
                         "inputs.normal_texture has an integer format; a float, unorm or snorm one is needed");
 
@@ -141,6 +156,11 @@ ssao_status inspect_textures(ssao_context& ctx, const ssao_inputs& in, GlStateGu
         if (ow < vx + vw || oh < vy + vh)
             return ctx.fail(SSAO_ERROR_INVALID_SIZE, "inputs.output_texture (" + std::to_string(ow) + "x" +
                                                          std::to_string(oh) + ") does not contain the viewport");
+        // AO is a float written through a float output: an integer texture
+        // (R32UI, RGBA8UI) would be complete but receive float bit patterns.
+        if (has_integer_format(gl))
+            return ctx.fail(SSAO_ERROR_UNSUPPORTED_FORMAT,
+                            "inputs.output_texture has an integer format; a float, unorm or snorm one is needed");
         // Checked before anything of the library's changes: a refused call
         // leaves the library's own output as it was.
         gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, in.output_texture, 0);

@@ -1,9 +1,42 @@
 #include "projection.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
 namespace ssao_impl {
+
+namespace {
+
+// The shaders get the matrix and its inverse as 32-bit floats and multiply
+// view positions by them: an element past kMaxElement overflows to inf with
+// ordinary coordinates, and one below FLT_MIN is a denormal, which GPUs flush
+// to zero. Either way every pixel would come out wrong (all 1.0) with an OK
+// status. Elements negligible beside the matrix's largest (rounding residue
+// of the inverse) may flush to zero harmlessly.
+constexpr double kMaxElement = 1e30;
+
+bool usable_in_float(const glm::dmat4& m, std::string& why) {
+    double largest = 0.0;
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r) largest = std::max(largest, std::abs(m[c][r]));
+    for (int c = 0; c < 4; ++c) {
+        for (int r = 0; r < 4; ++r) {
+            const double v = std::abs(m[c][r]);
+            const bool too_large = !(v <= kMaxElement);
+            const bool denormal = v > 0.0 && v < double(std::numeric_limits<float>::min()) && v >= largest * 1e-20;
+            if (too_large || denormal) {
+                why = "the projection (or its inverse) has an element of magnitude " + std::to_string(v) +
+                      ", outside what 32-bit float shaders can use (" +
+                      (too_large ? "above 1e30, it overflows" : "a denormal, flushed to zero") + ")";
+                return false;
+            }
+        }
+    }
+    return true;
+}
+
+}  // namespace
 
 ssao_status analyse_projection(const float m[16], ssao_clip_range clip, ProjectionInfo& out,
                                std::string& why) {
@@ -48,6 +81,7 @@ ssao_status analyse_projection(const float m[16], ssao_clip_range clip, Projecti
         return SSAO_ERROR_INVALID_PROJECTION;
     }
     p.inverse = glm::inverse(p.proj);
+    if (!usable_in_float(p.proj, why) || !usable_in_float(p.inverse, why)) return SSAO_ERROR_INVALID_PROJECTION;
 
     // ndc_z as a function of the view distance t (z = -t).
     if (!p.orthographic) {

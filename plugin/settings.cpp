@@ -1,19 +1,17 @@
 #include "settings.h"
 
+#include "raw_enum.h"
+
+#include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
 
 namespace ssao_impl {
 
 namespace {
 
 bool finite(float v) { return std::isfinite(v); }
-
-template <typename E>
-bool enum_in(E value, int first, int last) {
-    const int v = static_cast<int>(value);
-    return v >= first && v <= last;
-}
 
 ssao_status fail(std::string& why, ssao_status status, const std::string& what) {
     why = what;
@@ -69,21 +67,21 @@ ssao_status resolve_settings(const ssao_settings& caller, ssao_settings& out, st
                     "strength must be in [0, 8] (0 = default 1) or SSAO_STRENGTH_OFF");
     if (r.strength == 0.0f) r.strength = kDefaultStrength;
 
-    if (!enum_in(r.kernel_shape, 0, SSAO_KERNEL_SEPARABLE))
+    if (!raw_enum_at_most(r.kernel_shape, SSAO_KERNEL_SEPARABLE))
         return fail(why, SSAO_ERROR_INVALID_ENUM, "kernel_shape is not an ssao_kernel_shape");
     if (r.kernel_shape == SSAO_KERNEL_DEFAULT) r.kernel_shape = SSAO_KERNEL_HEMISPHERE;
 
-    if (!enum_in(r.distribution, 0, SSAO_DISTRIBUTION_UNIFORM))
+    if (!raw_enum_at_most(r.distribution, SSAO_DISTRIBUTION_UNIFORM))
         return fail(why, SSAO_ERROR_INVALID_ENUM, "distribution is not an ssao_kernel_distribution");
     if (r.distribution == SSAO_DISTRIBUTION_DEFAULT) r.distribution = SSAO_DISTRIBUTION_ACCELERATING;
 
-    if (!enum_in(r.rotation, 0, SSAO_ROTATION_NONE))
+    if (!raw_enum_at_most(r.rotation, SSAO_ROTATION_NONE))
         return fail(why, SSAO_ERROR_INVALID_ENUM, "rotation is not an ssao_rotation");
     if (r.rotation == SSAO_ROTATION_DEFAULT) r.rotation = SSAO_ROTATION_NOISE_4X4;
 
     if (r.seed == 0) r.seed = kDefaultSeed;
 
-    if (!enum_in(r.blur, 0, SSAO_BLUR_NONE))
+    if (!raw_enum_at_most(r.blur, SSAO_BLUR_NONE))
         return fail(why, SSAO_ERROR_INVALID_ENUM, "blur is not an ssao_blur");
     if (r.blur == SSAO_BLUR_DEFAULT) r.blur = SSAO_BLUR_DEPTH_AWARE;
 
@@ -100,22 +98,27 @@ ssao_status resolve_settings(const ssao_settings& caller, ssao_settings& out, st
         return fail(why, SSAO_ERROR_INVALID_VALUE, "blur_depth_tolerance must be finite and in (0, 1]");
     if (r.blur_depth_tolerance == 0.0f) r.blur_depth_tolerance = kDefaultBlurTolerance;
 
-    if (!enum_in(r.output_format, 0, SSAO_OUTPUT_R16F))
+    if (!raw_enum_at_most(r.output_format, SSAO_OUTPUT_R16F))
         return fail(why, SSAO_ERROR_INVALID_ENUM, "output_format is not an ssao_output_format");
     if (r.output_format == SSAO_OUTPUT_DEFAULT) r.output_format = SSAO_OUTPUT_R8;
 
-    if (!enum_in(r.method, 0, SSAO_METHOD_VISIBILITY))
+    if (!raw_enum_at_most(r.method, SSAO_METHOD_VISIBILITY))
         return fail(why, SSAO_ERROR_INVALID_ENUM, "method is not an ssao_method");
     if (r.method == SSAO_METHOD_DEFAULT) r.method = kDefaultMethod;
 
     if (!finite(r.bias) || r.bias < 0.0f)
         return fail(why, SSAO_ERROR_INVALID_VALUE, "bias must be a finite number >= 0");
+    // The derived bias must stay > 0 as the header promises: for a tiny
+    // (denormal) radius the product underflows to 0 or to a denormal, which
+    // shaders flush to 0, so it is raised to the smallest normal float.
     if (r.bias == 0.0f)
-        r.bias = (r.method == SSAO_METHOD_VISIBILITY ? kDefaultVisibilityBiasFraction : kDefaultBiasFraction) * r.radius;
+        r.bias = std::max((r.method == SSAO_METHOD_VISIBILITY ? kDefaultVisibilityBiasFraction : kDefaultBiasFraction) *
+                              r.radius,
+                          std::numeric_limits<float>::min());
 
     if (!finite(r.thickness) || r.thickness < 0.0f)
         return fail(why, SSAO_ERROR_INVALID_VALUE, "thickness must be a finite number > 0");
-    if (r.thickness == 0.0f) r.thickness = kDefaultThicknessFraction * r.radius;
+    if (r.thickness == 0.0f) r.thickness = std::max(kDefaultThicknessFraction * r.radius, std::numeric_limits<float>::min());
 
     if (r.step_count == 0) r.step_count = kDefaultSteps;
     if (r.step_count > SSAO_MAX_STEPS)
@@ -126,7 +129,9 @@ ssao_status resolve_settings(const ssao_settings& caller, ssao_settings& out, st
     return SSAO_OK;
 }
 
-ssao_status preset_settings(ssao_preset preset, ssao_settings& out, std::string& why) {
+ssao_status preset_settings(uint32_t raw_preset, ssao_settings& out, std::string& why) {
+    if (raw_preset > SSAO_PRESET_ULTRA) return fail(why, SSAO_ERROR_INVALID_ENUM, "preset is not an ssao_preset");
+    const auto preset = static_cast<ssao_preset>(raw_preset);
     ssao_settings s{};
     s.size = sizeof(ssao_settings);
     // Chosen from the Pareto front of error against GPU time that ssao-bench

@@ -47,8 +47,9 @@ void store_settings(const ssao_settings& full, ssao_settings& caller);
 // the status and a sentence in `why`, and leaves `out` untouched.
 ssao_status resolve_settings(const ssao_settings& in, ssao_settings& out, std::string& why);
 
-// A preset, resolved.
-ssao_status preset_settings(ssao_preset preset, ssao_settings& out, std::string& why);
+// A preset, resolved. Takes the preset's raw 32 bits (raw_enum.h): any value
+// a C caller passes is checked before it is read as an ssao_preset.
+ssao_status preset_settings(uint32_t raw_preset, ssao_settings& out, std::string& why);
 
 // Strength as a number (SSAO_STRENGTH_OFF -> 0).
 inline float effective_strength(const ssao_settings& resolved) {

@@ -21,6 +21,8 @@
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <new>
+#include <stdexcept>
 #include <string>
 #include <sys/stat.h>
 #include <vector>
@@ -65,7 +67,7 @@ int usage_error(const std::string& m) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
+static int run(int argc, char** argv) {
     std::vector<std::string> positional;
     std::string stderr_path, depth_path, limit_path, csv_path, label;
     int band = 3;
@@ -221,4 +223,17 @@ int main(int argc, char** argv) {
         }
     }
     return 0;
+}
+
+// Images are allocated at the requested size, so a large --width/--height (or
+// a huge input) can run out of memory: say so instead of aborting.
+int main(int argc, char** argv) {
+    try {
+        return run(argc, argv);
+    } catch (const std::bad_alloc&) {
+        std::fputs("ssao-error: out of memory (the images are too large for this machine).\n", stderr);
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "ssao-error: unexpected failure (%s).\n", e.what());
+    }
+    return 1;
 }

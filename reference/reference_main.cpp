@@ -34,6 +34,8 @@
 #include <limits>
 #include <map>
 #include <sstream>
+#include <new>
+#include <stdexcept>
 #include <string>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -202,7 +204,7 @@ bool make_dirs(const std::string& path, std::string& error) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
+static int run(int argc, char** argv) {
     Options o;
     std::string error;
     switch (parse(argc, argv, o, error)) {
@@ -379,4 +381,17 @@ int main(int argc, char** argv) {
     }
     for (const auto& p : written) std::printf("wrote     %s\n", p.c_str());
     return 0;
+}
+
+// Images are allocated at the requested size, so a large --width/--height (or
+// a huge input) can run out of memory: say so instead of aborting.
+int main(int argc, char** argv) {
+    try {
+        return run(argc, argv);
+    } catch (const std::bad_alloc&) {
+        std::fputs("ssao-reference: out of memory (the image size or the scene is too large for this machine).\n", stderr);
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "ssao-reference: unexpected failure (%s).\n", e.what());
+    }
+    return 1;
 }

@@ -11,6 +11,7 @@ packages=(
   python3-moderngl python3-numpy          # the Python host and its tests
   libglfw3-dev xvfb xauth                # ssao-viewer and its tests in a virtual X server
   python3-pil fonts-dejavu-core          # scripts/make-pictures.sh
+  clang-14 libclang-rt-14-dev            # scripts/run-sanitizers.sh: ASan/UBSan/TSan and libFuzzer
 )
 missing=()
 for p in "${packages[@]}"; do

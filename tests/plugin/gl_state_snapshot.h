@@ -1,10 +1,13 @@
 // gl_state_snapshot.h - reads every piece of GL state the plugin promises to
 // leave as it found it (the list in include/ssao/ssao.h), by name, so a test
-// can say exactly which one changed.
+// can say exactly which one changed. Beyond that list it reads the state a
+// real engine leaves set and execute must not disturb either (issue 11).
 #pragma once
 
 #include <glad/gl.h>
 
+#include <cstdint>
+#include <cstring>
 #include <map>
 #include <string>
 
@@ -21,6 +24,16 @@ inline Snapshot snapshot(GladGLContext& gl, int units = 4) {
         for (int i = 0; i < n; ++i) s[name + "[" + std::to_string(i) + "]"] = v[i];
     };
     auto enabled = [&](const char* name, GLenum e) { s[name] = gl.IsEnabled(e); };
+    // Floats compared by their bits: a viewport of 3.25 must not come back as 3.
+    auto getf = [&](const std::string& name, GLenum e, int n) {
+        GLfloat v[4] = {};
+        gl.GetFloatv(e, v);
+        for (int i = 0; i < n; ++i) {
+            uint32_t bits = 0;
+            std::memcpy(&bits, &v[i], sizeof bits);
+            s[name + "[" + std::to_string(i) + "]"] = bits;
+        }
+    };
     geti("draw_framebuffer", GL_DRAW_FRAMEBUFFER_BINDING);
     geti("read_framebuffer", GL_READ_FRAMEBUFFER_BINDING);
     geti("program", GL_CURRENT_PROGRAM);
@@ -96,6 +109,72 @@ inline Snapshot snapshot(GladGLContext& gl, int units = 4) {
         geti("clip_origin", GL_CLIP_ORIGIN);
         geti("clip_depth_mode", GL_CLIP_DEPTH_MODE);
     }
+    // What a real engine leaves set between passes (issue 11).
+    getf("viewport_f", GL_VIEWPORT, 4);  // index 0 exactly, sub-pixel included
+    enabled("primitive_restart", GL_PRIMITIVE_RESTART);
+    enabled("primitive_restart_fixed_index", GL_PRIMITIVE_RESTART_FIXED_INDEX);
+    geti("primitive_restart_index", GL_PRIMITIVE_RESTART_INDEX);
+    enabled("depth_clamp", GL_DEPTH_CLAMP);
+    enabled("program_point_size", GL_PROGRAM_POINT_SIZE);
+    getf("depth_range", GL_DEPTH_RANGE, 2);
+    getf("line_width", GL_LINE_WIDTH, 1);
+    geti("blend_src_alpha", GL_BLEND_SRC_ALPHA);
+    geti("blend_dst_alpha", GL_BLEND_DST_ALPHA);
+    geti("blend_equation_alpha", GL_BLEND_EQUATION_ALPHA);
+    getf("blend_color", GL_BLEND_COLOR, 4);
+    for (GLenum e : {GL_STENCIL_FUNC, GL_STENCIL_REF, GL_STENCIL_VALUE_MASK, GL_STENCIL_FAIL,
+                     GL_STENCIL_PASS_DEPTH_FAIL, GL_STENCIL_PASS_DEPTH_PASS, GL_STENCIL_BACK_FUNC, GL_STENCIL_BACK_REF,
+                     GL_STENCIL_BACK_VALUE_MASK, GL_STENCIL_BACK_FAIL, GL_STENCIL_BACK_PASS_DEPTH_FAIL,
+                     GL_STENCIL_BACK_PASS_DEPTH_PASS})
+        geti(("stencil_0x" + std::to_string(e)).c_str(), e);
+    getf("clear_color", GL_COLOR_CLEAR_VALUE, 4);
+    getf("clear_depth", GL_DEPTH_CLEAR_VALUE, 1);
+    geti("clear_stencil", GL_STENCIL_CLEAR_VALUE);
+    geti("transform_feedback", GL_TRANSFORM_FEEDBACK_BINDING);
+    const GLenum pack[] = {GL_PACK_SWAP_BYTES, GL_PACK_LSB_FIRST, GL_PACK_ROW_LENGTH, GL_PACK_IMAGE_HEIGHT,
+                           GL_PACK_SKIP_ROWS, GL_PACK_SKIP_PIXELS, GL_PACK_SKIP_IMAGES, GL_PACK_ALIGNMENT};
+    for (size_t i = 0; i < sizeof pack / sizeof pack[0]; ++i) {
+        GLint v = 0;
+        gl.GetIntegerv(pack[i], &v);
+        s["pack_store" + std::to_string(i)] = v;
+    }
+    // Draw and read buffers of whatever framebuffer the host has bound.
+    GLint max_draw_buffers = 0;
+    gl.GetIntegerv(GL_MAX_DRAW_BUFFERS, &max_draw_buffers);
+    for (GLint i = 0; i < max_draw_buffers; ++i) {
+        GLint v = 0;
+        gl.GetIntegerv(GL_DRAW_BUFFER0 + static_cast<GLenum>(i), &v);
+        s["draw_buffer" + std::to_string(i)] = v;
+        GLboolean m[4] = {};
+        gl.GetBooleani_v(GL_COLOR_WRITEMASK, static_cast<GLuint>(i), m);
+        s["color_mask_all" + std::to_string(i)] = m[0] | m[1] << 1 | m[2] << 2 | m[3] << 3;
+        s["blend_all" + std::to_string(i)] = gl.IsEnabledi(GL_BLEND, static_cast<GLuint>(i));
+    }
+    geti("read_buffer", GL_READ_BUFFER);
+    enabled("texture_cube_map_seamless", GL_TEXTURE_CUBE_MAP_SEAMLESS);
+    geti("provoking_vertex", GL_PROVOKING_VERTEX);
+    enabled("sample_coverage", GL_SAMPLE_COVERAGE);
+    getf("sample_coverage_value", GL_SAMPLE_COVERAGE_VALUE, 1);
+    {
+        GLboolean invert = 0;
+        gl.GetBooleanv(GL_SAMPLE_COVERAGE_INVERT, &invert);
+        s["sample_coverage_invert"] = invert;
+    }
+    {
+        GLint mask = 0;  // indexed state: word 0 of the sample mask
+        gl.GetIntegeri_v(GL_SAMPLE_MASK_VALUE, 0, &mask);
+        s["sample_mask_value0"] = mask;
+    }
+    geti("depth_func", GL_DEPTH_FUNC);
+    geti("cull_face_mode", GL_CULL_FACE_MODE);
+    geti("front_face", GL_FRONT_FACE);
+    geti("logic_op_mode", GL_LOGIC_OP_MODE);
+    getf("polygon_offset_factor", GL_POLYGON_OFFSET_FACTOR, 1);
+    getf("polygon_offset_units", GL_POLYGON_OFFSET_UNITS, 1);
+    enabled("polygon_offset_line", GL_POLYGON_OFFSET_LINE);
+    enabled("line_smooth", GL_LINE_SMOOTH);
+    enabled("polygon_smooth", GL_POLYGON_SMOOTH);
+    enabled("sample_alpha_to_one", GL_SAMPLE_ALPHA_TO_ONE);
     const GLenum unpack[] = {GL_UNPACK_SWAP_BYTES, GL_UNPACK_LSB_FIRST, GL_UNPACK_ROW_LENGTH, GL_UNPACK_IMAGE_HEIGHT,
                              GL_UNPACK_SKIP_ROWS, GL_UNPACK_SKIP_PIXELS, GL_UNPACK_SKIP_IMAGES, GL_UNPACK_ALIGNMENT,
                              GL_PACK_ALIGNMENT, GL_PACK_ROW_LENGTH};

@@ -180,6 +180,63 @@ TEST_CASE("background pixels exit early with exactly 1 and the passes run are on
 
 namespace {
 
+// Everything else an engine leaves set (issue 11), each to a non-default value.
+// The host framebuffer must be bound (its draw and read buffers are set).
+void disturb_engine_state(GladGLContext& gl) {
+    gl.ViewportIndexedf(0, 3.25f, 5.5f, 17.75f, 19.125f);  // sub-pixel viewport at index 0
+    gl.Enable(GL_PRIMITIVE_RESTART);
+    gl.PrimitiveRestartIndex(0xfffe);
+    gl.Enable(GL_PRIMITIVE_RESTART_FIXED_INDEX);
+    gl.Enable(GL_DEPTH_CLAMP);
+    gl.Enable(GL_PROGRAM_POINT_SIZE);
+    gl.DepthRange(0.25, 0.75);
+    gl.LineWidth(2.0f);
+    gl.BlendFuncSeparate(GL_SRC_COLOR, GL_DST_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_CONSTANT_COLOR);
+    gl.BlendEquationSeparate(GL_FUNC_REVERSE_SUBTRACT, GL_MAX);
+    gl.BlendColor(0.1f, 0.2f, 0.3f, 0.4f);
+    gl.StencilFuncSeparate(GL_FRONT, GL_LEQUAL, 3, 0x7f);
+    gl.StencilFuncSeparate(GL_BACK, GL_GREATER, 5, 0x3f);
+    gl.StencilOpSeparate(GL_FRONT, GL_INCR, GL_DECR, GL_INVERT);
+    gl.StencilOpSeparate(GL_BACK, GL_REPLACE, GL_INCR_WRAP, GL_DECR_WRAP);
+    gl.ClearColor(0.5f, 0.25f, 0.125f, 0.75f);
+    gl.ClearDepth(0.5);
+    gl.ClearStencil(7);
+    GLuint feedback = 0;
+    gl.GenTransformFeedbacks(1, &feedback);
+    gl.BindTransformFeedback(GL_TRANSFORM_FEEDBACK, feedback);
+    GLuint pack = 0;
+    gl.GenBuffers(1, &pack);
+    gl.BindBuffer(GL_PIXEL_PACK_BUFFER, pack);
+    gl.PixelStorei(GL_PACK_ROW_LENGTH, 9);
+    gl.PixelStorei(GL_PACK_SKIP_ROWS, 1);
+    gl.PixelStorei(GL_PACK_SKIP_PIXELS, 2);
+    gl.PixelStorei(GL_PACK_IMAGE_HEIGHT, 3);
+    gl.PixelStorei(GL_PACK_SKIP_IMAGES, 4);
+    gl.PixelStorei(GL_PACK_SWAP_BYTES, GL_TRUE);
+    gl.PixelStorei(GL_PACK_LSB_FIRST, GL_TRUE);
+    const GLenum draw_buffers[3] = {GL_NONE, GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT2};
+    gl.DrawBuffers(3, draw_buffers);
+    gl.ReadBuffer(GL_COLOR_ATTACHMENT3);
+    gl.Enable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
+    gl.ProvokingVertex(GL_FIRST_VERTEX_CONVENTION);
+    gl.Enable(GL_SAMPLE_COVERAGE);
+    gl.SampleCoverage(0.5f, GL_TRUE);
+    gl.SampleMaski(0, 0x5);
+    gl.DepthFunc(GL_GEQUAL);
+    gl.FrontFace(GL_CW);
+    gl.LogicOp(GL_XOR);
+    gl.PolygonOffset(2.0f, 3.0f);
+    gl.Enable(GL_POLYGON_OFFSET_LINE);
+    gl.Enable(GL_SAMPLE_ALPHA_TO_ONE);
+    GLint max_draw_buffers = 0;
+    gl.GetIntegerv(GL_MAX_DRAW_BUFFERS, &max_draw_buffers);
+    for (GLint i = 2; i < max_draw_buffers; ++i) {  // every draw buffer's own mask and blend
+        const GLuint b = static_cast<GLuint>(i);
+        gl.ColorMaski(b, i & 1, (i >> 1) & 1, (i >> 2) & 1, GL_FALSE);
+        if (i % 3 == 0) gl.Enablei(GL_BLEND, b);
+    }
+}
+
 // Puts every listed piece of state into a non-default value a host might use.
 void disturb_state(GladGLContext& gl, GLuint host_fbo, GLuint host_vao, GLuint host_program, GLuint* host_objects) {
     gl.BindFramebuffer(GL_DRAW_FRAMEBUFFER, host_fbo);
@@ -232,6 +289,7 @@ void disturb_state(GladGLContext& gl, GLuint host_fbo, GLuint host_vao, GLuint h
     gl.PixelStorei(GL_UNPACK_SKIP_ROWS, 2);
     gl.PixelStorei(GL_UNPACK_SKIP_PIXELS, 3);
     gl.PixelStorei(GL_PACK_ALIGNMENT, 2);
+    disturb_engine_state(gl);
 }
 
 // A host's own (linked) program: glUseProgram refuses unlinked ones.
@@ -286,16 +344,21 @@ TEST_CASE("every listed piece of GL state is identical before and after execute,
     REQUIRE(fx.api().execute(fx.ctx(), &in, &out) == SSAO_OK);
     REQUIRE(fx.api().execute(fx.ctx(), &in, &out) == SSAO_OK);
     const testgl::Snapshot after = testgl::snapshot(gl);
-    for (const auto& [name, value] : before) {
-        CAPTURE(name);
-        CHECK(after.at(name) == value);
+    for (const auto& entry : before) {
+        CAPTURE(entry.first);
+        CHECK(after.at(entry.first) == entry.second);
     }
     // The host's odd state (upper-left origin, line mode, scissor, masks) did not leak into the AO.
     gl.BindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
+    gl.BindBuffer(GL_PIXEL_PACK_BUFFER, 0);  // the read-back below packs into client memory
+    for (GLenum e : {GL_PACK_ROW_LENGTH, GL_PACK_SKIP_ROWS, GL_PACK_SKIP_PIXELS, GL_PACK_IMAGE_HEIGHT,
+                     GL_PACK_SKIP_IMAGES, GL_PACK_SWAP_BYTES, GL_PACK_LSB_FIRST})
+        gl.PixelStorei(e, 0);
     gl.PixelStorei(GL_PACK_ALIGNMENT, 4);
     if (gl.ClipControl) gl.ClipControl(GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE);
     const auto ao = fx.read_red(out.texture, g.width, g.height);
     for (size_t i = 0; i < ao.size(); ++i) CHECK(std::abs(ao[i] - clean.ao[i]) < 1e-6f);
+    for (const std::string& e : fx.gl_errors()) MESSAGE(e);
     CHECK(fx.gl_errors().empty());
 }
 

@@ -188,6 +188,44 @@ TEST_CASE("without KHR_debug (3.3, extension removed) execute runs as before and
     CHECK(code == 0);
 }
 
+TEST_CASE("GL 3.3: create_context with the host's program flagged for deletion leaves program 0, without a GL error") {
+    // Without glProgramUniform the plugin binds its programs to set their
+    // samplers; the host's flagged program is deleted by that, so 0 is
+    // restored rather than its dead name (GL_INVALID_VALUE before).
+    setenv("MESA_GL_VERSION_OVERRIDE", "3.3", 1);
+    testgl::Fixture fx(3, 3);
+    auto& gl = fx.gl();
+    const GLuint host = testgl::make_host_program(gl);
+    gl.UseProgram(host);
+    gl.DeleteProgram(host);
+    ssao_context_desc desc{};
+    desc.size = sizeof desc;
+    desc.get_proc_address = &eglctx::Context::get_proc;
+    ssao_context* second = nullptr;
+    REQUIRE(fx.api().create_context(&desc, &second) == SSAO_OK);
+    GLint current = -1;
+    gl.GetIntegerv(GL_CURRENT_PROGRAM, &current);
+    CHECK(current == 0);
+    CHECK(fx.gl_errors().empty());
+    // Its samplers were still set: it renders the same AO as the fixture's context.
+    const auto proj = analytic::perspective(kFov, 1.0, 0.1, 100.0);
+    const GBuffer g = analytic::render(crease_scene(), proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, 16, 16);
+    const auto reference = fx.run(g, proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE);
+    REQUIRE(reference.status == SSAO_OK);
+    const GLuint depth = fx.make_depth(GL_DEPTH_COMPONENT32F, 16, 16, g.depth);
+    const GLuint normal = fx.make_normals(GL_RGBA16F, 16, 16, g.normal);
+    const ssao_inputs in = fx.inputs(depth, normal, proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE);
+    ssao_output out{};
+    out.size = sizeof out;
+    REQUIRE(fx.api().execute(second, &in, &out) == SSAO_OK);
+    const auto ao = fx.read_red(out.texture, 16, 16);
+    int differing = 0;
+    for (size_t i = 0; i < ao.size(); ++i) differing += std::abs(ao[i] - reference.ao[i]) > 1e-6f;
+    CHECK(differing == 0);
+    CHECK(fx.api().destroy_context(second) == SSAO_OK);
+    CHECK(fx.gl_errors().empty());
+}
+
 int main(int argc, char** argv) {
     if (argc == 2 && std::strcmp(argv[1], "--child-without-khr-debug") == 0) return child_without_khr_debug();
     doctest::Context context(argc, argv);

@@ -1,6 +1,7 @@
 #include "gl_fixture.h"
 
 #include <stdexcept>
+#include <utility>
 
 namespace testgl {
 
@@ -15,6 +16,24 @@ void DebugErrors::callback(GLenum /*source*/, GLenum type, GLuint /*id*/, GLenum
                            const GLchar* message, const void* user) {
     if (type == GL_DEBUG_TYPE_ERROR || type == GL_DEBUG_TYPE_UNDEFINED_BEHAVIOR)
         static_cast<DebugErrors*>(const_cast<void*>(user))->messages_.push_back(message);
+}
+
+GLuint make_host_program(GladGLContext& gl) {
+    const char* vs = "#version 330 core\nvoid main() { gl_Position = vec4(0.0); }\n";
+    const char* fs = "#version 330 core\nout vec4 c;\nvoid main() { c = vec4(1.0); }\n";
+    const GLuint program = gl.CreateProgram();
+    for (auto [type, text] : {std::pair<GLenum, const char*>{GL_VERTEX_SHADER, vs}, {GL_FRAGMENT_SHADER, fs}}) {
+        const GLuint sh = gl.CreateShader(type);
+        gl.ShaderSource(sh, 1, &text, nullptr);
+        gl.CompileShader(sh);
+        gl.AttachShader(program, sh);
+        gl.DeleteShader(sh);
+    }
+    gl.LinkProgram(program);
+    GLint ok = 0;
+    gl.GetProgramiv(program, GL_LINK_STATUS, &ok);
+    if (!ok) throw std::runtime_error("the host's test program did not link");
+    return program;
 }
 
 std::unique_ptr<eglctx::Context> make_debug_context(int major, int minor) {

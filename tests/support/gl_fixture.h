@@ -29,6 +29,9 @@ private:
     std::vector<std::string> messages_;
 };
 
+// A linked GLSL 3.30 program of the host's own (draws nothing useful), or an exception.
+GLuint make_host_program(GladGLContext& gl);
+
 // A debug EGL context (4.5 core unless asked otherwise) or an exception.
 std::unique_ptr<eglctx::Context> make_debug_context(int major = 4, int minor = 5);
 

@@ -279,6 +279,33 @@ TEST_CASE("abi: execute rejects missing or foreign or wrong-target textures") {
     expect_execute_fails(f, in, SSAO_ERROR_INVALID_SIZE, "output_texture");
     in.output_texture = make_depth(gl, kW, kH, 0.5f);
     expect_execute_fails(f, in, SSAO_ERROR_UNSUPPORTED_FORMAT, "output_texture");
+    // Integer outputs are complete colour attachments but would get float
+    // bit patterns (accepted before).
+    for (GLenum internal : {GL_R32UI, GL_RGBA8UI, GL_R16I}) {
+        CAPTURE(internal);
+        in.output_texture = make_color(gl, kW, kH, internal);
+        expect_execute_fails(f, in, SSAO_ERROR_UNSUPPORTED_FORMAT, "integer");
+    }
+
+    // A buffer texture: refused without a GL error, even where GL 4.5 can
+    // query targets (its target query raised GL_INVALID_OPERATION before).
+    GLuint buffer = 0, buffer_texture = 0;
+    gl.GenBuffers(1, &buffer);
+    gl.BindBuffer(GL_TEXTURE_BUFFER, buffer);
+    gl.BufferData(GL_TEXTURE_BUFFER, 1024, nullptr, GL_STATIC_DRAW);
+    gl.BindBuffer(GL_TEXTURE_BUFFER, 0);
+    gl.GenTextures(1, &buffer_texture);
+    gl.BindTexture(GL_TEXTURE_BUFFER, buffer_texture);
+    gl.TexBuffer(GL_TEXTURE_BUFFER, GL_R32F, buffer);
+    gl.BindTexture(GL_TEXTURE_BUFFER, 0);
+    in = scene.inputs;
+    in.depth_texture = buffer_texture;
+    expect_execute_fails(f, in, SSAO_ERROR_INVALID_TEXTURE, "depth_texture");
+    in = scene.inputs;
+    in.output_texture = buffer_texture;
+    expect_execute_fails(f, in, SSAO_ERROR_INVALID_TEXTURE, "output_texture");
+    gl.DeleteTextures(1, &buffer_texture);
+    gl.DeleteBuffers(1, &buffer);
 }
 
 TEST_CASE("abi: execute rejects a colour texture as depth (UNSUPPORTED_FORMAT) and accepts every depth format") {
@@ -367,6 +394,13 @@ TEST_CASE("abi: execute rejects bad projections and view matrices and enums") {
     in = scene.inputs;
     in.projection[14] = 0.0f;  // singular: no depth offset
     expect_execute_fails(f, in, SSAO_ERROR_INVALID_PROJECTION, "projection");
+    // Invertible in double but useless in the shaders' floats (OK and all 1.0 before).
+    in = scene.inputs;
+    in.projection[0] = in.projection[5] = 1e-40f;  // denormal diagonal
+    expect_execute_fails(f, in, SSAO_ERROR_INVALID_PROJECTION, "32-bit float");
+    in = scene.inputs;
+    in.projection[0] = in.projection[5] = 3e38f;
+    expect_execute_fails(f, in, SSAO_ERROR_INVALID_PROJECTION, "32-bit float");
 
     // World-space normals read view_matrix, which must be finite.
     in = scene.inputs;
@@ -646,6 +680,32 @@ TEST_CASE("abi: destroy_context deletes every GL object the plugin made") {
     // The host's textures are untouched.
     CHECK(gl.IsTexture(scene.depth) == GL_TRUE);
     CHECK(gl.IsTexture(scene.normal) == GL_TRUE);
+}
+
+TEST_CASE("abi: create_context with the host's program flagged for deletion keeps it current, without a GL error") {
+    // Before: create_context made its programs current to set their
+    // samplers, then restored the host's name, already deleted by then
+    // (GL_INVALID_VALUE), leaving its own program current.
+    GlFixture f;  // fails the test on any GL error
+    GladGLContext& gl = f.gl();
+    const GLuint host = testgl::make_host_program(gl);
+    gl.UseProgram(host);
+    gl.DeleteProgram(host);  // flagged: lives while current
+    ssao_context_desc desc = sized<ssao_context_desc>();
+    desc.get_proc_address = eglctx::Context::get_proc;
+    ssao_context* second = nullptr;
+    REQUIRE(api().create_context(&desc, &second) == SSAO_OK);
+    GLint current = 0;
+    gl.GetIntegerv(GL_CURRENT_PROGRAM, &current);
+    CHECK(static_cast<GLuint>(current) == host);  // GL 4.5: set through glProgramUniform, never unbound
+    GLint flagged = 0;
+    gl.GetProgramiv(host, GL_DELETE_STATUS, &flagged);
+    CHECK(flagged == GL_TRUE);
+    // The new context works: its samplers point at the right units.
+    Scene scene(gl, kW, kH);
+    ssao_output out = sized<ssao_output>();
+    CHECK(api().execute(second, &scene.inputs, &out) == SSAO_OK);
+    CHECK(api().destroy_context(second) == SSAO_OK);
 }
 
 TEST_CASE("abi: create_context is GL_LOAD when one GL 3.3 function is missing") {

@@ -4,6 +4,7 @@
 // without) a usable GL context.
 #include <cstring>
 #include "abi_common.h"
+#include "c_caller.h"
 
 #include <glad/gl.h>
 
@@ -93,9 +94,8 @@ TEST_CASE("abi: status_string is a distinct non-empty sentence per status and 'u
     CHECK(seen.size() == 16);
     for (int32_t s : {16, 17, 100, -1, 0x7fffffff}) {
         CAPTURE(s);
-        ssao_status st;
-        set_raw(st, s);
-        const char* text = a.status_string(st);
+        // From C: a C++ caller cannot pass -1 as an ssao_status without undefined behaviour.
+        const char* text = unit_c_status_string_raw(&a, static_cast<uint32_t>(s));
         REQUIRE((text != nullptr));
         CHECK(std::string(text) == "unknown status");
     }
@@ -193,10 +193,11 @@ TEST_CASE("abi: resolve_settings and preset_settings through the library") {
     set_raw(in.blur, 42);
     CHECK(a.resolve_settings(&in, &o) == SSAO_ERROR_INVALID_ENUM);
     CHECK(same_bytes(o, before));
-    ssao_preset unknown;
-    set_raw(unknown, 5);
-    CHECK(a.preset_settings(unknown, &o) == SSAO_ERROR_INVALID_ENUM);
-    CHECK(same_bytes(o, before));
+    for (uint32_t raw : {5u, 0x7fffffffu, 0xffffffffu}) {
+        CAPTURE(raw);
+        CHECK(unit_c_preset_raw(&a, raw, &o) == SSAO_ERROR_INVALID_ENUM);
+        CHECK(same_bytes(o, before));
+    }
 }
 
 TEST_CASE("abi: create_context validates its arguments before touching GL") {

@@ -320,6 +320,44 @@ TEST_CASE("projection: invalid matrices are rejected") {
     }
 }
 
+TEST_CASE("projection: matrices whose float inverse is useless are rejected") {
+    // Finite and invertible in double, but in the shaders' 32-bit floats the
+    // matrix or its inverse overflows or flushes to zero: execute returned OK
+    // with every pixel 1.0 before these were refused.
+    const glm::mat4 persp = glm::perspective(glm::radians(60.0f), 1.5f, 0.1f, 100.0f);
+    std::vector<std::pair<const char*, glm::mat4>> bad;
+    glm::mat4 m = persp;
+    m[0][0] = 1e-40f;  // denormal x scale: the inverse's 1e40 is inf in float
+    m[1][1] = 1e-40f;
+    bad.push_back({"denormal diagonal", m});
+    m = glm::ortho(-1.0f, 1.0f, -1.0f, 1.0f, 0.1f, 10.0f);
+    m[0][0] = m[1][1] = 3e38f;
+    m[2][2] = -3e38f;
+    bad.push_back({"3e38 diagonal (orthographic)", m});
+    m = persp;
+    m[0][0] = m[1][1] = 3e38f;
+    bad.push_back({"3e38 scale (perspective)", m});
+    m = persp;
+    m[3][2] = -3e38f;
+    bad.push_back({"3e38 depth offset", m});
+    for (const auto& [what, matrix] : bad) {
+        const std::string what_ = what;
+        CAPTURE(what_);
+        ProjectionInfo info;
+        std::string why;
+        CHECK(analyse(matrix, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, info, why) == SSAO_ERROR_INVALID_PROJECTION);
+        CHECK(why.find("32-bit float") != std::string::npos);
+    }
+    // Extreme but usable: a 1e-6 near plane, a 1e9 far plane, a 1e-4 degree field of view.
+    for (const glm::mat4& ok : {glm::perspective(glm::radians(60.0f), 1.0f, 1e-6f, 1e9f),
+                                glm::perspective(glm::radians(1e-4f), 1.0f, 0.1f, 100.0f),
+                                glm::ortho(-1e9f, 1e9f, -1e9f, 1e9f, -1e9f, 1e9f)}) {
+        ProjectionInfo info;
+        std::string why;
+        CHECK_MESSAGE(analyse(ok, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, info, why) == SSAO_OK, why);
+    }
+}
+
 TEST_CASE("projection: a perspective with the near plane behind the camera is rejected") {
     ProjectionInfo info;
     std::string why;

@@ -133,6 +133,22 @@ TEST_CASE("settings: derived defaults follow the fields they derive from") {
     CHECK(small.blur_depth_tolerance == 1e-6f);
 }
 
+TEST_CASE("settings: the derived bias stays a normal float > 0 for a tiny radius") {
+    // 0.025 x a denormal radius underflowed to bias 0 before, against the header's "bias > 0".
+    for (float radius : {1e-45f, 1e-40f, std::numeric_limits<float>::min(), 1e-37f}) {
+        CAPTURE(radius);
+        ssao_settings in = zeroed();
+        in.radius = radius;
+        const ssao_settings out = resolve_ok(in);
+        CHECK(out.radius == radius);
+        CHECK(out.bias >= std::numeric_limits<float>::min());
+        CHECK(std::isnormal(out.bias));
+    }
+    ssao_settings in = zeroed();
+    in.radius = 2.0f;
+    CHECK(resolve_ok(in).bias == doctest::Approx(0.05f));  // ordinary radii keep 0.025 x radius
+}
+
 TEST_CASE("settings: SSAO_STRENGTH_OFF is accepted and stays off") {
     ssao_settings in = zeroed();
     in.strength = SSAO_STRENGTH_OFF;
@@ -343,12 +359,11 @@ TEST_CASE("settings: every preset resolves to the documented table") {
 TEST_CASE("settings: an unknown preset is INVALID_ENUM and leaves out untouched") {
     for (int32_t raw : {5, 6, 100, -1, 0x7fffffff}) {
         CAPTURE(raw);
-        ssao_preset p;
-        set_raw(p, raw);
         ssao_settings out = sentinel();
         const ssao_settings before = out;
         std::string why;
-        CHECK(preset_settings(p, out, why) == SSAO_ERROR_INVALID_ENUM);
+        // The raw bits, as a C caller's ssao_preset argument arrives.
+        CHECK(preset_settings(static_cast<uint32_t>(raw), out, why) == SSAO_ERROR_INVALID_ENUM);
         CHECK(same(out, before));
         CHECK_FALSE(why.empty());
     }

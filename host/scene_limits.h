@@ -1,0 +1,40 @@
+// scene_limits.h - what a scene file may cost before loading gives up with a
+// sentence: file size, JSON nesting depth and triangles after flattening.
+// Scenes come from anywhere; each limit stops one way a small hostile file
+// turns into a crash or an unbounded amount of work.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+namespace scene {
+
+struct Limits {
+    // Bytes of the file, checked while reading, so a stream such as
+    // /dev/zero is not read to its end first.
+    uint64_t max_bytes = uint64_t(1) << 31;  // 2 GiB
+    // Nesting of JSON arrays and objects: tinygltf converts JSON (extras
+    // included) recursively, so 100,000 nested brackets overflow the stack.
+    // glTF itself needs fewer than 10 levels.
+    int max_json_depth = 128;
+    // Triangles once every node's meshes are flattened: 5,000 nodes that
+    // repeat one 6,000-triangle primitive make 30 million triangles from a
+    // 470 KB file. 8 million is ~300 MB flattened and seconds to render on llvmpipe.
+    uint64_t max_triangles = 8'000'000;
+    // Node instances once flattened: nodes shared as children repeat their
+    // subtrees, so 30 levels of two children each are 2^30 instances even
+    // without a single triangle.
+    uint64_t max_node_instances = 1'000'000;
+};
+
+// The deepest nesting of [ ] and { } in the JSON text (brackets inside
+// strings do not count). Stops scanning once `limit` is exceeded and returns
+// limit + 1 then, so the scan is cheap even on hostile input.
+int json_nesting_depth(const unsigned char* text, size_t size, int limit);
+
+// Triangles a primitive of `mode` (a glTF mode, -1 = triangles) draws with
+// `count` vertices or indices: count / 3 for a list, count - 2 for a strip or
+// fan (and an upper bound for the modes loading refuses).
+uint64_t triangles_of(int mode, uint64_t count);
+
+}  // namespace scene

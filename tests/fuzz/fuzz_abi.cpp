@@ -1,0 +1,348 @@
+// fuzz_abi.cpp - libFuzzer target: a byte-decoded sequence of ABI calls on a
+// real EGL context (Mesa llvmpipe), as a hostile host would make them:
+// create_context (with decoded settings and struct sizes), set_settings,
+// execute with decoded textures (a pool of every target and format, deleted
+// and random names), sizes, enums, floats, matrices and viewports, the
+// getters, destroy. After every call: the GL state snapshot of
+// tests/plugin/gl_state_snapshot.h is unchanged, KHR_debug reported no GL
+// error, the status is a documented one, and no bad input came back OK.
+#include "c_caller.h"
+#include "gl_fixture.h"
+#include "gl_state_snapshot.h"
+
+#include <ssao/ssao.h>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <limits>
+#include <memory>
+#include <vector>
+
+namespace {
+
+[[noreturn]] void finding(const char* what, const std::string& detail = "") {
+    std::fprintf(stderr, "fuzz_abi finding: %s %s\n", what, detail.c_str());
+    std::abort();
+}
+
+// Reads the fuzz input front to back; zeros once it runs out.
+struct Reader {
+    const uint8_t* p;
+    size_t left;
+    bool empty() const { return left == 0; }
+    void bytes(void* out, size_t n) {
+        const size_t k = std::min(n, left);
+        std::memcpy(out, p, k);
+        std::memset(static_cast<uint8_t*>(out) + k, 0, n - k);
+        p += k;
+        left -= k;
+    }
+    uint8_t u8() { uint8_t v; bytes(&v, 1); return v; }
+    uint32_t u32() { uint32_t v; bytes(&v, 4); return v; }
+    float f32() { float v; bytes(&v, 4); return v; }
+    // A small value most of the time, any 32 bits sometimes (enum fields).
+    uint32_t small_or_raw(uint32_t range) {
+        const uint8_t k = u8();
+        return k < 200 ? k % range : u32();
+    }
+};
+
+struct World {
+    std::unique_ptr<eglctx::Context> egl;
+    std::unique_ptr<testgl::DebugErrors> errors;
+    plugin::Library lib;
+    std::vector<GLuint> textures;  // every kind the decoder picks from
+    testgl::Snapshot host_state;
+    GLuint host_fbo = 0, host_vao = 0;
+};
+
+GLuint texture_2d(GladGLContext& gl, GLenum internal, int w, int h) {
+    GLuint t = 0;
+    gl.GenTextures(1, &t);
+    gl.BindTexture(GL_TEXTURE_2D, t);
+    gl.TexStorage2D(GL_TEXTURE_2D, 1, internal, w, h);
+    gl.BindTexture(GL_TEXTURE_2D, 0);
+    return t;
+}
+
+World& world() {
+    static World* w = [] {
+        auto* x = new World();
+        x->egl = testgl::make_debug_context(4, 5);
+        GladGLContext& gl = x->egl->gl();
+        std::string error;
+        if (!x->lib.open(plugin::Library::default_path(), error)) finding("cannot open the plugin", error);
+        x->errors = std::make_unique<testgl::DebugErrors>(gl);
+        // 2D textures of every input and output format, at a few tiny sizes.
+        const GLenum formats[] = {GL_DEPTH_COMPONENT16, GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT32F,
+                                  GL_DEPTH24_STENCIL8,  GL_DEPTH32F_STENCIL8, GL_RGBA16F, GL_RGBA8, GL_RGBA32F,
+                                  GL_RGB10_A2, GL_RGBA8_SNORM, GL_RG8, GL_R8, GL_R16F, GL_R32UI, GL_RGBA8UI,
+                                  GL_RGBA16I, GL_SRGB8_ALPHA8};
+        for (GLenum f : formats)
+            for (int s : {1, 7, 16}) x->textures.push_back(texture_2d(gl, f, s, s == 7 ? 5 : s));
+        // Other targets.
+        GLuint t = 0;
+        gl.GenTextures(1, &t);
+        gl.BindTexture(GL_TEXTURE_3D, t);
+        gl.TexStorage3D(GL_TEXTURE_3D, 1, GL_R32F, 16, 16, 2);
+        x->textures.push_back(t);
+        gl.GenTextures(1, &t);
+        gl.BindTexture(GL_TEXTURE_2D_ARRAY, t);
+        gl.TexStorage3D(GL_TEXTURE_2D_ARRAY, 1, GL_DEPTH_COMPONENT32F, 16, 16, 1);
+        x->textures.push_back(t);
+        gl.GenTextures(1, &t);
+        gl.BindTexture(GL_TEXTURE_CUBE_MAP, t);
+        gl.TexStorage2D(GL_TEXTURE_CUBE_MAP, 1, GL_RGBA16F, 16, 16);
+        x->textures.push_back(t);
+        gl.GenTextures(1, &t);
+        gl.BindTexture(GL_TEXTURE_RECTANGLE, t);
+        gl.TexStorage2D(GL_TEXTURE_RECTANGLE, 1, GL_DEPTH_COMPONENT32F, 16, 16);
+        x->textures.push_back(t);
+        gl.GenTextures(1, &t);
+        gl.BindTexture(GL_TEXTURE_2D_MULTISAMPLE, t);
+        gl.TexStorage2DMultisample(GL_TEXTURE_2D_MULTISAMPLE, 4, GL_RGBA8, 16, 16, GL_TRUE);
+        x->textures.push_back(t);
+        GLuint buffer = 0;
+        gl.GenBuffers(1, &buffer);
+        gl.BindBuffer(GL_TEXTURE_BUFFER, buffer);
+        gl.BufferData(GL_TEXTURE_BUFFER, 1024, nullptr, GL_STATIC_DRAW);
+        gl.BindBuffer(GL_TEXTURE_BUFFER, 0);
+        gl.GenTextures(1, &t);
+        gl.BindTexture(GL_TEXTURE_BUFFER, t);
+        gl.TexBuffer(GL_TEXTURE_BUFFER, GL_R32F, buffer);
+        gl.BindTexture(GL_TEXTURE_BUFFER, 0);
+        x->textures.push_back(t);
+        gl.GenTextures(1, &t);  // a name never bound: not a texture yet
+        x->textures.push_back(t);
+        gl.GenTextures(1, &t);  // a deleted name
+        gl.BindTexture(GL_TEXTURE_2D, t);
+        gl.BindTexture(GL_TEXTURE_2D, 0);
+        gl.DeleteTextures(1, &t);
+        x->textures.push_back(t);
+        x->textures.push_back(0);
+        x->textures.push_back(123456);
+        // A host with its own state: framebuffer, VAO, bindings, odd fixed function.
+        GLuint color = texture_2d(gl, GL_RGBA8, 8, 8);
+        gl.GenFramebuffers(1, &x->host_fbo);
+        gl.BindFramebuffer(GL_FRAMEBUFFER, x->host_fbo);
+        gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color, 0);
+        gl.GenVertexArrays(1, &x->host_vao);
+        gl.BindVertexArray(x->host_vao);
+        gl.ActiveTexture(GL_TEXTURE2);
+        gl.BindTexture(GL_TEXTURE_2D, x->textures[6]);
+        gl.ViewportIndexedf(0, 1.5f, 2.25f, 5.75f, 6.5f);
+        gl.Enable(GL_SCISSOR_TEST);
+        gl.Scissor(1, 1, 3, 3);
+        gl.Enable(GL_BLEND);
+        gl.BlendFunc(GL_ONE, GL_ONE);
+        gl.ColorMaski(0, GL_TRUE, GL_FALSE, GL_TRUE, GL_FALSE);
+        gl.Enable(GL_DEPTH_TEST);
+        gl.DepthMask(GL_FALSE);
+        gl.PixelStorei(GL_UNPACK_ALIGNMENT, 1);
+        gl.PixelStorei(GL_UNPACK_ROW_LENGTH, 3);
+        gl.ClearColor(0.25f, 0.5f, 0.75f, 1.0f);
+        x->host_state = testgl::snapshot(gl);
+        if (!x->errors->messages().empty()) finding("GL error while setting up", x->errors->messages()[0]);
+        return x;
+    }();
+    return *w;
+}
+
+bool documented(ssao_status st) {
+    return st >= SSAO_OK && st <= SSAO_ERROR_INTERNAL;
+}
+
+void check_after(World& w, const char* call, ssao_status st) {
+    if (!documented(st)) finding("undocumented status from", call);
+    if (st == SSAO_ERROR_INTERNAL) finding("SSAO_ERROR_INTERNAL from", call);
+    if (!w.errors->messages().empty()) finding("GL error after", std::string(call) + ": " + w.errors->messages()[0]);
+    const testgl::Snapshot now = testgl::snapshot(w.egl->gl());
+    if (now != w.host_state) {
+        for (const auto& e : w.host_state)
+            if (now.at(e.first) != e.second) finding("GL state changed by", std::string(call) + ": " + e.first);
+        finding("GL state changed by", call);
+    }
+}
+
+// Settings: raw bytes, or a valid struct with a few decoded fields.
+ssao_settings decode_settings(Reader& r) {
+    ssao_settings s{};
+    const uint8_t mode = r.u8();
+    if (mode < 40) {
+        r.bytes(&s, sizeof s);
+        if (mode < 30) s.size = sizeof s;
+        return s;
+    }
+    s.size = mode < 250 ? sizeof s : r.u32();
+    s.sample_count = r.small_or_raw(70);
+    const uint8_t floats = r.u8();
+    if (floats & 1) s.radius = r.f32();
+    if (floats & 2) s.bias = r.f32();
+    if (floats & 4) s.power = r.f32();
+    if (floats & 8) s.strength = r.f32();
+    if (floats & 16) s.blur_sigma = r.f32();
+    if (floats & 32) s.blur_depth_tolerance = r.f32();
+    if (floats & 64) s.depth_step_bias = r.f32();
+    const uint32_t shape = r.small_or_raw(5), dist = r.small_or_raw(4), rot = r.small_or_raw(5),
+                   blur = r.small_or_raw(6), fmt = r.small_or_raw(4);
+    std::memcpy(&s.kernel_shape, &shape, 4);
+    std::memcpy(&s.distribution, &dist, 4);
+    std::memcpy(&s.rotation, &rot, 4);
+    std::memcpy(&s.blur, &blur, 4);
+    std::memcpy(&s.output_format, &fmt, 4);
+    s.seed = r.u8();
+    s.blur_radius = r.small_or_raw(18);
+    return s;
+}
+
+void decode_matrix(Reader& r, float out[16]) {
+    const uint8_t kind = r.u8();
+    glm::mat4 m;
+    switch (kind % 6) {
+        case 0: m = glm::perspective(glm::radians(60.0f), 1.0f, 0.1f, 100.0f); break;
+        case 1: m = glm::perspectiveRH_ZO(glm::radians(40.0f), 1.5f, 0.5f, 1e6f); break;
+        case 2: m = glm::ortho(-2.0f, 2.0f, -2.0f, 2.0f, 0.1f, 50.0f); break;
+        case 3: m = glm::infinitePerspective(glm::radians(75.0f), 0.75f, 0.01f); break;
+        case 4: m = glm::perspectiveLH(glm::radians(60.0f), 1.0f, 0.1f, 100.0f); break;
+        default: m = glm::mat4(0.0f); break;
+    }
+    std::memcpy(out, glm::value_ptr(m), sizeof(float) * 16);
+    // Perturb a few elements with any float (denormals, huge, NaN, inf).
+    for (int n = kind / 6 % 4; n > 0; --n) {
+        const uint8_t at = r.u8() % 16;
+        out[at] = r.f32();
+    }
+}
+
+GLuint pick_texture(World& w, Reader& r) {
+    const uint8_t k = r.u8();
+    if (k == 255) return r.u32();
+    return w.textures[k % w.textures.size()];
+}
+
+ssao_inputs decode_inputs(World& w, Reader& r) {
+    ssao_inputs in{};
+    const uint8_t size_mode = r.u8();
+    in.size = size_mode < 250 ? sizeof in : r.u32();
+    in.depth_texture = pick_texture(w, r);
+    in.normal_texture = pick_texture(w, r);
+    in.output_texture = r.u8() < 160 ? 0 : pick_texture(w, r);
+    const uint32_t space = r.small_or_raw(3), packing = r.small_or_raw(3), clip = r.small_or_raw(3);
+    std::memcpy(&in.normal_space, &space, 4);
+    std::memcpy(&in.normal_packing, &packing, 4);
+    std::memcpy(&in.clip_range, &clip, 4);
+    decode_matrix(r, in.projection);
+    const glm::mat4 view(1.0f);
+    std::memcpy(in.view_matrix, glm::value_ptr(view), sizeof in.view_matrix);
+    if (r.u8() > 240) in.view_matrix[r.u8() % 16] = r.f32();
+    const uint8_t vp = r.u8();
+    if (vp >= 128) {
+        for (int i = 0; i < 4; ++i) in.viewport[i] = vp >= 240 ? static_cast<int32_t>(r.u32()) : r.u8() % 20 - 2;
+    }
+    return in;
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+    World& w = world();
+    const ssao_api& a = w.lib.api();
+    Reader r{data, size};
+    ssao_context* ctx[2] = {nullptr, nullptr};
+    for (int op = 0; op < 48 && !r.empty(); ++op) {
+        const uint8_t code = r.u8();
+        ssao_context* c = ctx[code >> 7];
+        switch (code % 9) {
+            case 0: {  // create
+                ssao_context*& slot = ctx[code >> 7];
+                if (slot) break;
+                ssao_context_desc desc{};
+                desc.size = r.u8() < 250 ? sizeof desc : r.u32();
+                desc.get_proc_address = &eglctx::Context::get_proc;
+                ssao_settings s{};
+                const bool with_settings = r.u8() & 1;
+                if (with_settings) {
+                    s = decode_settings(r);
+                    desc.settings = &s;
+                }
+                const ssao_status st = a.create_context(&desc, &slot);
+                check_after(w, "create_context", st);
+                if ((st == SSAO_OK) != (slot != nullptr)) finding("create_context: status and context disagree");
+                break;
+            }
+            case 1: {  // destroy
+                check_after(w, "destroy_context", a.destroy_context(c));
+                ctx[code >> 7] = nullptr;
+                break;
+            }
+            case 2: {  // set_settings
+                const ssao_settings s = decode_settings(r);
+                ssao_settings before{};
+                before.size = sizeof before;
+                if (c) a.get_settings(c, &before);
+                const ssao_status st = a.set_settings(c, &s);
+                check_after(w, "set_settings", st);
+                if (c && st != SSAO_OK) {
+                    ssao_settings after{};
+                    after.size = sizeof after;
+                    a.get_settings(c, &after);
+                    if (std::memcmp(&before, &after, sizeof after) != 0) finding("refused settings were applied");
+                }
+                break;
+            }
+            case 3:
+            case 4:
+            case 5: {  // execute
+                const ssao_inputs in = decode_inputs(w, r);
+                ssao_output out{};
+                out.size = r.u8() < 250 ? sizeof out : r.u32();
+                const ssao_status st = a.execute(c, &in, r.u8() < 20 ? nullptr : &out);
+                check_after(w, "execute", st);
+                if (st == SSAO_OK) {
+                    if (in.depth_texture == in.output_texture || in.normal_texture == in.output_texture)
+                        finding("execute OK with the output as an input");
+                    GladGLContext& gl = w.egl->gl();
+                    if (out.size == sizeof out && out.texture == 0) finding("execute OK without an output texture");
+                    if (in.output_texture != 0 && out.size == sizeof out && out.texture != in.output_texture)
+                        finding("execute OK but wrote elsewhere than output_texture");
+                    for (float v : in.projection)
+                        if (!std::isfinite(v)) finding("execute OK with a non-finite projection");
+                    (void)gl;
+                }
+                break;
+            }
+            case 6: {  // the getters
+                ssao_timings t{};
+                t.size = r.u8() < 240 ? sizeof t : r.u32();
+                check_after(w, "get_timings", a.get_timings(c, &t));
+                ssao_frame_info fi{};
+                fi.size = r.u8() < 240 ? sizeof fi : r.u32();
+                check_after(w, "get_frame_info", a.get_frame_info(c, &fi));
+                const char* e = a.last_error(c);
+                if (!e) finding("last_error returned NULL");
+                break;
+            }
+            case 7: {  // settings without a context
+                const ssao_settings s = decode_settings(r);
+                ssao_settings out{};
+                out.size = sizeof out;
+                check_after(w, "resolve_settings", a.resolve_settings(&s, &out));
+                check_after(w, "preset_settings", unit_c_preset_raw(&a, r.small_or_raw(7), &out));
+                break;
+            }
+            default: {
+                const char* text = a.status_string(static_cast<ssao_status>(r.u8() % 17));
+                if (!text || !*text) finding("empty status string");
+                break;
+            }
+        }
+    }
+    for (ssao_context* c : ctx) check_after(w, "destroy_context", a.destroy_context(c));
+    return 0;
+}

@@ -1,0 +1,107 @@
+// test_threads.cpp - the header's promise that distinct contexts work from
+// distinct threads, each with its own GL context (issue 11): two threads, two
+// EGL contexts, 1,000 executes each with changing settings and viewports, and
+// every frame's AO identical to the same sequence run on one thread.
+// scripts/run-sanitizers.sh also runs it under ThreadSanitizer.
+#include "gl_fixture.h"
+#include "test_scenes.h"
+
+#include <doctest/doctest.h>
+
+#include <cstdint>
+#include <cstring>
+#include <stdexcept>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace {
+
+constexpr int kW = 24, kH = 18;
+constexpr int kExecutes = 1000;
+
+// FNV-1a over the AO bits of one frame.
+uint64_t hash_floats(const std::vector<float>& v) {
+    uint64_t h = 1469598103934665603ull;
+    const auto* p = reinterpret_cast<const unsigned char*>(v.data());
+    for (size_t i = 0; i < v.size() * sizeof(float); ++i) h = (h ^ p[i]) * 1099511628211ull;
+    return h;
+}
+
+struct Run {
+    std::vector<uint64_t> frames;  // one hash per execute
+    std::string error;             // first failure, empty if none
+    size_t gl_errors = 0;
+};
+
+// One thread's whole life: its own EGL context, plugin context and textures,
+// `kExecutes` frames of a sequence that depends on `seed`.
+Run run_sequence(int seed) {
+    Run r;
+    try {
+        using namespace testscenes;
+        testgl::Fixture fx;  // EGL context current on this thread, plugin context on it
+        const auto proj = analytic::perspective(kFov, double(kW) / kH, 0.1, 100.0);
+        const analytic::GBuffer g = analytic::render(crease_scene(), proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, kW, kH);
+        const GLuint depth = fx.make_depth(GL_DEPTH_COMPONENT32F, kW, kH, g.depth);
+        const GLuint normal = fx.make_normals(GL_RGBA16F, kW, kH, g.normal);
+        const ssao_inputs base = fx.inputs(depth, normal, proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE);
+        const ssao_blur blurs[] = {SSAO_BLUR_NONE, SSAO_BLUR_DEPTH_AWARE, SSAO_BLUR_BOX_4X4, SSAO_BLUR_GAUSSIAN};
+        for (int i = 0; i < kExecutes; ++i) {
+            const int step = seed * 7919 + i;
+            if (i % 10 == 0) {
+                ssao_settings s{};
+                s.size = sizeof s;
+                s.sample_count = static_cast<uint32_t>(1 + (step * 13) % 32);
+                s.radius = 0.3f + 0.05f * static_cast<float>(step % 11);
+                s.blur = blurs[(step / 10) % 4];
+                s.seed = static_cast<uint32_t>(seed + 1);
+                s.output_format = (step / 20) % 2 ? SSAO_OUTPUT_R16F : SSAO_OUTPUT_R8;
+                if (fx.api().set_settings(fx.ctx(), &s) != SSAO_OK) throw std::runtime_error("set_settings failed");
+            }
+            ssao_inputs in = base;
+            const int w = 1 + (step * 5) % kW, h = 1 + (step * 3) % kH;
+            in.viewport[0] = (step % (kW - w + 1));
+            in.viewport[1] = (step % (kH - h + 1));
+            in.viewport[2] = w;
+            in.viewport[3] = h;
+            ssao_output out{};
+            out.size = sizeof out;
+            if (fx.api().execute(fx.ctx(), &in, &out) != SSAO_OK)
+                throw std::runtime_error(std::string("execute: ") + fx.api().last_error(fx.ctx()));
+            r.frames.push_back(hash_floats(fx.read_red(out.texture, w, h)));
+        }
+        r.gl_errors = fx.gl_errors().size();
+    } catch (const std::exception& e) {
+        r.error = e.what();
+    }
+    return r;
+}
+
+}  // namespace
+
+TEST_CASE("threads: two contexts on two threads give the single-threaded results, frame for frame") {
+    // The oracle: both sequences, one after the other, on this thread.
+    const Run alone_a = run_sequence(1);
+    const Run alone_b = run_sequence(2);
+    REQUIRE_MESSAGE(alone_a.error.empty(), alone_a.error);
+    REQUIRE_MESSAGE(alone_b.error.empty(), alone_b.error);
+    REQUIRE(alone_a.frames.size() == size_t(kExecutes));
+    CHECK(alone_a.frames != alone_b.frames);  // the sequences differ, so a mix-up would show
+
+    Run together_a, together_b;
+    std::thread ta([&] { together_a = run_sequence(1); });
+    std::thread tb([&] { together_b = run_sequence(2); });
+    ta.join();
+    tb.join();
+    REQUIRE_MESSAGE(together_a.error.empty(), together_a.error);
+    REQUIRE_MESSAGE(together_b.error.empty(), together_b.error);
+    CHECK(together_a.gl_errors == 0u);
+    CHECK(together_b.gl_errors == 0u);
+    int differing = 0;
+    for (int i = 0; i < kExecutes; ++i) {
+        differing += together_a.frames[size_t(i)] != alone_a.frames[size_t(i)];
+        differing += together_b.frames[size_t(i)] != alone_b.frames[size_t(i)];
+    }
+    CHECK(differing == 0);
+}
