@@ -127,10 +127,9 @@ bool load_surface(out Surface sf) {
     return true;
 }
 
-// Where view-space point s lands: the input texel, or false when it is
-// behind the eye or off the viewport.
-bool project_to_texel(vec3 s, out ivec2 texel) {
-    vec4 c = u_proj * vec4(s, 1.0);
+// Where the point with clip coordinates c lands: the input texel, or false
+// when it is behind the eye or off the viewport.
+bool clip_to_texel(vec4 c, out ivec2 texel) {
     texel = ivec2(0);
     if (!(c.w > 0.0)) return false;
     vec2 spf = (c.xy / c.w * 0.5 + 0.5) * vec2(u_viewport.zw);
@@ -138,3 +137,6 @@ bool project_to_texel(vec3 s, out ivec2 texel) {
     texel = ivec2(spf) + u_viewport.xy;
     return true;
 }
+
+// The same for view-space point s.
+bool project_to_texel(vec3 s, out ivec2 texel) { return clip_to_texel(u_proj * vec4(s, 1.0), texel); }

@@ -39,13 +39,18 @@ void main() {
     float jitter = step_jitter(sf.vpx);
     int count = u_counts.x;
     float open = 0.0;
+    // Projection is linear: a step's clip coordinates are those of P plus
+    // those of the direction times the distance (no matrix product per step).
+    vec4 clip_p = u_proj * vec4(sf.P, 1.0);
     for (int i = 0; i < count; ++i) {
         vec3 dir = sf.TBN * u_kernel[i].xyz;
+        vec4 clip_dir = u_proj * vec4(dir, 0.0);
         bool blocked = false;
         for (int j = 0; j < steps && !blocked; ++j) {
-            vec3 s = sf.P + dir * (radius * (float(j) + jitter) / float(steps));
+            float t = radius * (float(j) + jitter) / float(steps);
+            vec3 s = sf.P + dir * t;
             ivec2 spx;
-            if (!project_to_texel(s, spx)) continue;        // unknown: open
+            if (!clip_to_texel(clip_p + clip_dir * t, spx)) continue;  // unknown: open
             float sd = fetch_depth(spx);
             if (is_sky(sd)) continue;                       // the sky blocks nothing
             vec4 Qw = view_position_w(spx, sd);

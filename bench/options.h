@@ -1,0 +1,25 @@
+// options.h - ssao-bench's command line (the tools' shared parser, host/flags.h).
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace bench {
+
+struct Options {
+    std::vector<std::string> scenes;
+    int width = 320, height = 180;           // base size: the full sweep, errors and presets
+    std::vector<int> scales = {1, 2, 4};     // x the base size: presets, textbook and floor timed (scaling table)
+    int warmup = 4, frames = 15;
+    int reference_samples = 512;
+    int limit_directions = 0;                // 0: depth_limit's default
+    std::string out = "bench-out";
+    std::string plugin;                      // empty: plugin::Library::search_order()
+};
+
+enum class Parse { Run, Help, Version, Error };
+
+Parse parse(int argc, char** argv, Options& o, std::string& error);
+std::string help_text();
+
+}  // namespace bench

@@ -1,0 +1,311 @@
+#include "report.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+#include <string>
+
+namespace bench {
+
+namespace {
+
+std::string fmt(double v, int digits = 3) {
+    if (!std::isfinite(v)) return "-";
+    char b[64];
+    std::snprintf(b, sizeof b, "%.*f", digits, v);
+    return b;
+}
+
+// Per configuration over the scenes at one size.
+struct Summary {
+    std::string config;
+    Family family = Family::kernel;
+    Row::Kind kind = Row::Kind::plugin;
+    ssao_settings s{};
+    double ratio_textbook = 0, ratio_floor = 0, ms = 0;  // means over scenes
+    double psnr = 0, psnr_vs_limit = 0, min_psnr = 1e9;  // dB, means (and worst) over scenes
+    std::map<std::string, double> scene_psnr, scene_psnr_vs_limit, scene_ratio;
+    bool front_vr = false, front_limit = false;
+    int scenes = 0;
+};
+
+const char* kind_name(Row::Kind k) {
+    switch (k) {
+        case Row::Kind::plugin: return "plugin";
+        case Row::Kind::textbook: return "textbook";
+        case Row::Kind::floor: return "floor";
+        case Row::Kind::limit: return "limit";
+    }
+    return "?";
+}
+
+std::vector<Summary> summarise(const std::vector<Row>& rows, int width) {
+    std::map<std::string, double> textbook_ms, floor_ms;
+    for (const Row& r : rows) {
+        if (r.width != width) continue;
+        if (r.kind == Row::Kind::textbook) textbook_ms[r.scene] = r.median_ms;
+        if (r.kind == Row::Kind::floor) floor_ms[r.scene] = r.median_ms;
+    }
+    std::vector<Summary> out;
+    std::map<std::string, size_t> index;
+    for (const Row& r : rows) {
+        if (r.width != width) continue;
+        if (!index.count(r.config)) {
+            index[r.config] = out.size();
+            Summary s;
+            s.config = r.config;
+            s.family = r.family;
+            s.kind = r.kind;
+            s.s = r.s;
+            out.push_back(s);
+        }
+        Summary& s = out[index[r.config]];
+        const double ratio = r.median_ms / textbook_ms[r.scene];
+        s.ratio_textbook += ratio;
+        s.ratio_floor += r.median_ms / floor_ms[r.scene];
+        s.ms += r.median_ms;
+        s.scene_ratio[r.scene] = ratio;
+        if (r.has_error) {
+            s.psnr += r.all.psnr;
+            s.psnr_vs_limit += r.vs_limit.psnr;
+            s.min_psnr = std::min(s.min_psnr, r.all.psnr);
+            s.scene_psnr[r.scene] = r.all.psnr;
+            s.scene_psnr_vs_limit[r.scene] = r.vs_limit.psnr;
+        }
+        s.scenes++;
+    }
+    for (Summary& s : out) {
+        s.ratio_textbook /= s.scenes;
+        s.ratio_floor /= s.scenes;
+        s.ms /= s.scenes;
+        s.psnr = s.scene_psnr.empty() ? NAN : s.psnr / s.scenes;
+        s.psnr_vs_limit = s.scene_psnr.empty() ? NAN : s.psnr_vs_limit / s.scenes;
+    }
+    // The fronts: no other sweep configuration is both faster and more accurate.
+    auto on_front = [&](const Summary& a, double Summary::*acc) {
+        for (const Summary& b : out)
+            if (&a != &b && b.kind == Row::Kind::plugin && b.ratio_textbook <= a.ratio_textbook && b.*acc >= a.*acc &&
+                (b.ratio_textbook < a.ratio_textbook || b.*acc > a.*acc))
+                return false;
+        return true;
+    };
+    for (Summary& a : out) {
+        if (a.kind != Row::Kind::plugin || !std::isfinite(a.psnr)) continue;
+        a.front_vr = on_front(a, &Summary::psnr);
+        a.front_limit = on_front(a, &Summary::psnr_vs_limit);
+    }
+    return out;
+}
+
+// The preset rule: each preset is the configuration of the sweep (kernel and
+// visibility families) with the highest mean PSNR against V_R among those
+// whose mean time is within its budget, as a fraction of the textbook pass.
+struct Budget {
+    const char* preset;
+    double ratio;
+};
+constexpr Budget kBudgets[] = {{"low", 0.125}, {"medium (= default)", 0.25}, {"high", 0.5}, {"ultra", 1.0}};
+
+const Summary* best_within(const std::vector<Summary>& sum, double ratio) {
+    const Summary* best = nullptr;
+    for (const Summary& s : sum)
+        if ((s.family == Family::kernel || s.family == Family::visibility) && s.kind == Row::Kind::plugin &&
+            std::isfinite(s.psnr) && s.ratio_textbook <= ratio && (!best || s.psnr > best->psnr))
+            best = &s;
+    return best;
+}
+
+void write_csv(const Options& o, const std::vector<Row>& rows) {
+    std::map<std::pair<std::string, int>, double> textbook_ms, floor_ms;
+    for (const Row& r : rows) {
+        if (r.kind == Row::Kind::textbook) textbook_ms[{r.scene, r.width}] = r.median_ms;
+        if (r.kind == Row::Kind::floor) floor_ms[{r.scene, r.width}] = r.median_ms;
+    }
+    std::ofstream csv(o.out + "/bench.csv");
+    csv << "scene,config,family,kind,width,height,method,samples,steps,blur,thickness,rotation,radius,"
+           "median_ms,p10_ms,p90_ms,x_textbook,x_floor,rmse,psnr,rmse_vs_limit,psnr_vs_limit,rmse_interior,"
+           "rmse_silhouette,rmse_border,reference_noise_rms\n";
+    for (const Row& r : rows) {
+        const bool plugin = r.kind == Row::Kind::plugin;
+        csv << r.scene << ",\"" << r.config << "\"," << (plugin ? family_name(r.family) : "") << "," << kind_name(r.kind)
+            << "," << r.width << "," << r.height << ",";
+        if (plugin)
+            csv << (r.s.method == SSAO_METHOD_VISIBILITY ? "visibility" : "kernel") << "," << r.s.sample_count << ","
+                << r.s.step_count << "," << blur_name(r.s.blur) << "," << r.s.thickness << "," << r.s.rotation << ","
+                << r.s.radius << ",";
+        else
+            csv << ",,,,,,,";
+        csv << fmt(r.median_ms, 4) << "," << fmt(r.p10_ms, 4) << "," << fmt(r.p90_ms, 4) << ","
+            << fmt(r.median_ms / textbook_ms[{r.scene, r.width}], 4) << "," << fmt(r.median_ms / floor_ms[{r.scene, r.width}], 3)
+            << ",";
+        if (r.has_error)
+            csv << fmt(r.all.rmse, 5) << "," << fmt(r.all.psnr, 3) << "," << fmt(r.vs_limit.rmse, 5) << ","
+                << fmt(r.vs_limit.psnr, 3) << "," << fmt(r.interior.rmse, 5) << "," << fmt(r.silhouette.rmse, 5) << ","
+                << fmt(r.border.rmse, 5) << "," << fmt(r.all.noise_rms, 5) << "\n";
+        else
+            csv << ",,,,,,,\n";
+    }
+}
+
+std::string summary_table(const std::vector<Summary>& sum) {
+    std::vector<Summary> sorted = sum;
+    std::sort(sorted.begin(), sorted.end(),
+              [](const Summary& a, const Summary& b) { return a.ratio_textbook < b.ratio_textbook; });
+    std::ostringstream md;
+    md << "| configuration | x textbook | x floor | mean ms | PSNR vs V_R (mean, worst) | PSNR vs limit | front |\n"
+       << "|---|---:|---:|---:|---:|---:|:---:|\n";
+    for (const Summary& s : sorted) {
+        if (s.kind == Row::Kind::limit) continue;
+        md << "| " << s.config << " | " << fmt(s.ratio_textbook) << " | " << fmt(s.ratio_floor, 1) << " | "
+           << fmt(s.ms, 2) << " | " << fmt(s.psnr, 2) << ", " << fmt(s.scene_psnr.empty() ? NAN : s.min_psnr, 2)
+           << " | " << fmt(s.psnr_vs_limit, 2) << " | "
+           << (s.front_vr && s.front_limit ? "both" : s.front_vr ? "V_R" : s.front_limit ? "limit" : "") << " |\n";
+    }
+    return md.str();
+}
+
+// The targets, per scene, for the shipped presets.
+std::string targets_table(const std::vector<Summary>& sum, const std::vector<std::string>& scenes) {
+    std::map<std::string, const Summary*> by;
+    for (const Summary& s : sum) by[s.config] = &s;
+    const Summary* limit = nullptr;
+    for (const Summary& s : sum)
+        if (s.kind == Row::Kind::limit) limit = &s;
+    std::ostringstream md;
+    md << "| preset | scene | PSNR vs V_R | limit's PSNR | gap to limit | x textbook | 1.0 preset's PSNR | change |\n"
+       << "|---|---|---:|---:|---:|---:|---:|---:|\n";
+    const char* names[][2] = {{"preset low", "1.0 preset low"},
+                              {"preset medium (= default)", "1.0 preset medium"},
+                              {"preset high", "1.0 preset high"},
+                              {"preset ultra", "1.0 preset ultra"}};
+    for (const auto& n : names) {
+        if (!by.count(n[0])) continue;
+        const Summary& p = *by[n[0]];
+        const Summary* old = by.count(n[1]) ? by[n[1]] : nullptr;
+        for (const std::string& sc : scenes) {
+            if (!p.scene_psnr.count(sc)) continue;
+            const double ours = p.scene_psnr.at(sc);
+            const double lim = limit && limit->scene_psnr.count(sc) ? limit->scene_psnr.at(sc) : NAN;
+            const double was = old && old->scene_psnr.count(sc) ? old->scene_psnr.at(sc) : NAN;
+            md << "| " << n[0] << " | " << sc << " | " << fmt(ours, 2) << " | " << fmt(lim, 2) << " | "
+               << fmt(lim - ours, 2) << " | " << fmt(p.scene_ratio.at(sc)) << " | " << fmt(was, 2) << " | "
+               << (std::isfinite(was) ? (ours >= was ? "+" : "") + fmt(ours - was, 2) : "-") << " |\n";
+        }
+    }
+    return md.str();
+}
+
+std::string scaling_table(const Options& o, const std::vector<Row>& rows) {
+    std::ostringstream md;
+    md << "| size | configuration | mean ms | ms per megapixel | x textbook | x floor |\n|---|---|---:|---:|---:|---:|\n";
+    for (int scale : o.scales) {
+        const int w = o.width * scale, h = o.height * scale;
+        const double mp = w * static_cast<double>(h) * 1e-6;
+        const std::vector<Summary> sum = summarise(rows, w);
+        for (const Summary& s : sum) {
+            if (s.kind == Row::Kind::limit) continue;
+            if (s.kind == Row::Kind::plugin && s.family != Family::preset) continue;
+            md << "| " << w << "x" << h << " | " << s.config << " | " << fmt(s.ms, 2) << " | " << fmt(s.ms / mp, 1)
+               << " | " << fmt(s.ratio_textbook) << " | " << fmt(s.ratio_floor, 1) << " |\n";
+        }
+    }
+    return md.str();
+}
+
+void write_plot(const Options& o, const std::vector<Summary>& sum) {
+    std::ofstream dat(o.out + "/bench.dat");
+    dat << "# x_textbook psnr_vs_VR psnr_vs_limit family(0 kernel,1 visibility,2 preset,3 preset 1.0,4 textbook)\n";
+    double limit_psnr = NAN;
+    for (const Summary& s : sum) {
+        if (s.kind == Row::Kind::limit) {
+            limit_psnr = s.psnr;
+            continue;
+        }
+        if (s.kind == Row::Kind::floor || !std::isfinite(s.psnr)) continue;
+        const int f = s.kind == Row::Kind::textbook ? 4 : static_cast<int>(s.family);
+        dat << s.ratio_textbook << " " << s.psnr << " " << s.psnr_vs_limit << " " << f << "\n";
+    }
+    for (int which = 0; which < 2; ++which) {
+        std::vector<Summary> f;
+        for (const Summary& s : sum)
+            if (which == 0 ? s.front_vr : s.front_limit) f.push_back(s);
+        std::sort(f.begin(), f.end(), [](const Summary& a, const Summary& b) { return a.ratio_textbook < b.ratio_textbook; });
+        std::ofstream front(o.out + (which == 0 ? "/front_vr.dat" : "/front_limit.dat"));
+        for (const Summary& s : f) front << s.ratio_textbook << " " << (which == 0 ? s.psnr : s.psnr_vs_limit) << "\n";
+    }
+    std::ofstream gp(o.out + "/plot.gp");
+    gp << "set terminal pngcairo size 1300,560 font 'DejaVu Sans,10'\nset output 'error_vs_time.png'\n"
+          "set multiplot layout 1,2 title 'SSAO accuracy against GPU time (mean over the bundled scenes, one run)'\n"
+          "set logscale x\nset grid\nset key bottom right\nset xlabel 'GPU time relative to the textbook pass'\n"
+          "set ylabel 'PSNR against ray-traced V_R (dB, higher is better)'\nset title 'against the truth'\n";
+    if (std::isfinite(limit_psnr))
+        gp << "set arrow from graph 0, first " << limit_psnr << " to graph 1, first " << limit_psnr
+           << " nohead dt 2 lw 2 lc rgb '#228833'\nset label 'depth-only limit' at graph 0.02, first " << limit_psnr + 0.4
+           << " tc rgb '#228833'\n";
+    const char* series =
+        "plot 'bench.dat' using ($4==0 ? $1 : 1/0):COL with points pt 7 ps 0.8 lc rgb '#4477aa' title 'kernel', \\\n"
+        "     'bench.dat' using ($4==1 ? $1 : 1/0):COL with points pt 7 ps 0.8 lc rgb '#ee7733' title 'visibility', \\\n"
+        "     'bench.dat' using ($4==3 ? $1 : 1/0):COL with points pt 4 ps 1.5 lc rgb '#777777' title 'presets 1.0', \\\n"
+        "     'bench.dat' using ($4==2 ? $1 : 1/0):COL with points pt 9 ps 2 lc rgb '#aa3377' title 'presets', \\\n"
+        "     'bench.dat' using ($4==4 ? $1 : 1/0):COL with points pt 5 ps 2 lc rgb '#000000' title 'textbook pass', \\\n";
+    auto plot = [&](const std::string& col, const std::string& front_file) {
+        std::string p = series;
+        for (size_t at; (at = p.find("COL")) != std::string::npos;) p.replace(at, 3, col);
+        gp << p << "     '" << front_file << "' using 1:2 with lines lw 2 lc rgb '#cc3311' title 'front'\n";
+    };
+    plot("2", "front_vr.dat");
+    gp << "unset arrow\nunset label\nset ylabel 'PSNR against the depth-only limit (dB)'\n"
+          "set title 'against what one depth layer allows'\n";
+    plot("3", "front_limit.dat");
+    gp << "unset multiplot\n";
+    gp.close();
+    const std::string cmd = "cd '" + o.out + "' && gnuplot plot.gp 2>/dev/null";
+    if (std::system("command -v gnuplot >/dev/null 2>&1") == 0 && std::system(cmd.c_str()) == 0)
+        std::printf("plot: %s/error_vs_time.png\n", o.out.c_str());
+    else
+        std::printf("plot: gnuplot not found; %s/plot.gp draws it (apt-get install gnuplot-nox)\n", o.out.c_str());
+}
+
+}  // namespace
+
+void write_report(const Options& o, const std::vector<Row>& rows) {
+    std::filesystem::create_directories(o.out);
+    write_csv(o, rows);
+    const std::vector<Summary> sum = summarise(rows, o.width);
+    std::vector<std::string> scenes;
+    for (const Row& r : rows)
+        if (std::find(scenes.begin(), scenes.end(), r.scene) == scenes.end()) scenes.push_back(r.scene);
+
+    std::ostringstream md;
+    md << "Base size " << o.width << "x" << o.height << ", " << o.frames << " timed frames per configuration (median), "
+       << "means over " << scenes.size() << " scenes.\n\n"
+       << summary_table(sum) << "\nDepth-only limit, PSNR against V_R per scene:";
+    for (const Summary& s : sum)
+        if (s.kind == Row::Kind::limit)
+            for (const auto& [sc, v] : s.scene_psnr) md << " " << sc << " " << fmt(v, 2) << " dB;";
+    md << "\n\nShipped presets against the targets, per scene:\n\n" << targets_table(sum, scenes)
+       << "\nTime against pixels (means over scenes):\n\n" << scaling_table(o, rows);
+    std::ofstream(o.out + "/bench.md") << md.str();
+
+    std::ostringstream pr;
+    pr << "Rule: each preset is the sweep configuration with the highest mean PSNR against V_R whose mean GPU time\n"
+          "is within its budget (a fraction of the textbook pass's time, same scenes, same run).\n";
+    for (const Budget& b : kBudgets) {
+        const Summary* s = best_within(sum, b.ratio);
+        pr << b.preset << " (<= " << b.ratio << " x textbook): "
+           << (s ? s->config + " (x" + fmt(s->ratio_textbook) + ", " + fmt(s->psnr, 2) + " dB)" : "none within budget")
+           << "\n";
+    }
+    std::ofstream(o.out + "/presets.txt") << pr.str();
+    std::printf("%s\n%s", md.str().c_str(), pr.str().c_str());
+    write_plot(o, sum);
+    std::printf("results: %s/bench.csv, %s/bench.md, %s/presets.txt\n", o.out.c_str(), o.out.c_str(), o.out.c_str());
+}
+
+}  // namespace bench

@@ -1,0 +1,15 @@
+// report.h - what the benchmark writes: bench.csv (every row), bench.md (the
+// summary, both fronts, the preset targets and the scaling table), presets.txt
+// (the presets the stated rule picks from the front), and the plot.
+#pragma once
+
+#include "measure.h"
+#include "options.h"
+
+#include <vector>
+
+namespace bench {
+
+void write_report(const Options& o, const std::vector<Row>& rows);
+
+}  // namespace bench
