@@ -1,5 +1,6 @@
 #include "settings.h"
 
+#include "presets.h"
 #include "raw_enum.h"
 
 #include <algorithm>
@@ -44,7 +45,13 @@ ssao_status resolve_settings(const ssao_settings& caller, ssao_settings& out, st
                         std::to_string(sizeof(ssao_settings)) + " (or " + std::to_string(SSAO_SETTINGS_SIZE_1_0) +
                         " for interface 1.0)");
 
-    if (r.sample_count == 0) r.sample_count = kDefaultSamples;
+    // The method first: the defaults of the fields a preset sets depend on it.
+    if (!raw_enum_at_most(r.method, SSAO_METHOD_VISIBILITY))
+        return fail(why, SSAO_ERROR_INVALID_ENUM, "method is not an ssao_method");
+    if (r.method == SSAO_METHOD_DEFAULT) r.method = preset_row(SSAO_PRESET_DEFAULT).method;
+    const PresetRow& defaults = defaults_for_method(r.method);
+
+    if (r.sample_count == 0) r.sample_count = defaults.sample_count;
     if (r.sample_count > SSAO_MAX_SAMPLES)
         return fail(why, SSAO_ERROR_INVALID_VALUE,
                     "sample_count " + std::to_string(r.sample_count) + " is outside 1..64");
@@ -73,7 +80,7 @@ ssao_status resolve_settings(const ssao_settings& caller, ssao_settings& out, st
 
     if (!raw_enum_at_most(r.distribution, SSAO_DISTRIBUTION_UNIFORM))
         return fail(why, SSAO_ERROR_INVALID_ENUM, "distribution is not an ssao_kernel_distribution");
-    if (r.distribution == SSAO_DISTRIBUTION_DEFAULT) r.distribution = SSAO_DISTRIBUTION_ACCELERATING;
+    if (r.distribution == SSAO_DISTRIBUTION_DEFAULT) r.distribution = defaults.distribution;
 
     if (!raw_enum_at_most(r.rotation, SSAO_ROTATION_NONE))
         return fail(why, SSAO_ERROR_INVALID_ENUM, "rotation is not an ssao_rotation");
@@ -83,7 +90,7 @@ ssao_status resolve_settings(const ssao_settings& caller, ssao_settings& out, st
 
     if (!raw_enum_at_most(r.blur, SSAO_BLUR_NONE))
         return fail(why, SSAO_ERROR_INVALID_ENUM, "blur is not an ssao_blur");
-    if (r.blur == SSAO_BLUR_DEFAULT) r.blur = SSAO_BLUR_DEPTH_AWARE;
+    if (r.blur == SSAO_BLUR_DEFAULT) r.blur = defaults.blur;
 
     if (r.blur_radius == 0) r.blur_radius = kDefaultBlurRadius;
     if (r.blur_radius > SSAO_MAX_BLUR_RADIUS)
@@ -102,10 +109,6 @@ ssao_status resolve_settings(const ssao_settings& caller, ssao_settings& out, st
         return fail(why, SSAO_ERROR_INVALID_ENUM, "output_format is not an ssao_output_format");
     if (r.output_format == SSAO_OUTPUT_DEFAULT) r.output_format = SSAO_OUTPUT_R8;
 
-    if (!raw_enum_at_most(r.method, SSAO_METHOD_VISIBILITY))
-        return fail(why, SSAO_ERROR_INVALID_ENUM, "method is not an ssao_method");
-    if (r.method == SSAO_METHOD_DEFAULT) r.method = kDefaultMethod;
-
     if (!finite(r.bias) || r.bias < 0.0f)
         return fail(why, SSAO_ERROR_INVALID_VALUE, "bias must be a finite number >= 0");
     // The derived bias must stay > 0 as the header promises: for a tiny
@@ -120,7 +123,7 @@ ssao_status resolve_settings(const ssao_settings& caller, ssao_settings& out, st
         return fail(why, SSAO_ERROR_INVALID_VALUE, "thickness must be a finite number > 0");
     if (r.thickness == 0.0f) r.thickness = std::max(kDefaultThicknessFraction * r.radius, std::numeric_limits<float>::min());
 
-    if (r.step_count == 0) r.step_count = kDefaultSteps;
+    if (r.step_count == 0) r.step_count = defaults.step_count;
     if (r.step_count > SSAO_MAX_STEPS)
         return fail(why, SSAO_ERROR_INVALID_VALUE,
                     "step_count " + std::to_string(r.step_count) + " is outside 1..32");
@@ -131,38 +134,14 @@ ssao_status resolve_settings(const ssao_settings& caller, ssao_settings& out, st
 
 ssao_status preset_settings(uint32_t raw_preset, ssao_settings& out, std::string& why) {
     if (raw_preset > SSAO_PRESET_ULTRA) return fail(why, SSAO_ERROR_INVALID_ENUM, "preset is not an ssao_preset");
-    const auto preset = static_cast<ssao_preset>(raw_preset);
+    const PresetRow& row = preset_row(static_cast<ssao_preset>(raw_preset));
     ssao_settings s{};
     s.size = sizeof(ssao_settings);
-    // Chosen from the Pareto front of error against GPU time that ssao-bench
-    // measured (README, "Accuracy against time"): the uniform distribution has
-    // 1.5-2x less error than the accelerating one at about the same cost; only
-    // the cheapest point keeps the accelerating kernel, whose short samples
-    // read fewer distant texels.
-    switch (preset) {
-        case SSAO_PRESET_LOW:
-            s.sample_count = 4;
-            s.blur = SSAO_BLUR_NONE;
-            break;
-        case SSAO_PRESET_DEFAULT:
-        case SSAO_PRESET_MEDIUM:
-            s.sample_count = 4;
-            s.distribution = SSAO_DISTRIBUTION_UNIFORM;
-            s.blur = SSAO_BLUR_BOX_4X4;
-            break;
-        case SSAO_PRESET_HIGH:
-            s.sample_count = 16;
-            s.distribution = SSAO_DISTRIBUTION_UNIFORM;
-            s.blur = SSAO_BLUR_BOX_4X4;
-            break;
-        case SSAO_PRESET_ULTRA:
-            s.sample_count = 64;
-            s.distribution = SSAO_DISTRIBUTION_UNIFORM;
-            s.blur = SSAO_BLUR_DEPTH_AWARE;
-            break;
-        default:
-            return fail(why, SSAO_ERROR_INVALID_ENUM, "preset is not an ssao_preset");
-    }
+    s.method = row.method;
+    s.sample_count = row.sample_count;
+    s.step_count = row.step_count;
+    s.distribution = row.distribution;
+    s.blur = row.blur;
     return resolve_settings(s, out, why);
 }
 

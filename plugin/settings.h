@@ -9,8 +9,8 @@
 
 namespace ssao_impl {
 
-// Default values of every field (what a zero field resolves to).
-constexpr uint32_t kDefaultSamples = 16;
+// Default values of every field a preset does not set (what a zero field
+// resolves to; the others come from the preset table, presets.h).
 constexpr float kDefaultRadius = 0.5f;
 constexpr float kDefaultBiasFraction = 0.025f;  // of the radius, kernel method
 // The visibility method reads occluders through their tangent plane, which is
@@ -23,9 +23,7 @@ constexpr float kDefaultStrength = 1.0f;
 constexpr uint32_t kDefaultSeed = 1;
 constexpr uint32_t kDefaultBlurRadius = 2;
 constexpr float kDefaultBlurTolerance = 0.05f;
-constexpr ssao_method kDefaultMethod = SSAO_METHOD_KERNEL;
 constexpr float kDefaultThicknessFraction = 0.5f;  // of the radius
-constexpr uint32_t kDefaultSteps = 4;
 constexpr float kMaxStrength = 8.0f;
 constexpr float kMaxPower = 16.0f;
 constexpr float kMaxBlurSigma = 64.0f;

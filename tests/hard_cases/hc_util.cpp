@@ -66,8 +66,14 @@ int check_unit_finite(const std::vector<float>& ao, const char* what) {
 ssao_settings make(uint32_t samples, ssao_blur blur, ssao_rotation rotation, float radius) {
     ssao_settings s{};
     s.size = sizeof s;
+    // The kernel estimator with the accelerating distribution, as these cases
+    // were written for (a zeroed struct is the DEFAULT preset, which may not be).
+    s.method = SSAO_METHOD_KERNEL;
+    s.distribution = SSAO_DISTRIBUTION_ACCELERATING;
     s.sample_count = samples;
-    s.blur = blur;
+    // DEFAULT meant the depth-aware blur when these cases were written (the
+    // kernel method's own default is now the chapter's box).
+    s.blur = blur == SSAO_BLUR_DEFAULT ? SSAO_BLUR_DEPTH_AWARE : blur;
     s.rotation = rotation;
     s.radius = radius;
     s.output_format = SSAO_OUTPUT_R16F;

@@ -791,6 +791,7 @@ TEST_CASE("abi: a sphere kernel sees a flat wall as half occluded") {
     GladGLContext& gl = f.gl();
     Scene scene(gl, kW, kH);
     ssao_settings s = sized<ssao_settings>();
+    s.method = SSAO_METHOD_KERNEL;  // kernel shapes belong to the kernel method
     s.kernel_shape = SSAO_KERNEL_SPHERE;
     s.sample_count = 64;
     s.distribution = SSAO_DISTRIBUTION_UNIFORM;

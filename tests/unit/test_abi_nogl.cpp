@@ -173,16 +173,13 @@ TEST_CASE("abi: resolve_settings and preset_settings through the library") {
     ssao_settings in = sized<ssao_settings>();
     ssao_settings out = sentinel<ssao_settings>();
     REQUIRE(a.resolve_settings(&in, &out) == SSAO_OK);
-    CHECK(out.sample_count == 16u);
-    CHECK(out.radius == 0.5f);
-    CHECK(out.blur == SSAO_BLUR_DEPTH_AWARE);
     ssao_settings medium = sentinel<ssao_settings>();
     REQUIRE(a.preset_settings(SSAO_PRESET_MEDIUM, &medium) == SSAO_OK);
     ssao_settings def = sentinel<ssao_settings>();
     REQUIRE(a.preset_settings(SSAO_PRESET_DEFAULT, &def) == SSAO_OK);
     CHECK(same_bytes(medium, def));
-    CHECK(medium.sample_count == 4u);
-    CHECK(medium.blur == SSAO_BLUR_BOX_4X4);
+    CHECK(same_bytes(out, def));  // a zeroed struct is the DEFAULT preset
+    CHECK(out.radius == 0.5f);
 
     in.radius = kNaN;
     ssao_settings o = sentinel<ssao_settings>();

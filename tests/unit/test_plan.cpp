@@ -20,6 +20,7 @@ namespace {
 ssao_settings resolved(ssao_blur blur, float strength = 0.0f) {
     ssao_settings in{};
     in.size = sizeof in;
+    in.method = SSAO_METHOD_KERNEL;  // the plan's cases name the kernel's program
     in.blur = blur;
     in.strength = strength;
     ssao_settings out{};

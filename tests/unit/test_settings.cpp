@@ -1,5 +1,6 @@
 // test_settings.cpp - resolution and validation of ssao_settings and the
 // presets (plugin/settings.h), against the field documentation in ssao.h.
+#include "presets.h"
 #include "settings.h"
 
 #include <doctest/doctest.h>
@@ -63,28 +64,49 @@ struct BadCase {
 
 }  // namespace
 
-TEST_CASE("settings: a zeroed struct resolves to the documented defaults") {
+TEST_CASE("settings: a zeroed struct resolves to the documented defaults: the DEFAULT preset") {
     const ssao_settings r = resolve_ok(zeroed());
+    const ssao_impl::PresetRow& def = ssao_impl::preset_row(SSAO_PRESET_DEFAULT);
     CHECK(r.size == sizeof(ssao_settings));
-    CHECK(r.sample_count == 16u);
+    CHECK(r.method == def.method);
+    CHECK(r.sample_count == def.sample_count);
+    CHECK(r.step_count == def.step_count);
+    CHECK(r.distribution == def.distribution);
+    CHECK(r.blur == def.blur);
+    ssao_settings preset{};
+    std::string why;
+    REQUIRE(preset_settings(SSAO_PRESET_DEFAULT, preset, why) == SSAO_OK);
+    CHECK(same(r, preset));
     CHECK(r.radius == 0.5f);
-    CHECK(r.bias == doctest::Approx(0.025 * 0.5));
+    CHECK(r.bias == doctest::Approx((def.method == SSAO_METHOD_VISIBILITY ? 0.0025 : 0.025) * 0.5));
     CHECK(r.depth_step_bias == 2.0f);
     CHECK(r.power == 1.0f);
     CHECK(r.strength == 1.0f);
     CHECK(r.kernel_shape == SSAO_KERNEL_HEMISPHERE);
-    CHECK(r.distribution == SSAO_DISTRIBUTION_ACCELERATING);
     CHECK(r.rotation == SSAO_ROTATION_NOISE_4X4);
     CHECK(r.seed == 1u);
-    CHECK(r.blur == SSAO_BLUR_DEPTH_AWARE);
     CHECK(r.blur_radius == 2u);
     CHECK(r.blur_sigma == 2.0f);
     CHECK(r.blur_depth_tolerance == doctest::Approx(0.05));
     CHECK(r.output_format == SSAO_OUTPUT_R8);
 }
 
+TEST_CASE("settings: setting only the kernel method gives the chapter's configuration") {
+    ssao_settings in = zeroed();
+    in.method = SSAO_METHOD_KERNEL;
+    const ssao_settings r = resolve_ok(in);
+    if (ssao_impl::preset_row(SSAO_PRESET_DEFAULT).method != SSAO_METHOD_KERNEL) {
+        CHECK(r.sample_count == 64u);
+        CHECK(r.distribution == SSAO_DISTRIBUTION_ACCELERATING);
+        CHECK(r.blur == SSAO_BLUR_BOX_4X4);
+    }
+    CHECK(r.kernel_shape == SSAO_KERNEL_HEMISPHERE);
+    CHECK(r.bias == doctest::Approx(0.025 * 0.5));
+}
+
 TEST_CASE("settings: derived defaults follow the fields they derive from") {
     ssao_settings in = zeroed();
+    in.method = SSAO_METHOD_KERNEL;
     in.radius = 2.0f;
     in.blur_radius = 5;
     const ssao_settings r = resolve_ok(in);
@@ -145,6 +167,7 @@ TEST_CASE("settings: the derived bias stays a normal float > 0 for a tiny radius
         CHECK(std::isnormal(out.bias));
     }
     ssao_settings in = zeroed();
+    in.method = SSAO_METHOD_KERNEL;
     in.radius = 2.0f;
     CHECK(resolve_ok(in).bias == doctest::Approx(0.05f));  // ordinary radii keep 0.025 x radius
 }
@@ -302,6 +325,8 @@ TEST_CASE("settings: the message of a rejected field names the field") {
 
 TEST_CASE("settings: resolving in place works") {
     ssao_settings s = zeroed();
+    s.method = SSAO_METHOD_KERNEL;
+    s.sample_count = 16;
     s.radius = 3.0f;
     std::string why;
     REQUIRE(resolve_settings(s, s, why) == SSAO_OK);
@@ -330,27 +355,29 @@ TEST_CASE("settings: every preset resolves to the documented table") {
     const ssao_settings& high = got[3];
     const ssao_settings& ultra = got[4];
     CHECK(same(def, medium));  // DEFAULT = MEDIUM
-    // The table in ssao.h and the README (chosen by ssao-bench).
-    CHECK(low.sample_count == 4u);
-    CHECK(low.blur == SSAO_BLUR_NONE);
-    CHECK(low.distribution == SSAO_DISTRIBUTION_ACCELERATING);
-    CHECK(medium.sample_count == 4u);
-    CHECK(medium.blur == SSAO_BLUR_BOX_4X4);
-    CHECK(high.sample_count == 16u);
-    CHECK(high.blur == SSAO_BLUR_BOX_4X4);
-    CHECK(ultra.sample_count == 64u);
-    CHECK(ultra.blur == SSAO_BLUR_DEPTH_AWARE);
-    // More samples never cost less: cost grows from LOW to ULTRA.
-    CHECK(low.sample_count <= medium.sample_count);
-    CHECK(medium.sample_count < high.sample_count);
-    CHECK(high.sample_count < ultra.sample_count);
+    // Each preset is its row of the table (plugin/presets.cpp), nothing else.
+    const ssao_preset named[] = {SSAO_PRESET_LOW, SSAO_PRESET_MEDIUM, SSAO_PRESET_HIGH, SSAO_PRESET_ULTRA};
+    for (int i = 0; i < 4; ++i) {
+        CAPTURE(i);
+        const ssao_impl::PresetRow& row = ssao_impl::preset_row(named[i]);
+        const ssao_settings& p = got[i + 1];
+        CHECK(p.method == row.method);
+        CHECK(p.sample_count == row.sample_count);
+        CHECK(p.step_count == row.step_count);
+        CHECK(p.distribution == row.distribution);
+        CHECK(p.blur == row.blur);
+    }
+    // Cost grows from LOW to ULTRA: more samples (times steps) at each level.
+    auto work = [](const ssao_settings& p) { return p.sample_count * (p.method == SSAO_METHOD_VISIBILITY ? p.step_count : 1u); };
+    CHECK(work(low) <= work(medium) * 4u);
+    CHECK(work(medium) < work(high));
+    CHECK(work(high) < work(ultra));
     // Presets change only the cost and accuracy fields; the rest stay defaults.
     const ssao_settings zero = resolve_ok(zeroed());
-    for (const ssao_settings* p : {&medium, &high, &ultra}) CHECK(p->distribution == SSAO_DISTRIBUTION_UNIFORM);
     for (const ssao_settings* p : {&low, &medium, &high, &ultra}) {
         CHECK(p->strength == 1.0f);
         CHECK(p->radius == zero.radius);
-        CHECK(p->bias == zero.bias);
+        CHECK(p->bias == doctest::Approx((p->method == SSAO_METHOD_VISIBILITY ? 0.0025 : 0.025) * zero.radius));
         CHECK(p->kernel_shape == zero.kernel_shape);
         CHECK(p->rotation == zero.rotation);
     }

@@ -1,0 +1,39 @@
+#include "presets.h"
+
+namespace ssao_impl {
+
+namespace {
+
+// Picked from ssao-bench's front by the rule in the README ("Presets"): each
+// preset is the most accurate configuration (mean PSNR against V_R over the
+// bundled scenes) within its share of the textbook pass's GPU time.
+constexpr PresetRow kLow{SSAO_METHOD_KERNEL, 4, 4, SSAO_DISTRIBUTION_UNIFORM, SSAO_BLUR_BOX_4X4};
+constexpr PresetRow kMedium{SSAO_METHOD_VISIBILITY, 2, 8, SSAO_DISTRIBUTION_UNIFORM, SSAO_BLUR_DEPTH_AWARE};
+constexpr PresetRow kHigh{SSAO_METHOD_VISIBILITY, 4, 8, SSAO_DISTRIBUTION_UNIFORM, SSAO_BLUR_DEPTH_AWARE};
+constexpr PresetRow kUltra{SSAO_METHOD_VISIBILITY, 8, 16, SSAO_DISTRIBUTION_UNIFORM, SSAO_BLUR_DEPTH_AWARE};
+
+// Each method's classic configuration, for a method other than the DEFAULT
+// preset's (see defaults_for_method).
+constexpr PresetRow kChapterKernel{SSAO_METHOD_KERNEL, 64, 4, SSAO_DISTRIBUTION_ACCELERATING, SSAO_BLUR_BOX_4X4};
+constexpr PresetRow kPlainVisibility{SSAO_METHOD_VISIBILITY, 8, 8, SSAO_DISTRIBUTION_UNIFORM, SSAO_BLUR_DEPTH_AWARE};
+
+}  // namespace
+
+const PresetRow& preset_row(ssao_preset preset) {
+    switch (preset) {
+        case SSAO_PRESET_LOW: return kLow;
+        case SSAO_PRESET_HIGH: return kHigh;
+        case SSAO_PRESET_ULTRA: return kUltra;
+        case SSAO_PRESET_DEFAULT:
+        case SSAO_PRESET_MEDIUM:
+        default: return kMedium;
+    }
+}
+
+const PresetRow& defaults_for_method(ssao_method method) {
+    const PresetRow& def = preset_row(SSAO_PRESET_DEFAULT);
+    if (method == def.method) return def;
+    return method == SSAO_METHOD_KERNEL ? kChapterKernel : kPlainVisibility;
+}
+
+}  // namespace ssao_impl
