@@ -26,6 +26,8 @@ constexpr float kDefaultBlurTolerance = 0.05f;
 constexpr ssao_method kDefaultMethod = SSAO_METHOD_KERNEL;
 constexpr float kDefaultThicknessFraction = 0.5f;  // of the radius
 constexpr uint32_t kDefaultSteps = 4;
+// What SSAO_RESOLUTION_DEFAULT resolves to: the one place to change it.
+constexpr ssao_resolution kDefaultResolution = SSAO_RESOLUTION_FULL;
 constexpr float kMaxStrength = 8.0f;
 constexpr float kMaxPower = 16.0f;
 constexpr float kMaxBlurSigma = 64.0f;
@@ -50,6 +52,11 @@ ssao_status resolve_settings(const ssao_settings& in, ssao_settings& out, std::s
 // A preset, resolved. Takes the preset's raw 32 bits (raw_enum.h): any value
 // a C caller passes is checked before it is read as an ssao_preset.
 ssao_status preset_settings(uint32_t raw_preset, ssao_settings& out, std::string& why);
+
+// Viewport pixels per reduced-grid texel along each axis: 1, 2 or 4.
+inline int resolution_scale(const ssao_settings& resolved) {
+    return resolved.resolution == SSAO_RESOLUTION_QUARTER ? 4 : resolved.resolution == SSAO_RESOLUTION_HALF ? 2 : 1;
+}
 
 // Strength as a number (SSAO_STRENGTH_OFF -> 0).
 inline float effective_strength(const ssao_settings& resolved) {
