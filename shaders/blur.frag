@@ -4,9 +4,10 @@
 // not carried across silhouettes; sky taps never count). The view depth comes
 // with the AO from the previous pass; the depth texture is not read.
 
-uniform sampler2D u_ao_tex;     // RG32F (ao, view z), viewport-sized, texel (0,0) = viewport pixel (0,0)
+uniform sampler2D u_ao_tex;     // RG32F (ao, view z), viewport- (or grid-) sized, texel (0,0) = viewport pixel (0,0)
 uniform ivec2 u_blur_dir;       // (1,0) or (0,1); unused by the box
 uniform bool u_pack_depth;      // writing the next blur pass's input: (ao, view z)
+uniform ivec2 u_pass_size;      // the grid blurred: the viewport, or the reduced grid below full resolution
 
 out vec4 o_ao;
 
@@ -15,7 +16,7 @@ vec4 result(float ao, float z) { return u_pack_depth ? vec4(ao, z, 0.0, 1.0) : v
 
 void main() {
     ivec2 vpx = ivec2(gl_FragCoord.xy) - u_target_origin;
-    ivec2 size = u_viewport.zw;
+    ivec2 size = u_pass_size;
     int kind = u_counts.w;
     vec2 c = texelFetch(u_ao_tex, vpx, 0).rg;
     float centre = c.r, z0 = c.g;
