@@ -42,7 +42,7 @@ private:
 };
 
 // Below full resolution: downsample -> AO -> [blur x -> [blur y]] on the
-// reduced grid (ceil(w/scale) x ceil(h/scale): the last block of an odd size
+// reduced grid (every blur kind made depth-aware there) (ceil(w/scale) x ceil(h/scale): the last block of an odd size
 // is partial, never dropped) -> depth-aware upsample into the output, which
 // writes every viewport pixel.
 void plan_reduced(Builder& b, int scale, ProgramId estimator, bool blur, bool separable, int vw, int vh,
@@ -70,12 +70,14 @@ void plan_reduced(Builder& b, int scale, ProgramId estimator, bool blur, bool se
         Pass& bx = b.add(PassKind::blur_x, ProgramId::blur, x_target, low);
         bx.inputs[SSAO_UNIT_AO] = ao_target;
         bx.direction[0] = 1;
+        bx.depth_aware = true;
         low_ao = x_target;
         if (separable) {
             // Back into the AO pass's texture: its contents are no longer needed.
             Pass& by = b.add(PassKind::blur_y, ProgramId::blur, ao_target, low);
             by.inputs[SSAO_UNIT_AO] = x_target;
             by.direction[1] = 1;
+            by.depth_aware = true;
             low_ao = ao_target;
         }
     }

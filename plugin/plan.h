@@ -103,6 +103,10 @@ struct Pass {
     // downsample's intermediate), the grid the downsample writes, the grid
     // the upsample reads. Blurs ignore it.
     int scale = 1;
+    // Blurs: weigh taps by depth similarity whatever the blur kind
+    // (u_depth_aware). Set below full resolution, where a blurred grid texel
+    // spans several pixels and the upsample could not undo a leak.
+    bool depth_aware = false;
 };
 
 // A texture the plan renders into and a later pass samples.

@@ -36,6 +36,7 @@ PassUniforms find_pass_uniforms(const GladGLContext& gl, GLuint program) {
     u.blur_dir = gl.GetUniformLocation(program, "u_blur_dir");
     u.pass_size = gl.GetUniformLocation(program, "u_pass_size");
     u.scale = gl.GetUniformLocation(program, "u_scale");
+    u.depth_aware = gl.GetUniformLocation(program, "u_depth_aware");
     return u;
 }
 
@@ -45,6 +46,7 @@ void set_pass_uniforms(const GladGLContext& gl, const PassUniforms& u, const Pas
     gl.Uniform2i(u.blur_dir, pass.direction[0], pass.direction[1]);
     gl.Uniform2i(u.pass_size, pass.rect.width, pass.rect.height);
     gl.Uniform1i(u.scale, pass.scale);
+    gl.Uniform1i(u.depth_aware, pass.depth_aware ? 1 : 0);
 }
 
 }  // namespace ssao_impl

@@ -305,6 +305,9 @@ TEST_CASE("plan: half resolution of 641x359 - downsample, AO and blur on a 321x1
         CHECK(up.inputs[SSAO_UNIT_DEPTH].source == Source::depth);  // its own full-resolution depth
         CHECK(up.inputs[SSAO_UNIT_AO] == p.passes[3].target);
         CHECK(up.inputs[SSAO_UNIT_NORMAL].source == Source::none);
+        // Blurs on the grid weigh taps by depth (a leak there would span blocks).
+        CHECK(p.passes[2].depth_aware);
+        CHECK(p.passes[3].depth_aware);
     }
 }
 
@@ -346,8 +349,10 @@ TEST_CASE("plan: reduced resolution for every blur, both methods, quarter too, a
                     CHECK((lw - 1) * scale < sz[0]);
                     CHECK(lh * scale >= sz[1]);
                     CHECK((lh - 1) * scale < sz[1]);
-                    for (int i = 0; i < p.pass_count; ++i)
+                    for (int i = 0; i < p.pass_count; ++i) {
                         if (p.passes[i].program != ProgramId::blur) CHECK(p.passes[i].scale == scale);
+                        else CHECK(p.passes[i].depth_aware);
+                    }
                 }
             }
         }
@@ -359,7 +364,10 @@ TEST_CASE("plan: full resolution plans no downsample or upsample; strength off s
     for (ssao_blur blur : {SSAO_BLUR_NONE, SSAO_BLUR_BOX_4X4, SSAO_BLUR_DEPTH_AWARE}) {
         const FramePlan p = plan_frame(at_resolution(blur, SSAO_RESOLUTION_FULL), in);
         CHECK((p.passes_run() & uint32_t(SSAO_PASS_DOWNSAMPLE | SSAO_PASS_UPSAMPLE)) == 0u);
-        for (int i = 0; i < p.pass_count; ++i) CHECK(p.passes[i].scale == 1);
+        for (int i = 0; i < p.pass_count; ++i) {
+            CHECK(p.passes[i].scale == 1);
+            CHECK_FALSE(p.passes[i].depth_aware);  // the blur kind alone decides at full resolution
+        }
     }
     for (ssao_resolution res : {SSAO_RESOLUTION_HALF, SSAO_RESOLUTION_QUARTER}) {
         ssao_settings s = at_resolution(SSAO_BLUR_DEPTH_AWARE, res);
