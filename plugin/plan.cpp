@@ -42,9 +42,9 @@ private:
 };
 
 // Below full resolution: downsample -> AO -> [blur x -> [blur y]] on the
-// reduced grid (every blur kind made depth-aware there) (ceil(w/scale) x ceil(h/scale): the last block of an odd size
-// is partial, never dropped) -> depth-aware upsample into the output, which
-// writes every viewport pixel.
+// reduced grid, ceil(w/scale) x ceil(h/scale) (the last block of an odd size
+// is partial, never dropped; every blur kind is made depth-aware there) ->
+// depth-aware upsample into the output, which writes every viewport pixel.
 void plan_reduced(Builder& b, int scale, ProgramId estimator, bool blur, bool separable, int vw, int vh,
                   const TexRef& output, const Rect& final_rect) {
     const int lw = (vw + scale - 1) / scale, lh = (vh + scale - 1) / scale;
