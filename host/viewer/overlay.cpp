@@ -116,8 +116,12 @@ std::vector<std::string> overlay_lines(const State& s, const ssao_timings& t, in
         lines.push_back(printf_string("samples %u  radius %.3g  bias %.3g  strength %.3g  power %.3g", c.sample_count,
                                       double(c.radius), double(c.bias),
                                       c.strength == SSAO_STRENGTH_OFF ? 0.0 : double(c.strength), double(c.power)));
-        lines.push_back(printf_string("kernel %s  distribution %s  rotation %s", cli::name(c.kernel_shape),
-                                      cli::name(c.distribution), cli::name(c.rotation)));
+        std::string sampling = printf_string("kernel %s  distribution %s  rotation %s", cli::name(c.kernel_shape),
+                                             cli::name(c.distribution), cli::name(c.rotation));
+#ifdef SSAO_SETTINGS_SIZE_1_0   // interface 1.1 has ssao_settings.resolution (on this line: the overlay keeps its height)
+        sampling += printf_string("  resolution %s", resolution_name(c.resolution));
+#endif
+        lines.push_back(sampling);
 #ifdef SSAO_SETTINGS_SIZE_1_0   // interface 1.1 has ssao_settings.method
         if (c.method == SSAO_METHOD_VISIBILITY)
             lines.push_back(printf_string("blur %s (radius %u)  estimator visibility (%u steps, thickness %.3g)",
@@ -126,9 +130,6 @@ std::vector<std::string> overlay_lines(const State& s, const ssao_timings& t, in
             lines.push_back(printf_string("blur %s (radius %u)  estimator kernel", cli::name(c.blur), c.blur_radius));
 #else
         lines.push_back(printf_string("blur %s (radius %u)", cli::name(c.blur), c.blur_radius));
-#endif
-#ifdef SSAO_SETTINGS_SIZE_1_0   // interface 1.1 has ssao_settings.resolution
-        lines.push_back(printf_string("resolution %s", resolution_name(c.resolution)));
 #endif
         if (t.available)
             lines.push_back(gpu_line(t));
