@@ -20,7 +20,8 @@ ivec2 grid_size() { return (u_viewport.zw + u_scale - 1) / u_scale; }
 
 // The viewport pixel grid texel t stands for: one real pixel of its block,
 // near the block's centre, alternating between two positions in a
-// checkerboard (half: top-left / bottom-right of the 2x2 block) so that a
+// checkerboard (half: offset (0,0) or (1,1) in the 2x2 block, by the parity
+// of t.x + t.y; quarter: (1,1) or (2,2) in the 4x4 block) so that a
 // one-pixel-wide feature is picked in every other block along it. Clamped
 // into the viewport for the partial blocks of odd sizes.
 ivec2 grid_pixel(ivec2 t) {
