@@ -47,15 +47,19 @@ enum class PassKind : uint32_t {
     ao = SSAO_PASS_AO,          // the sampling pass
     blur_x = SSAO_PASS_BLUR_X,  // horizontal blur (or the box blur's single pass)
     blur_y = SSAO_PASS_BLUR_Y,  // vertical blur
+    downsample = SSAO_PASS_DOWNSAMPLE,  // reduced resolution: one picked texel's depth and normal per block
+    upsample = SSAO_PASS_UPSAMPLE,      // reduced resolution: depth-aware upsample to every viewport pixel
 };
 
 // The compiled programs (programs.cpp has one row per id). A clear draws nothing.
 // ao and visibility are the two estimators (ssao_settings.method) of the ao pass.
-enum class ProgramId : int { none = -1, ao = 0, visibility = 1, blur = 2, count = 3 };
+// downsample and upsample run only below full resolution (ssao_settings.resolution).
+enum class ProgramId : int { none = -1, ao = 0, visibility = 1, blur = 2, downsample = 3, upsample = 4, count = 5 };
 
 // Formats of the textures the plan renders into.
 enum class TexFormat : uint8_t {
     rg32f,  // intermediate: (ao, view z) for the next pass
+    rgba32f,  // intermediate: the downsample's (depth as stored, view-space normal) per block
     r8,     // owned output, SSAO_OUTPUT_R8
     r16f,   // owned output, SSAO_OUTPUT_R16F
 };
@@ -94,6 +98,15 @@ struct Pass {
     Rect rect;               // where it draws in its target: origin and size, in target texels
     bool pack_depth = false; // writes (ao, view z) for a following pass instead of the final AO
     int direction[2] = {0, 0};  // blur direction (u_blur_dir)
+    // Viewport pixels per texel of the reduced grid (u_scale: 1, 2 or 4):
+    // the grid the sampling pass reads (1: the host's textures, else the
+    // downsample's intermediate), the grid the downsample writes, the grid
+    // the upsample reads. Blurs ignore it.
+    int scale = 1;
+    // Blurs: weigh taps by depth similarity whatever the blur kind
+    // (u_depth_aware). Set below full resolution, where a blurred grid texel
+    // spans several pixels and the upsample could not undo a leak.
+    bool depth_aware = false;
 };
 
 // A texture the plan renders into and a later pass samples.

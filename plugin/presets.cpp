@@ -7,15 +7,15 @@ namespace {
 // Picked from ssao-bench's front by the rule in the README ("Presets"): each
 // preset is the most accurate configuration (mean PSNR against V_R over the
 // bundled scenes) within its share of the textbook pass's GPU time.
-constexpr PresetRow kLow{SSAO_METHOD_KERNEL, 4, 4, SSAO_DISTRIBUTION_UNIFORM, SSAO_BLUR_BOX_4X4};
-constexpr PresetRow kMedium{SSAO_METHOD_VISIBILITY, 2, 8, SSAO_DISTRIBUTION_UNIFORM, SSAO_BLUR_DEPTH_AWARE};
-constexpr PresetRow kHigh{SSAO_METHOD_VISIBILITY, 4, 8, SSAO_DISTRIBUTION_UNIFORM, SSAO_BLUR_DEPTH_AWARE};
-constexpr PresetRow kUltra{SSAO_METHOD_VISIBILITY, 8, 16, SSAO_DISTRIBUTION_UNIFORM, SSAO_BLUR_DEPTH_AWARE};
+constexpr PresetRow kLow{SSAO_METHOD_KERNEL, 4, 4, SSAO_DISTRIBUTION_UNIFORM, SSAO_BLUR_BOX_4X4, SSAO_RESOLUTION_FULL};
+constexpr PresetRow kMedium{SSAO_METHOD_VISIBILITY, 2, 8, SSAO_DISTRIBUTION_UNIFORM, SSAO_BLUR_DEPTH_AWARE, SSAO_RESOLUTION_FULL};
+constexpr PresetRow kHigh{SSAO_METHOD_VISIBILITY, 4, 8, SSAO_DISTRIBUTION_UNIFORM, SSAO_BLUR_DEPTH_AWARE, SSAO_RESOLUTION_FULL};
+constexpr PresetRow kUltra{SSAO_METHOD_VISIBILITY, 8, 16, SSAO_DISTRIBUTION_UNIFORM, SSAO_BLUR_DEPTH_AWARE, SSAO_RESOLUTION_FULL};
 
 // Each method's classic configuration, for a method other than the DEFAULT
 // preset's (see defaults_for_method).
-constexpr PresetRow kChapterKernel{SSAO_METHOD_KERNEL, 64, 4, SSAO_DISTRIBUTION_ACCELERATING, SSAO_BLUR_BOX_4X4};
-constexpr PresetRow kPlainVisibility{SSAO_METHOD_VISIBILITY, 8, 8, SSAO_DISTRIBUTION_UNIFORM, SSAO_BLUR_DEPTH_AWARE};
+constexpr PresetRow kChapterKernel{SSAO_METHOD_KERNEL, 64, 4, SSAO_DISTRIBUTION_ACCELERATING, SSAO_BLUR_BOX_4X4, SSAO_RESOLUTION_FULL};
+constexpr PresetRow kPlainVisibility{SSAO_METHOD_VISIBILITY, 8, 8, SSAO_DISTRIBUTION_UNIFORM, SSAO_BLUR_DEPTH_AWARE, SSAO_RESOLUTION_FULL};
 
 }  // namespace
 

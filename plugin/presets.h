@@ -20,6 +20,7 @@ struct PresetRow {
     uint32_t step_count;                    // visibility: steps per direction (kernel: unused)
     ssao_kernel_distribution distribution;  // kernel only
     ssao_blur blur;
+    ssao_resolution resolution;             // where the AO is sampled (full, half, quarter)
 };
 
 // The row of a valid preset; DEFAULT is MEDIUM.

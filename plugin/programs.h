@@ -29,6 +29,9 @@ struct PassUniforms {
     GLint target_origin = -1;  // u_target_origin: Pass::rect's origin
     GLint pack_depth = -1;     // u_pack_depth: Pass::pack_depth
     GLint blur_dir = -1;       // u_blur_dir: Pass::direction
+    GLint pass_size = -1;      // u_pass_size: Pass::rect's size (the grid a blur walks)
+    GLint scale = -1;          // u_scale: Pass::scale
+    GLint depth_aware = -1;    // u_depth_aware: Pass::depth_aware
 };
 
 PassUniforms find_pass_uniforms(const GladGLContext& gl, GLuint program);

@@ -128,6 +128,10 @@ ssao_status resolve_settings(const ssao_settings& caller, ssao_settings& out, st
         return fail(why, SSAO_ERROR_INVALID_VALUE,
                     "step_count " + std::to_string(r.step_count) + " is outside 1..32");
 
+    if (!raw_enum_at_most(r.resolution, SSAO_RESOLUTION_QUARTER))
+        return fail(why, SSAO_ERROR_INVALID_ENUM, "resolution is not an ssao_resolution");
+    if (r.resolution == SSAO_RESOLUTION_DEFAULT) r.resolution = defaults.resolution;
+
     out = r;
     return SSAO_OK;
 }
@@ -142,6 +146,7 @@ ssao_status preset_settings(uint32_t raw_preset, ssao_settings& out, std::string
     s.step_count = row.step_count;
     s.distribution = row.distribution;
     s.blur = row.blur;
+    s.resolution = row.resolution;
     return resolve_settings(s, out, why);
 }
 

@@ -109,6 +109,14 @@ class ssao_method(enum.IntEnum):
     SSAO_METHOD_MAX_ENUM = 0x7FFFFFFF
 
 
+class ssao_resolution(enum.IntEnum):
+    SSAO_RESOLUTION_DEFAULT = 0
+    SSAO_RESOLUTION_FULL = 1
+    SSAO_RESOLUTION_HALF = 2
+    SSAO_RESOLUTION_QUARTER = 3
+    SSAO_RESOLUTION_MAX_ENUM = 0x7FFFFFFF
+
+
 class ssao_output_format(enum.IntEnum):
     SSAO_OUTPUT_DEFAULT = 0
     SSAO_OUTPUT_R8 = 1
@@ -151,6 +159,8 @@ class ssao_pass(enum.IntEnum):
     SSAO_PASS_BLUR_X = 2
     SSAO_PASS_BLUR_Y = 4
     SSAO_PASS_CLEAR = 8
+    SSAO_PASS_DOWNSAMPLE = 16
+    SSAO_PASS_UPSAMPLE = 32
     SSAO_PASS_MAX_ENUM = 0x7FFFFFFF
 
 
@@ -162,7 +172,7 @@ class ssao_log_level(enum.IntEnum):
 
 
 ENUMS = (ssao_status, ssao_kernel_shape, ssao_kernel_distribution, ssao_rotation, ssao_blur,
-         ssao_method, ssao_output_format, ssao_preset, ssao_clip_range, ssao_normal_space, ssao_normal_packing,
+         ssao_method, ssao_resolution, ssao_output_format, ssao_preset, ssao_clip_range, ssao_normal_space, ssao_normal_packing,
          ssao_pass, ssao_log_level)
 for _e in ENUMS:
     globals().update(_e.__members__)
@@ -213,6 +223,7 @@ class ssao_settings(_Sized):
         ("method", _enum),
         ("thickness", ctypes.c_float),
         ("step_count", ctypes.c_uint32),
+        ("resolution", _enum),
     ]
 
 

@@ -4,9 +4,11 @@
 // not carried across silhouettes; sky taps never count). The view depth comes
 // with the AO from the previous pass; the depth texture is not read.
 
-uniform sampler2D u_ao_tex;     // RG32F (ao, view z), viewport-sized, texel (0,0) = viewport pixel (0,0)
+uniform sampler2D u_ao_tex;     // RG32F (ao, view z), viewport- (or grid-) sized, texel (0,0) = viewport pixel (0,0)
 uniform ivec2 u_blur_dir;       // (1,0) or (0,1); unused by the box
 uniform bool u_pack_depth;      // writing the next blur pass's input: (ao, view z)
+uniform ivec2 u_pass_size;      // the grid blurred: the viewport, or the reduced grid below full resolution
+uniform bool u_depth_aware;     // below full resolution: every kind weighs taps by depth similarity
 
 out vec4 o_ao;
 
@@ -15,29 +17,32 @@ vec4 result(float ao, float z) { return u_pack_depth ? vec4(ao, z, 0.0, 1.0) : v
 
 void main() {
     ivec2 vpx = ivec2(gl_FragCoord.xy) - u_target_origin;
-    ivec2 size = u_viewport.zw;
+    ivec2 size = u_pass_size;
     int kind = u_counts.w;
     vec2 c = texelFetch(u_ao_tex, vpx, 0).rg;
     float centre = c.r, z0 = c.g;
     if (z0 == SKY_Z) { o_ao = result(1.0, SKY_Z); return; }  // the sky stays exactly 1
+    // Floored: an orthographic camera whose near plane lies behind the eye
+    // has surfaces at view z = 0, where 0/0 would be undefined.
+    float tolerance = max(u_ao2.z * abs(z0), 1e-30);
     if (kind == SSAO_SHADER_BLUR_BOX) {
         // The chapter's blur: offsets -2..1 in x and y, clamped at the edges;
         // sky taps take no part in the average (the centre never is sky).
+        // Depth-aware below full resolution: taps weighted as the
+        // depth-aware gaussian weighs them (the centre always counts).
         float sum = 0.0, count = 0.0;
         for (int y = -2; y < 2; ++y)
             for (int x = -2; x < 2; ++x) {
                 vec2 tap = texelFetch(u_ao_tex, clamp(vpx + ivec2(x, y), ivec2(0), size - 1), 0).rg;
                 if (tap.g == SKY_Z) continue;
-                sum += tap.r;
-                count += 1.0;
+                float w = u_depth_aware ? clamp(1.0 - abs(tap.g - z0) / tolerance, 0.0, 1.0) : 1.0;
+                sum += tap.r * w;
+                count += w;
             }
         o_ao = result(sum / count, z0);
         return;
     }
-    bool aware = kind == SSAO_SHADER_BLUR_DEPTH_AWARE;
-    // Floored: an orthographic camera whose near plane lies behind the eye
-    // has surfaces at view z = 0, where 0/0 would be undefined.
-    float tolerance = max(u_ao2.z * abs(z0), 1e-30);
+    bool aware = kind == SSAO_SHADER_BLUR_DEPTH_AWARE || u_depth_aware;
     float inv2s2 = 0.5 / (u_ao2.y * u_ao2.y);
     float sum = centre, weight = 1.0;
     for (int k = -u_counts.z; k <= u_counts.z; ++k) {

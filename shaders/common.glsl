@@ -4,10 +4,36 @@
 
 uniform sampler2D u_depth_tex;
 
-// Where viewport pixel (0,0) lands in the pass's render target.
+// Where viewport pixel (0,0) (or grid texel (0,0)) lands in the pass's render target.
 uniform ivec2 u_target_origin;
 
-float fetch_depth(ivec2 px) { return texelFetch(u_depth_tex, px, 0).r; }
+// Viewport pixels per texel of the grid the pass reads or writes (plan.h
+// Pass::scale): 1 = the viewport itself, 2 = half, 4 = quarter resolution.
+uniform int u_scale;
+
+// The host's depth at viewport pixel vpx.
+float input_depth(ivec2 vpx) { return texelFetch(u_depth_tex, vpx + u_viewport.xy, 0).r; }
+
+// The grid: ceil(viewport / scale) texels, so an odd size's last block is
+// partial and still has its texel.
+ivec2 grid_size() { return (u_viewport.zw + u_scale - 1) / u_scale; }
+
+// The viewport pixel grid texel t stands for: one real pixel of its block,
+// near the block's centre, alternating between two positions in a
+// checkerboard (half: offset (0,0) or (1,1) in the 2x2 block, by the parity
+// of t.x + t.y; quarter: (1,1) or (2,2) in the 4x4 block) so that a
+// one-pixel-wide feature is picked in every other block along it. Clamped
+// into the viewport for the partial blocks of odd sizes.
+ivec2 grid_pixel(ivec2 t) {
+    if (u_scale == 1) return t;
+    int o = u_scale / 2 - 1 + ((t.x + t.y) & 1);
+    return min(t * u_scale + o, u_viewport.zw - 1);
+}
+
+// Depth of grid texel t: at scale 1 the host's depth texture; below full
+// resolution u_depth_tex is the downsample's grid, whose red channel is the
+// picked pixel's depth copied bit for bit.
+float fetch_depth(ivec2 t) { return u_scale == 1 ? input_depth(t) : texelFetch(u_depth_tex, t, 0).r; }
 
 // The far plane (cleared depth) in either convention: exact comparison, since
 // a cleared buffer holds exactly the clear value.
@@ -17,13 +43,16 @@ float ndc_z_of(float d) { return u_ao2.w == 2.0 ? d * 2.0 - 1.0 : d; }
 
 vec2 ndc_xy_of(vec2 viewport_px) { return viewport_px / vec2(u_viewport.zw) * 2.0 - 1.0; }
 
-// View-space position of the centre of input pixel px holding depth d, in
-// xyz; w keeps the homogeneous w of the reconstruction for depth_step().
-vec4 view_position_w(ivec2 px, float d) {
-    vec2 ndc = ndc_xy_of(vec2(px - u_viewport.xy) + 0.5);
-    vec4 v = u_inv_proj * vec4(ndc, ndc_z_of(d), 1.0);
+// View-space position of the point at viewport pixel coordinates vp (a
+// pixel's centre is +0.5) holding depth d, in xyz; w keeps the homogeneous w
+// of the reconstruction for depth_step().
+vec4 view_position_at(vec2 vp, float d) {
+    vec4 v = u_inv_proj * vec4(ndc_xy_of(vp), ndc_z_of(d), 1.0);
     return vec4(v.xyz / v.w, v.w);
 }
+
+// Of grid texel t (its picked pixel's centre) holding depth d.
+vec4 view_position_w(ivec2 t, float d) { return view_position_at(vec2(grid_pixel(t)) + 0.5, d); }
 
 // View-space z change for one step of the depth format at depth d, from the
 // point p = view_position_w(px, d): |dz/d(ndc)| * d(ndc)/d(depth) * step.

@@ -12,10 +12,10 @@ vec4 result(float ao, float z) { return u_pack_depth ? vec4(ao, z, 0.0, 1.0) : v
 
 bool finite3(vec3 v) { return all(lessThan(abs(v), vec3(3.0e38))) && !any(isnan(v)); }
 
-// The normal in view space, unit length and facing the camera; a broken normal
-// (zero, NaN, inf) falls back to the direction towards the camera.
-vec3 load_normal(ivec2 px, vec3 to_eye) {
-    vec3 n = texelFetch(u_normal_tex, px, 0).xyz;
+// A texel of the host's normal texture in view space, unit length and facing
+// the camera; a broken normal (zero, NaN, inf) falls back to the direction
+// towards the camera.
+vec3 decode_normal(vec3 n, vec3 to_eye) {
     if (u_modes.w == SSAO_SHADER_PACKING_UNORM) n = n * 2.0 - 1.0;
     if (u_modes.z == SSAO_SHADER_NORMAL_WORLD) n = mat3(u_normal_to_view) * n;
     // Scale by the largest component first: a huge but finite normal (1e20)
@@ -35,6 +35,14 @@ vec3 load_normal(ivec2 px, vec3 to_eye) {
         n = normalize(n);
     }
     return n;
+}
+
+// The normal of grid texel t as the sampling passes see it. Below full
+// resolution the downsample has decoded it already (the picked pixel's, for
+// the same to_eye).
+vec3 load_normal(ivec2 t, vec3 to_eye) {
+    if (u_scale != 1) return texelFetch(u_normal_tex, t, 0).yzw;
+    return decode_normal(texelFetch(u_normal_tex, t + u_viewport.xy, 0).xyz, to_eye);
 }
 
 // Orthonormal basis around n (Duff et al. 2017): no degenerate case, unlike
@@ -98,7 +106,7 @@ vec3 snap_to_texel_ray(vec3 s, vec3 n, vec3 Q, bool ortho) {
 
 // What both sampling passes know about the pixel they shade.
 struct Surface {
-    ivec2 vpx;    // viewport-relative pixel
+    ivec2 vpx;    // grid texel (the viewport pixel at full resolution)
     vec3 P;       // view-space position
     vec3 n;       // unit normal facing the camera (load_normal)
     mat3 TBN;     // tangent frame around n, rotated per pixel
@@ -110,7 +118,7 @@ struct Surface {
 // is not finite (they get AO 1).
 bool load_surface(out Surface sf) {
     sf.vpx = ivec2(gl_FragCoord.xy) - u_target_origin;
-    ivec2 px = sf.vpx + u_viewport.xy;  // input texel
+    ivec2 px = sf.vpx;
     float d = fetch_depth(px);
     vec4 Pw = view_position_w(px, d);
     sf.P = Pw.xyz;
@@ -127,14 +135,14 @@ bool load_surface(out Surface sf) {
     return true;
 }
 
-// Where the point with clip coordinates c lands: the input texel, or false
-// when it is behind the eye or off the viewport.
+// Where the point with clip coordinates c lands: the grid texel whose block
+// holds it, or false when it is behind the eye or off the viewport.
 bool clip_to_texel(vec4 c, out ivec2 texel) {
     texel = ivec2(0);
     if (!(c.w > 0.0)) return false;
     vec2 spf = (c.xy / c.w * 0.5 + 0.5) * vec2(u_viewport.zw);
     if (any(lessThan(spf, vec2(0.0))) || any(greaterThanEqual(spf, vec2(u_viewport.zw)))) return false;
-    texel = ivec2(spf) + u_viewport.xy;
+    texel = ivec2(spf) / u_scale;
     return true;
 }
 

@@ -89,9 +89,16 @@ void Controls::key(int k, int action) {
             state_.notice = "M: this plugin has no estimator choice";
 #endif
             break;
-        // HOOK(half-resolution): when ssao_settings gains a half-resolution
-        // switch, H toggles it here (and overlay.cpp prints it).
-        case GLFW_KEY_H: state_.notice = "H: this plugin has no half-resolution switch"; break;
+        case GLFW_KEY_H:
+#ifdef SSAO_SETTINGS_SIZE_1_0   // interface 1.1 has ssao_settings.resolution
+            // The grid the sampling pass runs on: full -> half -> quarter -> full.
+            state_.settings.resolution = state_.settings.resolution == SSAO_RESOLUTION_HALF      ? SSAO_RESOLUTION_QUARTER
+                                         : state_.settings.resolution == SSAO_RESOLUTION_QUARTER ? SSAO_RESOLUTION_FULL
+                                                                                                 : SSAO_RESOLUTION_HALF;
+#else
+            state_.notice = "H: this plugin has no half-resolution switch";
+#endif
+            break;
         default: break;
     }
 }

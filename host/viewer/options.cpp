@@ -76,7 +76,7 @@ std::string help_text(const std::string& default_scene) {
            "  B                    next blur: depth-aware, 4x4 box, gaussian, none\n"
            "  V                    view: lit, AO only                   O   overlay on/off\n"
            "  M                    estimator: point kernel or ray-marched visibility (interface 1.1)\n"
-           "  H                    half resolution (when the plugin offers it)\n"
+           "  H                    resolution: full, half, quarter\n"
            "  F12                  screenshot                           Esc quit\n";
 }
 

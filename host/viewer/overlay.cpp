@@ -69,9 +69,23 @@ const char* pass_name(uint32_t kind) {
         case SSAO_PASS_BLUR_X: return "blur x";
         case SSAO_PASS_BLUR_Y: return "blur y";
         case SSAO_PASS_CLEAR: return "clear";
+#ifdef SSAO_SETTINGS_SIZE_1_0   // interface 1.1: the reduced-resolution passes
+        case SSAO_PASS_DOWNSAMPLE: return "down";
+        case SSAO_PASS_UPSAMPLE: return "up";
+#endif
         default: return "pass";
     }
 }
+
+#ifdef SSAO_SETTINGS_SIZE_1_0
+const char* resolution_name(ssao_resolution r) {
+    switch (r) {
+        case SSAO_RESOLUTION_HALF: return "half";
+        case SSAO_RESOLUTION_QUARTER: return "quarter";
+        default: return "full";
+    }
+}
+#endif
 
 // The GPU milliseconds of the newest timed frame, pass by pass.
 std::string gpu_line(const ssao_timings& t) {
@@ -102,8 +116,12 @@ std::vector<std::string> overlay_lines(const State& s, const ssao_timings& t, in
         lines.push_back(printf_string("samples %u  radius %.3g  bias %.3g  strength %.3g  power %.3g", c.sample_count,
                                       double(c.radius), double(c.bias),
                                       c.strength == SSAO_STRENGTH_OFF ? 0.0 : double(c.strength), double(c.power)));
-        lines.push_back(printf_string("kernel %s  distribution %s  rotation %s", cli::name(c.kernel_shape),
-                                      cli::name(c.distribution), cli::name(c.rotation)));
+        std::string sampling = printf_string("kernel %s  distribution %s  rotation %s", cli::name(c.kernel_shape),
+                                             cli::name(c.distribution), cli::name(c.rotation));
+#ifdef SSAO_SETTINGS_SIZE_1_0   // interface 1.1 has ssao_settings.resolution (on this line: the overlay keeps its height)
+        sampling += printf_string("  resolution %s", resolution_name(c.resolution));
+#endif
+        lines.push_back(sampling);
 #ifdef SSAO_SETTINGS_SIZE_1_0   // interface 1.1 has ssao_settings.method
         if (c.method == SSAO_METHOD_VISIBILITY)
             lines.push_back(printf_string("blur %s (radius %u)  estimator visibility (%u steps, thickness %.3g)",
@@ -113,7 +131,6 @@ std::vector<std::string> overlay_lines(const State& s, const ssao_timings& t, in
 #else
         lines.push_back(printf_string("blur %s (radius %u)", cli::name(c.blur), c.blur_radius));
 #endif
-        // HOOK(half-resolution): print the resolution here once ssao_settings has it.
         if (t.available)
             lines.push_back(gpu_line(t));
         else
@@ -121,7 +138,7 @@ std::vector<std::string> overlay_lines(const State& s, const ssao_timings& t, in
     }
     if (!s.notice.empty()) lines.push_back(s.notice);
     lines.push_back("WASD QZ move  IJKL turn  ERTYU modes  1-4 presets  0 defaults");
-    lines.push_back("B blur  M estimator  V view  O overlay  F12 screenshot  Esc quit");
+    lines.push_back("B blur  M estimator  H resolution  V view  O overlay  F12 screenshot  Esc quit");
     return lines;
 }
 

@@ -210,6 +210,19 @@ typedef enum ssao_method {
     SSAO_METHOD_MAX_ENUM = 0x7fffffff  /* not a value: keeps the enum 32 bits wide */
 } ssao_method;
 
+/* At which resolution the sampling pass runs (settings.resolution). Below full
+ * resolution a downsample pass picks one real texel of each 2x2 (4x4) block of
+ * the viewport (never an average of depths), the sampling pass and the blur
+ * run on that grid, and a depth-aware upsample writes every viewport pixel
+ * (README, "Half resolution"). */
+typedef enum ssao_resolution {
+    SSAO_RESOLUTION_DEFAULT = 0,  /* = SSAO_RESOLUTION_FULL */
+    SSAO_RESOLUTION_FULL = 1,     /* one AO sample per viewport pixel */
+    SSAO_RESOLUTION_HALF = 2,     /* one per 2x2 block: ceil(w/2) x ceil(h/2) */
+    SSAO_RESOLUTION_QUARTER = 3,  /* one per 4x4 block: ceil(w/4) x ceil(h/4) */
+    SSAO_RESOLUTION_MAX_ENUM = 0x7fffffff  /* not a value: keeps the enum 32 bits wide */
+} ssao_resolution;
+
 typedef enum ssao_output_format {
     SSAO_OUTPUT_DEFAULT = 0,    /* = SSAO_OUTPUT_R8 */
     SSAO_OUTPUT_R8 = 1,
@@ -252,6 +265,8 @@ typedef struct ssao_settings {
                                     as blocked, view-space units, > 0; default radius / 2
                                     (a huge value such as 1e30 gives the height-field assumption) */
     uint32_t step_count;         /* visibility: steps per direction, 1..32; default 4 */
+    ssao_resolution resolution;  /* grid the sampling pass runs on; default full. Below full the
+                                    blur runs on that grid and a depth-aware upsample follows */
 } ssao_settings;
 
 /* sizeof(ssao_settings) as interface 1.0 defined it; the library accepts it. */
@@ -328,10 +343,15 @@ typedef enum ssao_pass {
     SSAO_PASS_AO = 1,            /* the sampling pass */
     SSAO_PASS_BLUR_X = 2,        /* horizontal blur (or the box blur's single pass) */
     SSAO_PASS_BLUR_Y = 4,        /* vertical blur */
-    SSAO_PASS_CLEAR = 8, /* strength 0: output cleared to 1, nothing sampled */
+    SSAO_PASS_CLEAR = 8,         /* strength 0: output cleared to 1, nothing sampled */
+    SSAO_PASS_DOWNSAMPLE = 16,   /* half/quarter resolution: depth and normal of one picked texel per
+                                    block into the reduced grid (counted in ssao_timings.ao_ms) */
+    SSAO_PASS_UPSAMPLE = 32,     /* half/quarter resolution: depth-aware upsample of the reduced
+                                    grid's AO to every viewport pixel (counted in blur_ms) */
     /* Where KHR_debug is present each pass runs inside a debug group named
-     * "ssao: ao", "ssao: blur x", "ssao: blur y" or "ssao: clear", all inside
-     * one group "ssao" (see the README, "Debugger names"). */
+     * "ssao: ao", "ssao: blur x", "ssao: blur y", "ssao: clear",
+     * "ssao: downsample" or "ssao: upsample", all inside one group "ssao"
+     * (see the README, "Debugger names"). */
     SSAO_PASS_MAX_ENUM = 0x7fffffff  /* not a value: keeps the enum 32 bits wide */
 } ssao_pass;
 
@@ -345,8 +365,8 @@ typedef struct ssao_timings {
     uint32_t size;               /* sizeof(ssao_timings) */
     uint32_t available;          /* 1 when the fields below hold a measured frame */
     uint64_t frame;              /* which successful execute (1 = first) they were measured on */
-    double ao_ms;                /* sampling pass (or clear): every pass that is not a blur */
-    double blur_ms;              /* all blur passes */
+    double ao_ms;                /* sampling pass (or clear) and downsample: every pass that is not a blur */
+    double blur_ms;              /* all blur passes and the upsample */
     double total_ms;             /* whole execute on the GPU (= the sum of pass_ms) */
     /* 1.1 */
     uint32_t pass_count;         /* passes that frame ran, 1..SSAO_MAX_PASSES (0 when not available) */

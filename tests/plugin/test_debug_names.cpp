@@ -41,7 +41,9 @@ std::vector<std::string> names_of(const ssao_timings& t) {
     const std::map<uint32_t, std::string> name = {{SSAO_PASS_AO, "ssao: ao"},
                                                   {SSAO_PASS_BLUR_X, "ssao: blur x"},
                                                   {SSAO_PASS_BLUR_Y, "ssao: blur y"},
-                                                  {SSAO_PASS_CLEAR, "ssao: clear"}};
+                                                  {SSAO_PASS_CLEAR, "ssao: clear"},
+                                                  {SSAO_PASS_DOWNSAMPLE, "ssao: downsample"},
+                                                  {SSAO_PASS_UPSAMPLE, "ssao: upsample"}};
     std::vector<std::string> out;
     for (uint32_t i = 0; i < t.pass_count; ++i) out.push_back(name.at(t.pass_kind[i]));
     return out;
@@ -71,6 +73,9 @@ TEST_CASE("debug groups: each pass in its own group inside 'ssao', in the plan's
     Inputs scene(fx);
     ssao_settings off = make(16, SSAO_BLUR_DEFAULT);
     off.strength = SSAO_STRENGTH_OFF;
+    ssao_settings half = make(16, SSAO_BLUR_DEPTH_AWARE), quarter_box = make(16, SSAO_BLUR_BOX_4X4);
+    half.resolution = SSAO_RESOLUTION_HALF;
+    quarter_box.resolution = SSAO_RESOLUTION_QUARTER;
     struct Case {
         const char* what;
         ssao_settings settings;
@@ -82,6 +87,9 @@ TEST_CASE("debug groups: each pass in its own group inside 'ssao', in the plan's
         {"box", make(16, SSAO_BLUR_BOX_4X4), {"ssao: ao", "ssao: blur x"}},
         {"no blur", make(16, SSAO_BLUR_NONE), {"ssao: ao"}},
         {"strength off", off, {"ssao: clear"}},
+        {"half resolution", half,
+         {"ssao: downsample", "ssao: ao", "ssao: blur x", "ssao: blur y", "ssao: upsample"}},
+        {"quarter resolution, box", quarter_box, {"ssao: downsample", "ssao: ao", "ssao: blur x", "ssao: upsample"}},
     };
     DebugGroupLog log(gl);
     for (const Case& c : cases) {
@@ -218,7 +226,8 @@ TEST_CASE("object labels: every GL object the library made carries an 'ssao: ...
         {GL_TEXTURE, [](GladGLContext& g, GLuint n) { return g.IsTexture(n); },
          {"ssao: intermediate 0", "ssao: intermediate 1", "ssao: noise", "ssao: output"}},
         {GL_PROGRAM, [](GladGLContext& g, GLuint n) { return g.IsProgram(n); },
-         {"ssao: ao program", "ssao: blur program", "ssao: visibility program"}},
+         {"ssao: ao program", "ssao: blur program", "ssao: visibility program", "ssao: downsample program",
+          "ssao: upsample program"}},
         {GL_BUFFER, [](GladGLContext& g, GLuint n) { return g.IsBuffer(n); },
          {"ssao: frame constants", "ssao: kernel"}},
         {GL_FRAMEBUFFER, [](GladGLContext& g, GLuint n) { return g.IsFramebuffer(n); }, {"ssao: framebuffer"}},

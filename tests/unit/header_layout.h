@@ -42,6 +42,7 @@ typedef struct unit_layout {
     UNIT_FIELD(ssao_settings, blur) UNIT_FIELD(ssao_settings, blur_radius) UNIT_FIELD(ssao_settings, blur_sigma) \
     UNIT_FIELD(ssao_settings, blur_depth_tolerance) UNIT_FIELD(ssao_settings, output_format) \
     UNIT_FIELD(ssao_settings, method) UNIT_FIELD(ssao_settings, thickness) UNIT_FIELD(ssao_settings, step_count) \
+    UNIT_FIELD(ssao_settings, resolution) \
     UNIT_FIELD(ssao_inputs, size) UNIT_FIELD(ssao_inputs, depth_texture) UNIT_FIELD(ssao_inputs, normal_texture) \
     UNIT_FIELD(ssao_inputs, normal_space) UNIT_FIELD(ssao_inputs, normal_packing) \
     UNIT_FIELD(ssao_inputs, projection) UNIT_FIELD(ssao_inputs, view_matrix) UNIT_FIELD(ssao_inputs, clip_range) \

@@ -254,3 +254,137 @@ TEST_CASE("plan: the method picks the AO pass's program and nothing else") {
     for (int i = 1; i < pv.pass_count; ++i) CHECK(pv.passes[i].program == pk.passes[i].program);
     CHECK(pv.passes_run() == pk.passes_run());
 }
+
+namespace {
+
+ssao_settings at_resolution(ssao_blur blur, ssao_resolution resolution, ssao_method method = SSAO_METHOD_KERNEL) {
+    ssao_settings s = resolved(blur);
+    s.resolution = resolution;
+    s.method = method;
+    return s;
+}
+
+}  // namespace
+
+TEST_CASE("plan: half resolution of 641x359 - downsample, AO and blur on a 321x180 grid, upsample to every pixel") {
+    for (uint32_t host : {0u, 9u}) {
+        CAPTURE(host);
+        const AnalysedInputs in = inputs(host ? 7 : 0, host ? 3 : 0, 641, 359, host);
+        const FramePlan p = plan_frame(at_resolution(SSAO_BLUR_DEPTH_AWARE, SSAO_RESOLUTION_HALF), in);
+        check_invariants(p, in);
+        REQUIRE(kinds(p) == std::vector<PassKind>{PassKind::downsample, PassKind::ao, PassKind::blur_x,
+                                                  PassKind::blur_y, PassKind::upsample});
+        CHECK(p.passes_run() == uint32_t(SSAO_PASS_DOWNSAMPLE | SSAO_PASS_AO | SSAO_PASS_BLUR_X | SSAO_PASS_BLUR_Y |
+                                         SSAO_PASS_UPSAMPLE));
+        // ceil(641/2) x ceil(359/2): the last column and row are blocks of one pixel, not dropped.
+        REQUIRE(p.intermediate_count == 3);
+        CHECK(p.intermediates[0].format == TexFormat::rgba32f);
+        for (int i = 0; i < p.intermediate_count; ++i) {
+            CHECK(p.intermediates[i].width == 321);
+            CHECK(p.intermediates[i].height == 180);
+        }
+        for (int i = 0; i < 4; ++i) {
+            CAPTURE(i);
+            CHECK(p.passes[i].rect.x == 0);
+            CHECK(p.passes[i].rect.y == 0);
+            CHECK(p.passes[i].rect.width == 321);
+            CHECK(p.passes[i].rect.height == 180);
+        }
+        const Pass& down = p.passes[0];
+        CHECK(down.program == ProgramId::downsample);
+        CHECK(down.inputs[SSAO_UNIT_DEPTH].source == Source::depth);
+        CHECK(down.inputs[SSAO_UNIT_NORMAL].source == Source::normal);
+        CHECK(down.scale == 2);
+        const Pass& ao = p.passes[1];
+        CHECK(ao.scale == 2);
+        CHECK(ao.inputs[SSAO_UNIT_DEPTH] == down.target);  // the grid, not the host's depth
+        CHECK(ao.inputs[SSAO_UNIT_NORMAL] == down.target);
+        CHECK(ao.inputs[SSAO_UNIT_NOISE].source == Source::noise);
+        const Pass& up = p.passes[4];
+        CHECK(up.program == ProgramId::upsample);
+        CHECK(up.scale == 2);
+        CHECK(up.inputs[SSAO_UNIT_DEPTH].source == Source::depth);  // its own full-resolution depth
+        CHECK(up.inputs[SSAO_UNIT_AO] == p.passes[3].target);
+        CHECK(up.inputs[SSAO_UNIT_NORMAL].source == Source::none);
+        // Blurs on the grid weigh taps by depth (a leak there would span blocks).
+        CHECK(p.passes[2].depth_aware);
+        CHECK(p.passes[3].depth_aware);
+    }
+}
+
+TEST_CASE("plan: reduced resolution for every blur, both methods, quarter too, at odd and tiny sizes") {
+    const struct {
+        ssao_blur blur;
+        std::vector<PassKind> middle;
+    } blurs[] = {{SSAO_BLUR_NONE, {}},
+                 {SSAO_BLUR_BOX_4X4, {PassKind::blur_x}},
+                 {SSAO_BLUR_GAUSSIAN, {PassKind::blur_x, PassKind::blur_y}},
+                 {SSAO_BLUR_DEPTH_AWARE, {PassKind::blur_x, PassKind::blur_y}}};
+    const int sizes[][2] = {{641, 359}, {67, 41}, {1, 1}, {2, 1}, {1, 3}, {5, 4}, {16384, 3}};
+    for (ssao_resolution res : {SSAO_RESOLUTION_HALF, SSAO_RESOLUTION_QUARTER}) {
+        const int scale = res == SSAO_RESOLUTION_HALF ? 2 : 4;
+        for (ssao_method method : {SSAO_METHOD_KERNEL, SSAO_METHOD_VISIBILITY}) {
+            for (const auto& b : blurs) {
+                for (const auto& sz : sizes) {
+                    CAPTURE(scale);
+                    CAPTURE(method);
+                    CAPTURE(b.blur);
+                    CAPTURE(sz[0]);
+                    CAPTURE(sz[1]);
+                    const AnalysedInputs in = inputs(0, 0, sz[0], sz[1]);
+                    const FramePlan p = plan_frame(at_resolution(b.blur, res, method), in);
+                    check_invariants(p, in);
+                    std::vector<PassKind> want{PassKind::downsample, PassKind::ao};
+                    want.insert(want.end(), b.middle.begin(), b.middle.end());
+                    want.push_back(PassKind::upsample);
+                    CHECK(kinds(p) == want);
+                    CHECK(p.passes[1].program ==
+                          (method == SSAO_METHOD_VISIBILITY ? ProgramId::visibility : ProgramId::ao));
+                    const int lw = (sz[0] + scale - 1) / scale, lh = (sz[1] + scale - 1) / scale;
+                    for (int i = 0; i < p.intermediate_count; ++i) {
+                        CHECK(p.intermediates[i].width == lw);
+                        CHECK(p.intermediates[i].height == lh);
+                    }
+                    // The grid covers the viewport exactly: no pixel without its block, no empty block.
+                    CHECK(lw * scale >= sz[0]);
+                    CHECK((lw - 1) * scale < sz[0]);
+                    CHECK(lh * scale >= sz[1]);
+                    CHECK((lh - 1) * scale < sz[1]);
+                    for (int i = 0; i < p.pass_count; ++i) {
+                        if (p.passes[i].program != ProgramId::blur) CHECK(p.passes[i].scale == scale);
+                        else CHECK(p.passes[i].depth_aware);
+                    }
+                }
+            }
+        }
+    }
+}
+
+TEST_CASE("plan: full resolution plans no downsample or upsample; strength off stays one clear at any resolution") {
+    const AnalysedInputs in = inputs(0, 0, 64, 48);
+    for (ssao_blur blur : {SSAO_BLUR_NONE, SSAO_BLUR_BOX_4X4, SSAO_BLUR_DEPTH_AWARE}) {
+        const FramePlan p = plan_frame(at_resolution(blur, SSAO_RESOLUTION_FULL), in);
+        CHECK((p.passes_run() & uint32_t(SSAO_PASS_DOWNSAMPLE | SSAO_PASS_UPSAMPLE)) == 0u);
+        for (int i = 0; i < p.pass_count; ++i) {
+            CHECK(p.passes[i].scale == 1);
+            CHECK_FALSE(p.passes[i].depth_aware);  // the blur kind alone decides at full resolution
+        }
+    }
+    for (ssao_resolution res : {SSAO_RESOLUTION_HALF, SSAO_RESOLUTION_QUARTER}) {
+        ssao_settings s = at_resolution(SSAO_BLUR_DEPTH_AWARE, res);
+        s.strength = SSAO_STRENGTH_OFF;
+        const FramePlan p = plan_frame(s, in);
+        check_invariants(p, in);
+        CHECK(p.passes_run() == uint32_t(SSAO_PASS_CLEAR));
+        CHECK(p.intermediate_count == 0);
+    }
+}
+
+TEST_CASE("plan: the reduced-resolution passes have their own names and timing buckets") {
+    CHECK(std::string(pass_name(PassKind::downsample)) == "ssao: downsample");
+    CHECK(std::string(pass_name(PassKind::upsample)) == "ssao: upsample");
+    CHECK(timing_bucket(PassKind::downsample) == TimingBucket::ao);
+    CHECK(timing_bucket(PassKind::upsample) == TimingBucket::blur);
+    CHECK(uint32_t(PassKind::downsample) == uint32_t(SSAO_PASS_DOWNSAMPLE));
+    CHECK(uint32_t(PassKind::upsample) == uint32_t(SSAO_PASS_UPSAMPLE));
+}

@@ -89,6 +89,24 @@ TEST_CASE("settings: a zeroed struct resolves to the documented defaults: the DE
     CHECK(r.blur_sigma == 2.0f);
     CHECK(r.blur_depth_tolerance == doctest::Approx(0.05));
     CHECK(r.output_format == SSAO_OUTPUT_R8);
+    CHECK(r.resolution == def.resolution);
+    CHECK(r.resolution != SSAO_RESOLUTION_DEFAULT);  // resolved, never the zero that means default
+}
+
+TEST_CASE("settings: resolution keeps each named value and maps it to its grid scale") {
+    const struct {
+        ssao_resolution value;
+        int scale;
+    } cases[] = {{SSAO_RESOLUTION_FULL, 1}, {SSAO_RESOLUTION_HALF, 2}, {SSAO_RESOLUTION_QUARTER, 4}};
+    for (const auto& c : cases) {
+        CAPTURE(int(c.value));
+        ssao_settings in = zeroed();
+        in.resolution = c.value;
+        const ssao_settings r = resolve_ok(in);
+        CHECK(r.resolution == c.value);
+        CHECK(ssao_impl::resolution_scale(r) == c.scale);
+    }
+    CHECK(ssao_impl::resolution_scale(resolve_ok(zeroed())) == 1);  // the default is full for now
 }
 
 TEST_CASE("settings: setting only the kernel method gives the chapter's configuration") {
@@ -136,6 +154,7 @@ TEST_CASE("settings: derived defaults follow the fields they derive from") {
     in.method = SSAO_METHOD_VISIBILITY;
     in.thickness = 3.0f;
     in.step_count = SSAO_MAX_STEPS;
+    in.resolution = SSAO_RESOLUTION_QUARTER;
     CHECK(same(resolve_ok(in), in));
 
     // The smallest accepted values.
@@ -288,6 +307,10 @@ TEST_CASE("settings: every invalid field gives its documented status and leaves 
         {"thickness inf", [](ssao_settings& s) { s.thickness = kInf; }, SSAO_ERROR_INVALID_VALUE},
         {"step_count 33", [](ssao_settings& s) { s.step_count = 33; }, SSAO_ERROR_INVALID_VALUE},
         {"step_count max", [](ssao_settings& s) { s.step_count = 0xffffffffu; }, SSAO_ERROR_INVALID_VALUE},
+        {"resolution 4", [](ssao_settings& s) { set_raw(s.resolution, 4); }, SSAO_ERROR_INVALID_ENUM},
+        {"resolution -1", [](ssao_settings& s) { set_raw(s.resolution, -1); }, SSAO_ERROR_INVALID_ENUM},
+        {"resolution max enum", [](ssao_settings& s) { set_raw(s.resolution, 0x7fffffff); },
+         SSAO_ERROR_INVALID_ENUM},
         {"size 0", [](ssao_settings& s) { s.size = 0; }, SSAO_ERROR_STRUCT_SIZE},
         {"size - 4", [](ssao_settings& s) { s.size = sizeof(ssao_settings) - 4; }, SSAO_ERROR_STRUCT_SIZE},
         {"size + 4", [](ssao_settings& s) { s.size = sizeof(ssao_settings) + 4; }, SSAO_ERROR_STRUCT_SIZE},
@@ -366,6 +389,7 @@ TEST_CASE("settings: every preset resolves to the documented table") {
         CHECK(p.step_count == row.step_count);
         CHECK(p.distribution == row.distribution);
         CHECK(p.blur == row.blur);
+        CHECK(p.resolution == row.resolution);
     }
     // Cost grows from LOW to ULTRA: more samples (times steps) at each level.
     auto work = [](const ssao_settings& p) { return p.sample_count * (p.method == SSAO_METHOD_VISIBILITY ? p.step_count : 1u); };

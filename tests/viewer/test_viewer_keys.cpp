@@ -319,9 +319,40 @@ TEST_CASE("the overlay states the settings, the GPU milliseconds and what a key 
     lines = viewer::overlay_lines(c.state(), t, 320, 240);
     CHECK(contains(lines, "SSAO off"));
     CHECK_FALSE(contains(lines, "GPU ms"));
-    // HOOK(half-resolution): until the ABI has it, the key says so.
-    tap(c, GLFW_KEY_H);
-    CHECK(contains(viewer::overlay_lines(c.state(), t, 320, 240), "no half-resolution switch"));
+}
+
+TEST_CASE("H steps the resolution full -> half -> quarter -> full, the overlay shows it, the plugin accepts it") {
+    Fixture f;
+    viewer::Controls c = f.controls();
+    ssao_timings t{};
+    t.size = sizeof t;
+    CHECK(contains(viewer::overlay_lines(c.state(), t, 320, 240), "resolution full"));
+    const ssao_resolution want[] = {SSAO_RESOLUTION_HALF, SSAO_RESOLUTION_QUARTER, SSAO_RESOLUTION_FULL};
+    const char* shown[] = {"resolution half", "resolution quarter", "resolution full"};
+    for (int i = 0; i < 3; ++i) {
+        CAPTURE(i);
+        tap(c, GLFW_KEY_H);
+        CHECK(c.state().settings.resolution == want[i]);
+        CHECK(contains(viewer::overlay_lines(c.state(), t, 320, 240), shown[i]));
+        ssao_settings r{};
+        r.size = sizeof r;
+        CHECK(f.api().resolve_settings(&c.state().settings, &r) == SSAO_OK);
+        CHECK(r.resolution == want[i]);
+    }
+#ifdef SSAO_MAX_PASSES
+    t.available = 1;
+    t.frame = 3;
+    t.pass_count = 3;
+    t.pass_kind[0] = SSAO_PASS_DOWNSAMPLE;
+    t.pass_kind[1] = SSAO_PASS_AO;
+    t.pass_kind[2] = SSAO_PASS_UPSAMPLE;
+    t.pass_ms[0] = 0.125;
+    t.pass_ms[1] = 1.0;
+    t.pass_ms[2] = 0.5;
+    t.total_ms = 1.625;
+    CHECK(contains(viewer::overlay_lines(c.state(), t, 320, 240),
+                   "GPU ms (frame 3): down 0.125  ao 1.000  up 0.500  total 1.625"));
+#endif
 }
 
 TEST_CASE("M switches the estimator when the plugin has one") {
