@@ -12,10 +12,10 @@ vec4 result(float ao, float z) { return u_pack_depth ? vec4(ao, z, 0.0, 1.0) : v
 
 bool finite3(vec3 v) { return all(lessThan(abs(v), vec3(3.0e38))) && !any(isnan(v)); }
 
-// The normal in view space, unit length and facing the camera; a broken normal
-// (zero, NaN, inf) falls back to the direction towards the camera.
-vec3 load_normal(ivec2 px, vec3 to_eye) {
-    vec3 n = texelFetch(u_normal_tex, px, 0).xyz;
+// The stored normal in view space, scaled so that its largest component is
+// 1 (not yet unit length); false when it is zero, NaN or infinite.
+bool decode_normal(ivec2 px, out vec3 n) {
+    n = texelFetch(u_normal_tex, px, 0).xyz;
     if (u_modes.w == SSAO_SHADER_PACKING_UNORM) n = n * 2.0 - 1.0;
     if (u_modes.z == SSAO_SHADER_NORMAL_WORLD) n = mat3(u_normal_to_view) * n;
     // Scale by the largest component first: a huge but finite normal (1e20)
@@ -24,8 +24,16 @@ vec3 load_normal(ivec2 px, vec3 to_eye) {
     // max() need not propagate NaN (llvmpipe's does not), the sum does: a NaN
     // in any component fails the comparison.
     float sum = abs(n.x) + abs(n.y) + abs(n.z);
-    if (!(m > 1e-30 && m < 3.0e38 && sum < 3.0e38)) return to_eye;  // zero, NaN or infinite
+    if (!(m > 1e-30 && m < 3.0e38 && sum < 3.0e38)) return false;  // zero, NaN or infinite
     n /= m;
+    return true;
+}
+
+// The normal in view space, unit length and facing the camera; a broken normal
+// (zero, NaN, inf) falls back to the direction towards the camera.
+vec3 load_normal(ivec2 px, vec3 to_eye) {
+    vec3 n;
+    if (!decode_normal(px, n)) return to_eye;
     n *= inversesqrt(dot(n, n));
     // Facing away (back faces, interpolation at silhouettes): remove the part
     // pointing away, continuously, instead of flipping.

@@ -63,9 +63,10 @@ int check_unit_finite(const std::vector<float>& ao, const char* what) {
     return bad;
 }
 
-ssao_settings make(uint32_t samples, ssao_blur blur, ssao_rotation rotation, float radius) {
+ssao_settings make(uint32_t samples, ssao_blur blur, ssao_rotation rotation, float radius, ssao_method method) {
     ssao_settings s{};
     s.size = sizeof s;
+    s.method = method;
     s.sample_count = samples;
     s.blur = blur;
     s.rotation = rotation;
