@@ -38,6 +38,8 @@ const std::vector<std::pair<const char*, ssao_blur>> kBlurs = {
     {"depth-aware", SSAO_BLUR_DEPTH_AWARE}, {"box", SSAO_BLUR_BOX_4X4}, {"gaussian", SSAO_BLUR_GAUSSIAN}, {"none", SSAO_BLUR_NONE}};
 const std::vector<std::pair<const char*, ssao_output_format>> kOutputs = {
     {"r8", SSAO_OUTPUT_R8}, {"r16f", SSAO_OUTPUT_R16F}};
+const std::vector<std::pair<const char*, ssao_method>> kMethods = {
+    {"kernel", SSAO_METHOD_KERNEL}, {"visibility", SSAO_METHOD_VISIBILITY}};
 const std::vector<std::pair<const char*, ssao_preset>> kPresets = {
     {"low", SSAO_PRESET_LOW}, {"medium", SSAO_PRESET_MEDIUM}, {"high", SSAO_PRESET_HIGH}, {"ultra", SSAO_PRESET_ULTRA}};
 const std::vector<std::pair<const char*, DepthFormat>> kDepths = {
@@ -72,6 +74,7 @@ const char* name(ssao_kernel_distribution v) { return choice_name(v, kDistributi
 const char* name(ssao_rotation v) { return choice_name(v, kRotations); }
 const char* name(ssao_blur v) { return choice_name(v, kBlurs); }
 const char* name(ssao_output_format v) { return choice_name(v, kOutputs); }
+const char* name(ssao_method v) { return choice_name(v, kMethods); }
 const char* name(DepthFormat v) { return choice_name(v, kDepths); }
 
 std::optional<ssao_blur> parse_blur(const std::string& s) {
@@ -150,6 +153,11 @@ ParseResult parse(int argc, const char* const* argv, Options& o, std::string& er
              o.blur_tolerance = ranged(f, v, 0, true, 1, false);
          }},
         {"--output-format", [&](const std::string& f, const std::string& v) { o.output_format = parse_choice(f, v, kOutputs); }},
+        {"--method", [&](const std::string& f, const std::string& v) { o.method = parse_choice(f, v, kMethods); }},
+        {"--thickness", [&](const std::string& f, const std::string& v) { o.thickness = ranged(f, v, 0, true, kBig, false); }},
+        {"--steps", [&](const std::string& f, const std::string& v) {
+             o.steps = static_cast<int>(flags::integer(f, v, 1, SSAO_MAX_STEPS));
+         }},
     };
     // Flags without a value.
     const flags::Switches switches = {
@@ -211,7 +219,9 @@ std::string help_text(const ssao_settings* d, const std::string& default_scene) 
          "\n"
          "SSAO settings (precedence: flags > scene hints (glTF extras \"ssao\") > --preset > plugin defaults)\n"
          "  --preset low|medium|high|ultra   start from a plugin preset (default medium = plugin defaults)\n"
-         "  --samples N             kernel samples, 1..64 (default " << def([](const ssao_settings& s) { return std::to_string(s.sample_count); }) << ")\n"
+         "  --method kernel|visibility  estimator: the chapter's point kernel, or ray-marched visibility\n"
+         "                          (default " << def([](const ssao_settings& s) { return std::string(name(s.method)); }) << ")\n"
+         "  --samples N             kernel samples (visibility: directions), 1.." << SSAO_MAX_SAMPLES << " (default " << def([](const ssao_settings& s) { return std::to_string(s.sample_count); }) << ")\n"
          "  --radius R              sampling radius in scene units, > 0 (default: scene hint, else 0.05 x the\n"
          "                          scene's bounding-box diagonal; plugin's own default "
       << def([&](const ssao_settings& s) { return num(s.radius); }) << ")\n"
@@ -233,6 +243,11 @@ std::string help_text(const ssao_settings* d, const std::string& default_scene) 
       << (d ? ", " + num(d->blur_sigma) : std::string()) << ")\n"
          "  --blur-tolerance T      depth-aware blur's relative depth tolerance, (0, 1] (default "
       << def([&](const ssao_settings& s) { return num(s.blur_depth_tolerance); }) << ")\n"
+         "  --thickness T           visibility: how far behind the depth buffer a step still counts as blocked,\n"
+         "                          view units, > 0 (default "
+      << def([&](const ssao_settings& s) { return num(s.thickness / s.radius) + " x radius"; }) << ")\n"
+         "  --steps N               visibility: steps per direction, 1.." << SSAO_MAX_STEPS << " (default "
+      << def([](const ssao_settings& s) { return std::to_string(s.step_count); }) << ")\n"
          "  --output-format r8|r16f plugin output texture format (default " << def([](const ssao_settings& s) { return std::string(name(s.output_format)); }) << ")\n"
          "\n"
          "Files written to the output directory (all or none: written to temporary names, renamed at the end)\n"

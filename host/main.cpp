@@ -366,12 +366,15 @@ int run(const cli::Options& o) {
                 fmt(cam.eye).c_str(), fmt(cam.target).c_str(), fmt(cam.znear).c_str(),
                 std::isinf(cam.zfar) ? "inf" : fmt(cam.zfar).c_str(), cam.reverse_z ? ", reverse-Z [0,1]" : "");
     std::printf("  ssao: %u samples, radius %s (%s), bias %s, kernel %s, distribution %s, rotation %s, blur %s "
-                "(radius %u), strength %s, power %s, output %s\n",
+                "(radius %u), strength %s, power %s, output %s, method %s%s\n",
                 settings.sample_count, fmt(settings.radius).c_str(), radius_note.c_str(), fmt(settings.bias).c_str(),
                 cli::name(settings.kernel_shape), cli::name(settings.distribution), cli::name(settings.rotation),
                 cli::name(settings.blur), settings.blur_radius,
                 settings.strength == SSAO_STRENGTH_OFF ? "0 (off)" : fmt(settings.strength).c_str(),
-                fmt(settings.power).c_str(), cli::name(settings.output_format));
+                fmt(settings.power).c_str(), cli::name(settings.output_format), cli::name(settings.method),
+                settings.method == SSAO_METHOD_VISIBILITY
+                    ? (" (steps " + std::to_string(settings.step_count) + ", thickness " + fmt(settings.thickness) + ")").c_str()
+                    : "");
     std::printf("  plugin: %s\n", library.loaded_path().c_str());
     std::printf("  plugin saw: %s, %s depth%s%s, near %s, far %s\n", info.orthographic ? "orthographic" : "perspective",
                 info.depth_bits == 32 ? "32-bit float" : (std::to_string(info.depth_bits) + "-bit").c_str(),

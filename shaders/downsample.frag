@@ -2,7 +2,7 @@
 // viewport pixels, one real pixel of it (grid_pixel, common.glsl) - its depth
 // copied bit for bit, never an average, so no depth floats in the gap of a
 // silhouette and the sky keeps its exact clear value - and its normal decoded
-// into view space and turned towards the camera as the sampling pass would.
+// into view space (unit length; zero when broken).
 // Output RGBA32F: (depth as stored, normal xyz).
 
 void main() {
@@ -12,8 +12,10 @@ void main() {
     vec3 P = view_position_at(vec2(p) + 0.5, d).xyz;
     vec3 n = vec3(0.0, 0.0, 1.0);  // sky and unusable depths: never read as a surface
     if (!is_sky(d) && finite3(P)) {
-        vec3 to_eye = u_depth.w > 0.5 ? vec3(0.0, 0.0, 1.0) : normalize(-P);
-        n = decode_normal(texelFetch(u_normal_tex, p + u_viewport.xy, 0).xyz, to_eye);
+        // Unit length but not yet turned towards the camera (raw_normal,
+        // sampling.glsl): the visibility pass must see which normals face
+        // away; zero marks a broken one.
+        n = decode_raw_normal(texelFetch(u_normal_tex, p + u_viewport.xy, 0).xyz, n) ? normalize(n) : vec3(0.0);
     }
     o_ao = vec4(d, n);
 }

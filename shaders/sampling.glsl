@@ -12,10 +12,10 @@ vec4 result(float ao, float z) { return u_pack_depth ? vec4(ao, z, 0.0, 1.0) : v
 
 bool finite3(vec3 v) { return all(lessThan(abs(v), vec3(3.0e38))) && !any(isnan(v)); }
 
-// A texel of the host's normal texture in view space, unit length and facing
-// the camera; a broken normal (zero, NaN, inf) falls back to the direction
-// towards the camera.
-vec3 decode_normal(vec3 n, vec3 to_eye) {
+// The stored normal `stored` in view space, scaled so that its largest
+// component is 1 (not yet unit length); false when it is zero, NaN or infinite.
+bool decode_raw_normal(vec3 stored, out vec3 n) {
+    n = stored;
     if (u_modes.w == SSAO_SHADER_PACKING_UNORM) n = n * 2.0 - 1.0;
     if (u_modes.z == SSAO_SHADER_NORMAL_WORLD) n = mat3(u_normal_to_view) * n;
     // Scale by the largest component first: a huge but finite normal (1e20)
@@ -24,11 +24,16 @@ vec3 decode_normal(vec3 n, vec3 to_eye) {
     // max() need not propagate NaN (llvmpipe's does not), the sum does: a NaN
     // in any component fails the comparison.
     float sum = abs(n.x) + abs(n.y) + abs(n.z);
-    if (!(m > 1e-30 && m < 3.0e38 && sum < 3.0e38)) return to_eye;  // zero, NaN or infinite
+    if (!(m > 1e-30 && m < 3.0e38 && sum < 3.0e38)) return false;  // zero, NaN or infinite
     n /= m;
+    return true;
+}
+
+// A usable normal made unit length and turned towards the camera: the part
+// pointing away (back faces, interpolation at silhouettes) is removed,
+// continuously, instead of flipping.
+vec3 face_camera(vec3 n, vec3 to_eye) {
     n *= inversesqrt(dot(n, n));
-    // Facing away (back faces, interpolation at silhouettes): remove the part
-    // pointing away, continuously, instead of flipping.
     float away = dot(n, to_eye);
     if (away < 0.0) {
         n -= to_eye * (away * 1.01);
@@ -37,12 +42,29 @@ vec3 decode_normal(vec3 n, vec3 to_eye) {
     return n;
 }
 
-// The normal of grid texel t as the sampling passes see it. Below full
-// resolution the downsample has decoded it already (the picked pixel's, for
-// the same to_eye).
+// A texel of the host's normal texture as the sampling passes see it: view
+// space, unit length, facing the camera; a broken normal falls back to the
+// direction towards the camera.
+vec3 decode_normal(vec3 stored, vec3 to_eye) {
+    vec3 n;
+    return decode_raw_normal(stored, n) ? face_camera(n, to_eye) : to_eye;
+}
+
+// The normal of grid texel t before it is turned towards the camera; false
+// when it is broken. Below full resolution the downsample has decoded it
+// already (the picked pixel's unit normal, or zero for a broken one).
+bool raw_normal(ivec2 t, out vec3 n) {
+    if (u_scale != 1) {
+        n = texelFetch(u_normal_tex, t, 0).yzw;
+        return dot(n, n) > 0.5;
+    }
+    return decode_raw_normal(texelFetch(u_normal_tex, t + u_viewport.xy, 0).xyz, n);
+}
+
+// The normal of grid texel t as the sampling passes see it.
 vec3 load_normal(ivec2 t, vec3 to_eye) {
-    if (u_scale != 1) return texelFetch(u_normal_tex, t, 0).yzw;
-    return decode_normal(texelFetch(u_normal_tex, t + u_viewport.xy, 0).xyz, to_eye);
+    vec3 n;
+    return raw_normal(t, n) ? face_camera(n, to_eye) : to_eye;
 }
 
 // Orthonormal basis around n (Duff et al. 2017): no degenerate case, unlike

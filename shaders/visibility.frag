@@ -15,10 +15,19 @@
 // grazing, so neither a receding floor nor a wall seen edge-on occludes
 // itself or hides a step by up to a texel's depth extent. Where the eye ray
 // runs nearly parallel to that plane, the pass's snap (the plane through s
-// parallel to the surface at P, met by the texel's ray) stands in.
+// parallel to the surface at P, met by the texel's ray) stands in. So it
+// does where the texel's normal says nothing about its surface: broken (zero,
+// NaN, inf) or facing away from the camera (interpolated normals at
+// silhouettes). The pixel's own pass bends such a normal to face the camera,
+// but as a tangent plane that bent normal is nearly edge-on along the eye
+// ray, and reading other rays through it misplaces the surface by far more
+// than the thickness: one such texel would shade the whole disc of pixels
+// whose marches cross it (hard case "normals: zero, NaN, ...").
 float surface_in_front(vec3 s, vec3 Q, ivec2 spx, Surface sf) {
     vec3 to_eye_q = sf.ortho ? vec3(0.0, 0.0, 1.0) : normalize(-Q);
-    vec3 nq = load_normal(spx, to_eye_q);
+    vec3 nq;
+    if (!raw_normal(spx, nq) || !(dot(nq, to_eye_q) > 0.0)) return Q.z - snap_to_texel_ray(s, sf.n, Q, sf.ortho).z;
+    nq = normalize(nq);
     float plane = dot(Q, nq);
     if (sf.ortho) {
         if (abs(nq.z) > 1e-3) return (plane - nq.x * s.x - nq.y * s.y) / nq.z - s.z;

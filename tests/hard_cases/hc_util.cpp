@@ -63,12 +63,12 @@ int check_unit_finite(const std::vector<float>& ao, const char* what) {
     return bad;
 }
 
-ssao_settings make(uint32_t samples, ssao_blur blur, ssao_rotation rotation, float radius) {
+ssao_settings make(uint32_t samples, ssao_blur blur, ssao_rotation rotation, float radius, ssao_method method) {
     ssao_settings s{};
     s.size = sizeof s;
-    // The kernel estimator with the accelerating distribution, as these cases
-    // were written for (a zeroed struct is the DEFAULT preset, which may not be).
-    s.method = SSAO_METHOD_KERNEL;
+    // The accelerating distribution, as these cases were written for (a
+    // zeroed struct is the DEFAULT preset, which may not use it).
+    s.method = method;
     s.distribution = SSAO_DISTRIBUTION_ACCELERATING;
     s.sample_count = samples;
     // DEFAULT meant the depth-aware blur when these cases were written (the

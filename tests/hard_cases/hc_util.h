@@ -42,7 +42,19 @@ Out run(testgl::Fixture& fx, const analytic::GBuffer& g, const glm::dmat4& proj,
 // CHECKs that every value is finite and in [0,1]; returns how many were not.
 int check_unit_finite(const std::vector<float>& ao, const char* what = "");
 
-ssao_settings make(uint32_t samples, ssao_blur blur, ssao_rotation rotation, float radius);
+// Resolved-to-be settings for a hard case: R16F output, everything else default.
+ssao_settings make(uint32_t samples, ssao_blur blur, ssao_rotation rotation, float radius, ssao_method method);
+
+// Every hard case holds for both estimators (issue 8). HC_EACH_METHOD(m)
+// declares `ssao_method m` and opens one doctest subcase per estimator;
+// doctest re-enters the test case once per subcase, so everything after this
+// line runs once with m = SSAO_METHOD_KERNEL and once with
+// m = SSAO_METHOD_VISIBILITY, and a failure names the subcase.
+#define HC_EACH_METHOD(m)                                           \
+    ssao_method m = SSAO_METHOD_KERNEL;                             \
+    SUBCASE("method kernel") { m = SSAO_METHOD_KERNEL; }            \
+    SUBCASE("method visibility") { m = SSAO_METHOD_VISIBILITY; }    \
+    CAPTURE(m)
 
 // Projections beyond the shared support's.
 glm::dmat4 ortho_zo(double half_w, double half_h, double n, double f);          // [0,1], near -> 0

@@ -77,14 +77,16 @@ void check_frame_info(testgl::Fixture& fx, const Convention& c) {
 }  // namespace
 
 TEST_CASE("depth conventions: the same scene gives the same AO in every clip range, reverse-Z, infinite far, D16/D24/D32F") {
+    HC_EACH_METHOD(method);
     testgl::Fixture fx;
     const int W = 64, H = 48;
     const double n = 0.1, f = 100.0;
     const Scene scene = hc::to_view(hc::crease_world(), hc::crease_view());
     for (ssao_kernel_shape shape : {SSAO_KERNEL_HEMISPHERE, SSAO_KERNEL_SPHERE, SSAO_KERNEL_SEPARABLE}) {
         CAPTURE(shape);
-        ssao_settings want = hc::make(16, SSAO_BLUR_NONE, SSAO_ROTATION_HASH, 1.0f);
+        ssao_settings want = hc::make(16, SSAO_BLUR_NONE, SSAO_ROTATION_HASH, 1.0f, method);
         want.kernel_shape = shape;
+        if (method == SSAO_METHOD_VISIBILITY && shape != SSAO_KERNEL_HEMISPHERE) continue;  // no kernel shape there
         const ssao_settings s = fx.settings(want);
         std::vector<float> ref;
         for (const auto& c : perspective_conventions(double(W) / H, n, f)) {
@@ -112,10 +114,11 @@ TEST_CASE("depth conventions: the same scene gives the same AO in every clip ran
 }
 
 TEST_CASE("depth conventions: orthographic in [-1,1], [0,1] and reversed give the same AO") {
+    HC_EACH_METHOD(method);
     testgl::Fixture fx;
     const int W = 64, H = 48;
     const Scene scene = hc::to_view(hc::crease_world(), hc::crease_view());
-    const ssao_settings s = fx.settings(hc::make(16, SSAO_BLUR_NONE, SSAO_ROTATION_HASH, 1.0f));
+    const ssao_settings s = fx.settings(hc::make(16, SSAO_BLUR_NONE, SSAO_ROTATION_HASH, 1.0f, method));
     std::vector<float> ref;
     for (const auto& c : ortho_conventions(4.0, 3.0, 0.5, 60.0)) {
         const std::string cname = c.name; CAPTURE(cname);
@@ -145,11 +148,12 @@ TEST_CASE("depth conventions: orthographic in [-1,1], [0,1] and reversed give th
 }
 
 TEST_CASE("depth conventions: an off-centre frustum gives the AO of the matching half of the symmetric one") {
+    HC_EACH_METHOD(method);
     testgl::Fixture fx;
     const int W = 64, H = 48;
     const double n = 0.1, f = 100, b = std::tan(hc::kFov / 2) * n, a = b * W / H;
     const Scene scene = hc::to_view(hc::crease_world(), hc::crease_view());
-    fx.settings(hc::make(16, SSAO_BLUR_NONE, SSAO_ROTATION_NONE, 0.5f));
+    fx.settings(hc::make(16, SSAO_BLUR_NONE, SSAO_ROTATION_NONE, 0.5f, method));
     const auto full_proj = hc::frustum(-a, a, -b, b, n, f);
     const auto right_proj = hc::frustum(0, a, -b, b, n, f);  // the right half: pixels W/2..W-1
     const GBuffer full = analytic::render(scene, full_proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, W, H);
@@ -184,11 +188,12 @@ TEST_CASE("depth conventions: an off-centre frustum gives the AO of the matching
 }
 
 TEST_CASE("depth conventions: a half-pixel jitter leaves the AO profile across the crease unchanged") {
+    HC_EACH_METHOD(method);
     testgl::Fixture fx;
     const int W = 96, H = 96;
     const glm::dmat4 view = hc::crease_view();
     const Scene scene = hc::to_view(hc::crease_world(1.0, false), view);
-    fx.settings(hc::make(32, SSAO_BLUR_DEFAULT, SSAO_ROTATION_HASH, 1.5f));
+    fx.settings(hc::make(32, SSAO_BLUR_DEFAULT, SSAO_ROTATION_HASH, 1.5f, method));
     const auto proj = analytic::reverse_z(hc::kFov, 1.0, 0.1, 100.0);
     const double radius = 1.5;
     std::vector<std::vector<double>> profiles;
@@ -356,8 +361,9 @@ Acne tilted_run(testgl::Fixture& fx, const Format& fm, double n, double ratio, d
 }  // namespace
 
 TEST_CASE("depth formats and range: a plane tilted 0..89 degrees stays unoccluded wherever the format resolves its depth") {
+    HC_EACH_METHOD(method);
     testgl::Fixture fx;
-    fx.settings(hc::make(16, SSAO_BLUR_NONE, SSAO_ROTATION_HASH, 1.0f));  // radius set per run below
+    fx.settings(hc::make(16, SSAO_BLUR_NONE, SSAO_ROTATION_HASH, 1.0f, method));  // radius set per run below
     int runs = 0, total_resolvable = 0;
     for (const Format& fm : kFormats)
         for (double n : {1e-4, 1e-2, 1.0})
@@ -370,7 +376,7 @@ TEST_CASE("depth formats and range: a plane tilted 0..89 degrees stays unocclude
                     const glm::dmat4 proj = projection_for(fm, n, ratio, clip);
                     // Skip distances the format cannot resolve at all.
                     if (hc::depth_step(proj, clip, fm.format, z0) > radius / 16) continue;
-                    ssao_settings s = hc::make(16, SSAO_BLUR_NONE, SSAO_ROTATION_HASH, static_cast<float>(radius));
+                    ssao_settings s = hc::make(16, SSAO_BLUR_NONE, SSAO_ROTATION_HASH, static_cast<float>(radius), method);
                     fx.settings(s);
                     for (double tilt : {0.0, 30.0, 60.0, 80.0, 89.0}) {
                         const std::string fname = fm.name; CAPTURE(fname);
@@ -391,6 +397,9 @@ TEST_CASE("depth formats and range: a plane tilted 0..89 degrees stays unocclude
 }
 
 TEST_CASE("depth formats and range: the tilted plane stays unoccluded with the two-plane kernel and the uniform distribution too") {
+    // Kernel shapes and distributions: the kernel method's alone (the
+    // visibility method ignores both; its tilted planes are the case above).
+    const ssao_method method = SSAO_METHOD_KERNEL;
     testgl::Fixture fx;
     int runs = 0;
     for (ssao_kernel_shape shape : {SSAO_KERNEL_HEMISPHERE, SSAO_KERNEL_SEPARABLE})
@@ -401,7 +410,7 @@ TEST_CASE("depth formats and range: the tilted plane stays unoccluded with the t
                     ssao_clip_range clip;
                     const glm::dmat4 proj = projection_for(fm, n, ratio, clip);
                     if (hc::depth_step(proj, clip, fm.format, z0) > radius / 16) continue;
-                    ssao_settings s = hc::make(16, SSAO_BLUR_NONE, SSAO_ROTATION_HASH, static_cast<float>(radius));
+                    ssao_settings s = hc::make(16, SSAO_BLUR_NONE, SSAO_ROTATION_HASH, static_cast<float>(radius), method);
                     s.kernel_shape = shape;
                     s.distribution = dist;
                     fx.settings(s);
@@ -427,13 +436,14 @@ TEST_CASE("depth formats: the bias follows the format's depth step (a tiny depth
     // about 0.15 radius, far above the constant bias (0.025 radius). The
     // default step-scaled bias keeps it clean; with depth_step_bias = 1e-4
     // only the constant bias is left and the quantised plane shadows itself.
+    HC_EACH_METHOD(method);
     testgl::Fixture fx;
     const Format d16 = kFormats[0];
     const double n = 1e-2, ratio = 1e3, z0 = 1000 * n, radius = 0.1 * z0;
     ssao_clip_range clip;
     const glm::dmat4 proj = projection_for(d16, n, ratio, clip);
     const double step = hc::depth_step(proj, clip, d16.format, z0);
-    ssao_settings s = hc::make(16, SSAO_BLUR_NONE, SSAO_ROTATION_HASH, static_cast<float>(radius));
+    ssao_settings s = hc::make(16, SSAO_BLUR_NONE, SSAO_ROTATION_HASH, static_cast<float>(radius), method);
     const ssao_settings resolved = fx.settings(s);
     MESSAGE("D16, near " << n << ", plane at " << z0 << ": depth step " << step << " (" << step / radius
                          << " radius), constant bias " << resolved.bias << " (" << resolved.bias / step << " steps)");
@@ -452,15 +462,20 @@ TEST_CASE("depth formats: the bias follows the format's depth step (a tiny depth
     MESSAGE("of " << pixels << " plane pixels, below 0.98: default depth_step_bias " << clean_dark
                   << ", depth_step_bias 1e-4 " << acne_dark);
     CHECK(clean_dark == 0);
-    CHECK(acne_dark > pixels / 4);
+    // Estimator-specific: the kernel counts every sample behind the
+    // quantised plane, the visibility march only steps that land within
+    // [bias, thickness] of it (a direction leaving the plane soon clears the
+    // step's quantisation), so fewer pixels show the acne, but still many.
+    CHECK(acne_dark > pixels / (method == SSAO_METHOD_VISIBILITY ? 10 : 4));
     CHECK(fx.gl_errors().empty());
 }
 
 TEST_CASE("depth range: view depths beyond the half-float range (> 65504) give the AO of the same scene at unit scale") {
+    HC_EACH_METHOD(method);
     testgl::Fixture fx;
     const int W = 64, H = 48;
     const double k = 1e5;  // the crease at 1e5..1e6 units
-    const ssao_settings s1 = fx.settings(hc::make(16, SSAO_BLUR_DEFAULT, SSAO_ROTATION_HASH, 1.0f));
+    const ssao_settings s1 = fx.settings(hc::make(16, SSAO_BLUR_DEFAULT, SSAO_ROTATION_HASH, 1.0f, method));
     const auto p1 = analytic::reverse_z_infinite(hc::kFov, double(W) / H, 0.1);
     const GBuffer g1 = analytic::render(hc::to_view(hc::crease_world(), hc::crease_view()), p1, SSAO_CLIP_ZERO_TO_ONE, W, H);
     const auto r1 = hc::run(fx, g1, p1, SSAO_CLIP_ZERO_TO_ONE);
@@ -473,7 +488,7 @@ TEST_CASE("depth range: view depths beyond the half-float range (> 65504) give t
     };
     for (const Case& c : cases) {
         const std::string cname = c.name; CAPTURE(cname);
-        fx.settings(hc::make(16, SSAO_BLUR_DEFAULT, SSAO_ROTATION_HASH, static_cast<float>(k)));
+        fx.settings(hc::make(16, SSAO_BLUR_DEFAULT, SSAO_ROTATION_HASH, static_cast<float>(k), method));
         const GBuffer g = analytic::render(hc::to_view(hc::crease_world(k), hc::crease_view(k)), c.proj, SSAO_CLIP_ZERO_TO_ONE, W, H);
         double zmax = 0;
         for (const auto& p : g.position) if (!std::isnan(p.z)) zmax = std::max(zmax, -p.z);
@@ -522,6 +537,7 @@ TEST_CASE("depth precision: the README's rule-of-thumb step table against the ex
 }
 
 TEST_CASE("depth formats and range: orthographic - a plane tilted 0..89 degrees stays unoccluded wherever the format resolves its depth") {
+    HC_EACH_METHOD(method);
     testgl::Fixture fx;
     int runs = 0;
     struct OrthoFormat { const char* name; GLenum fmt; int kind; };  // kind 0: GL [-1,1], 1: [0,1], 2: reversed [0,1]
@@ -537,7 +553,7 @@ TEST_CASE("depth formats and range: orthographic - a plane tilted 0..89 degrees 
                     const ssao_clip_range clip = fm.kind == 0 ? SSAO_CLIP_NEGATIVE_ONE_TO_ONE : SSAO_CLIP_ZERO_TO_ONE;
                     const glm::dmat4 proj = fm.kind == 0 ? analytic::orthographic(hw, hw, n, f)
                                             : fm.kind == 1 ? hc::ortho_zo(hw, hw, n, f) : hc::ortho_reverse(hw, hw, n, f);
-                    fx.settings(hc::make(16, SSAO_BLUR_NONE, SSAO_ROTATION_HASH, static_cast<float>(radius)));
+                    fx.settings(hc::make(16, SSAO_BLUR_NONE, SSAO_ROTATION_HASH, static_cast<float>(radius), method));
                     for (double tilt : {0.0, 30.0, 60.0, 80.0, 89.0}) {
                         const std::string fname = fm.name;
                         CAPTURE(fname);
@@ -572,6 +588,8 @@ TEST_CASE("depth formats and range: orthographic - a plane tilted 0..89 degrees 
 
 TEST_CASE("finding F1, kept executable: the old snap guard is what made tilted planes self-occlude, and the GPU follows the guard-free formula") {
     // tests/support/cpu_ssao with and without the removed line (Input::legacy_snap_guard).
+    // The old snap guard was the kernel pass's: kernel method only.
+    const ssao_method method = SSAO_METHOD_KERNEL;
     testgl::Fixture fx;
     const Format d16 = kFormats[0];
     const double n = 1.0, ratio = 1e3, z0 = 4.0, tilt = 60.0, radius = 0.4;
@@ -579,7 +597,7 @@ TEST_CASE("finding F1, kept executable: the old snap guard is what made tilted p
     const glm::dmat4 proj = projection_for(d16, n, ratio, clip);
     GBuffer g = analytic::render(tilted_plane(z0, tilt), proj, clip, 32, 32);
     for (auto& d : g.depth) d = static_cast<float>(hc::quantise(d, d16.format));
-    const ssao_settings rs = fx.settings(hc::make(16, SSAO_BLUR_NONE, SSAO_ROTATION_HASH, static_cast<float>(radius)));
+    const ssao_settings rs = fx.settings(hc::make(16, SSAO_BLUR_NONE, SSAO_ROTATION_HASH, static_cast<float>(radius), method));
     hc::RunOptions o;
     o.depth_format = d16.format;
     const auto r = hc::run(fx, g, proj, clip, o);

@@ -24,8 +24,7 @@ const ssao_method kMethods[] = {SSAO_METHOD_KERNEL, SSAO_METHOD_VISIBILITY};
 
 ssao_settings make(ssao_method method, ssao_resolution res, ssao_blur blur, ssao_rotation rotation, float radius,
                    uint32_t samples = 16) {
-    ssao_settings s = hc::make(samples, blur, rotation, radius);
-    s.method = method;
+    ssao_settings s = hc::make(samples, blur, rotation, radius, method);
     s.resolution = res;
     return s;
 }

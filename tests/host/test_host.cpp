@@ -277,7 +277,13 @@ TEST_CASE("the ground right beside the model is darker than open ground") {
         // depth 10 everywhere, anything nearer is the model.
         const int n = 128;
         const Run r = run_host({model, "--out", dir, "--width", std::to_string(n), "--height", std::to_string(n),
-                                "--eye", "0,10,0", "--target", "0,0,0", "--ortho", "2.5", "--no-sheet"});
+                                "--eye", "0,10,0", "--target", "0,0,0", "--ortho", "2.5", "--no-sheet",
+                                // Straight down, the model's top lies further in front of the ground
+                                // beside it than the visibility estimator's thickness, so that
+                                // estimator (like the depth-only limit) reads the ground as open:
+                                // one depth layer cannot tell a tall object from a floating one.
+                                // The kernel's volume count is what this case checks.
+                                "--method", "kernel"});
         INFO("stdout: " << r.out << "\nstderr: " << r.err);
         REQUIRE(r.exit_code == 0);
         const Image ao = load_exr(dir + "/ao.exr");
@@ -319,7 +325,7 @@ TEST_CASE("a nested node hierarchy puts the geometry where its transforms say") 
     const int n = 96;
     const std::string dir = fresh_dir("nested");
     const Run r = run_host({kData + "/nested.gltf", "--out", dir, "--width", std::to_string(n), "--height",
-                            std::to_string(n), "--no-sheet"});
+                            std::to_string(n), "--no-sheet", "--method", "kernel" /* top-down: see "beside the model" */});
     INFO("stdout: " << r.out << "\nstderr: " << r.err);
     REQUIRE(r.exit_code == 0);
     CHECK(r.out.find("the scene's") != std::string::npos);
@@ -483,6 +489,13 @@ TEST_CASE("bad input: one message, a non-zero exit, earlier output untouched") {
         {{"--blur-sigma", "0"}, "--blur-sigma"},
         {{"--blur-tolerance", "2"}, "--blur-tolerance"},
         {{"--output-format", "rgba8"}, "--output-format"},
+        {{"--method", "horizon"}, "--method"},
+        {{"--thickness", "0"}, "--thickness"},
+        {{"--thickness", "-0.5"}, "--thickness"},
+        {{"--thickness", "nan"}, "--thickness"},
+        {{"--steps", "0"}, "--steps"},
+        {{"--steps", "33"}, "--steps"},
+        {{"--steps", "2.5"}, "--steps"},
         {{"--preset", "extreme"}, "--preset"},
         {{"--seed", "-3"}, "--seed"},
         {{"--depth", "d8"}, "--depth"},
@@ -534,7 +547,7 @@ TEST_CASE("--help lists every flag with the plugin's own defaults") {
           "--normals", "--normal-format", "--samples", "--radius", "--bias", "--depth-step-bias", "--power",
           "--strength", "--kernel", "--distribution", "--rotation", "--seed", "--blur", "--blur-radius",
           "--blur-sigma", "--blur-tolerance", "--output-format", "--preset", "--frames", "--only", "--sheet",
-          "--gl33", "--out"})
+          "--gl33", "--out", "--method", "--thickness", "--steps"})
         CHECK_MESSAGE(r.out.find(flag) != std::string::npos, flag);
     // The defaults shown are the plugin's resolved zeroed settings.
     plugin::Library lib;
@@ -553,6 +566,91 @@ TEST_CASE("--help lists every flag with the plugin's own defaults") {
     std::ostringstream power;
     power << "(default " << d.power << ")";
     CHECK(line_of("--power").find(power.str()) != std::string::npos);
+    // The estimator's flags: ranges from the header's limits, defaults from the plugin.
+    CHECK(line_of("--steps").find("1.." + std::to_string(SSAO_MAX_STEPS) + " (default " + std::to_string(d.step_count) + ")") !=
+          std::string::npos);
+    CHECK(r.out.find("(default " + std::string(d.method == SSAO_METHOD_VISIBILITY ? "visibility" : "kernel") + ")") !=
+          std::string::npos);
+    std::ostringstream thickness;
+    thickness << "(default " << d.thickness / d.radius << " x radius)";
+    CHECK(r.out.find(thickness.str()) != std::string::npos);
+}
+
+TEST_CASE("usage errors of the estimator flags exit with status 2 and one line naming the flag") {
+    for (const std::vector<std::string>& args : std::vector<std::vector<std::string>>{
+             {"--method", "horizon"}, {"--method"}, {"--thickness", "0"}, {"--thickness", "inf"}, {"--thickness", "x"},
+             {"--steps", "0"}, {"--steps", "33"}, {"--steps", "-1"}}) {
+        CAPTURE(args[0]);
+        CAPTURE(args.size() > 1 ? args[1] : std::string("(no value)"));
+        const Run r = run_host(args);
+        CAPTURE(r.err);
+        CHECK(r.exit_code == 2);
+        const auto lines = r.own_error_lines();
+        REQUIRE(lines.size() == 1);
+        CHECK(lines[0].find(args[0]) != std::string::npos);
+    }
+}
+
+TEST_CASE("--method, --thickness and --steps reach the plugin") {
+    // Spot, 64x48, radius 0.3, no blur, hash rotation: per pixel the
+    // visibility estimator can only block more as the thickness grows.
+    const std::vector<std::string> common = {"--width", "64", "--height", "48", "--only", "ao", "--radius", "0.3",
+                                             "--blur", "none", "--rotation", "hash", "--output-format", "r16f"};
+    auto render = [&](const std::string& name, const std::vector<std::string>& extra) {
+        const std::string dir = fresh_dir(name);
+        std::vector<std::string> args = common;
+        args.insert(args.end(), {"--out", dir});
+        args.insert(args.end(), extra.begin(), extra.end());
+        const Run r = run_host(args);
+        INFO("stdout: " << r.out << "\nstderr: " << r.err);
+        REQUIRE(r.exit_code == 0);
+        return std::make_pair(load_exr(dir + "/ao.exr"), r.out);
+    };
+    plugin::Library lib;
+    std::string error;
+    REQUIRE_MESSAGE(lib.open(plugin::Library::default_path(), error), error);
+    ssao_settings want{}, d{};
+    want.size = d.size = sizeof(ssao_settings);
+    want.method = SSAO_METHOD_VISIBILITY;
+    want.radius = 0.3f;
+    REQUIRE(lib.api().resolve_settings(&want, &d) == SSAO_OK);
+
+    const auto kernel = render("method_kernel", {"--method", "kernel"});
+    const auto vis = render("method_visibility", {"--method", "visibility"});
+    CHECK(kernel.second.find("method kernel") != std::string::npos);
+    std::ostringstream summary;
+    summary << "method visibility (steps " << d.step_count << ", thickness " << d.thickness << ")";
+    CHECK(vis.second.find(summary.str()) != std::string::npos);
+    const Diff km = compare(kernel.first, vis.first);
+    MESSAGE("kernel vs visibility: mean |diff| " << km.mean << ", max " << km.max);
+    CHECK(km.mean > 0.003);
+    CHECK(km.max > 0.05);
+
+    // The plugin's own defaults given explicitly: the same image, bit for bit.
+    std::ostringstream t;
+    t << d.thickness;
+    const auto explicit_defaults =
+        render("method_explicit", {"--method", "visibility", "--steps", std::to_string(d.step_count), "--thickness", t.str()});
+    CHECK(compare(vis.first, explicit_defaults.first).max == 0.0);
+
+    // Steps: a different march, a different image.
+    const auto one_step = render("method_one_step", {"--method", "visibility", "--steps", "1"});
+    CHECK(one_step.second.find("method visibility (steps 1,") != std::string::npos);
+    CHECK(compare(vis.first, one_step.first).mean > 1e-3);
+
+    // Thickness: a height field (huge thickness) blocks everything the
+    // default blocks and more; never lighter at any pixel.
+    const auto height_field = render("method_height_field", {"--method", "visibility", "--thickness", "1e30"});
+    double lighter = 0, mean_default = 0, mean_height = 0;
+    for (size_t i = 0; i < vis.first.v.size(); ++i) {
+        lighter = std::max(lighter, double(height_field.first.v[i]) - vis.first.v[i]);
+        mean_default += vis.first.v[i];
+        mean_height += height_field.first.v[i];
+    }
+    MESSAGE("mean AO: thickness " << d.thickness << " " << mean_default / vis.first.v.size() << ", 1e30 "
+                                  << mean_height / vis.first.v.size());
+    CHECK(lighter <= 1e-3);
+    CHECK(mean_height < mean_default - 1e-3 * vis.first.v.size());
 }
 
 TEST_CASE("scene hints set the AO settings and flags override them") {

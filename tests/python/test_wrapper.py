@@ -37,11 +37,13 @@ def main():
     s = ssao.ssao_settings()
     check(s.size == ctypes.sizeof(ssao.ssao_settings), "a new struct carries its size (%d)" % s.size)
     d = lib.resolve_settings()
-    check(d.sample_count == 16 and abs(d.radius - 0.5) < 1e-6 and d.blur == ssao.SSAO_BLUR_DEPTH_AWARE,
-          "a zeroed ssao_settings resolves to the documented defaults: %r" % d)
+    default = lib.preset_settings(ssao.SSAO_PRESET_DEFAULT)
+    check(bytes(d) == bytes(default) and abs(d.radius - 0.5) < 1e-6,
+          "a zeroed ssao_settings resolves to the DEFAULT preset: %r" % d)
     low = lib.preset_settings(ssao.SSAO_PRESET_LOW)
-    check(low.sample_count == 4 and low.blur == ssao.SSAO_BLUR_NONE, "preset low: 4 samples, no blur (%d, %d)"
-          % (low.sample_count, low.blur))
+    ultra = lib.preset_settings(ssao.SSAO_PRESET_ULTRA)
+    work = lambda p: p.sample_count * (p.step_count if p.method == ssao.SSAO_METHOD_VISIBILITY else 1)
+    check(work(low) < work(ultra), "preset low does less work than ultra (%d < %d)" % (work(low), work(ultra)))
 
     bad = ssao.ssao_settings(sample_count=1000)
     ok, e = raises(lambda: lib.resolve_settings(bad), ssao.SSAO_ERROR_INVALID_VALUE)

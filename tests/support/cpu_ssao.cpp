@@ -48,11 +48,18 @@ float ao(const Input& in, const ssao_settings& s, int x, int y) {
     const glm::dvec3 to_eye = p.orthographic ? glm::dvec3(0, 0, 1) : glm::normalize(-P);
     // The normal as the pass sees it: broken ones fall back to the eye
     // direction, back-facing ones lose the part pointing away.
-    auto normal_at = [&](int px, int py, const glm::dvec3& eye_dir) {
-        glm::dvec3 v = glm::dvec3(g.normal[static_cast<size_t>(py) * g.width + px]);
+    // The stored normal, unit length; false when zero, NaN or infinite.
+    auto decode_normal = [&](int px, int py, glm::dvec3& v) {
+        v = glm::dvec3(g.normal[static_cast<size_t>(py) * g.width + px]);
         const double m = std::max(std::abs(v.x), std::max(std::abs(v.y), std::abs(v.z)));
         const double sum = std::abs(v.x) + std::abs(v.y) + std::abs(v.z);  // NaN-propagating, unlike max
-        v = (m > 1e-30 && m < 3.0e38 && sum < 3.0e38) ? glm::normalize(v / m) : eye_dir;
+        if (!(m > 1e-30 && m < 3.0e38 && sum < 3.0e38)) return false;
+        v = glm::normalize(v / m);
+        return true;
+    };
+    auto normal_at = [&](int px, int py, const glm::dvec3& eye_dir) {
+        glm::dvec3 v;
+        if (!decode_normal(px, py, v)) v = eye_dir;
         const double away = glm::dot(v, eye_dir);
         if (away < 0.0) v = glm::normalize(v - eye_dir * (away * 1.01));
         return v;
@@ -111,11 +118,15 @@ float ao(const Input& in, const ssao_settings& s, int x, int y) {
                 if (sd == sky) continue;
                 const glm::dvec3 Q = position(sx, sy, sd);
                 // The surface under the step: the plane through Q with the
-                // texel's normal, met by the eye ray through the step.
-                const glm::dvec3 nq = normal_at(sx, sy, p.orthographic ? glm::dvec3(0, 0, 1) : glm::normalize(-Q));
+                // texel's normal, met by the eye ray through the step; the
+                // snap where that normal is broken or faces away.
+                glm::dvec3 nq;
+                const glm::dvec3 to_eye_q = p.orthographic ? glm::dvec3(0, 0, 1) : glm::normalize(-Q);
+                const bool trusted = decode_normal(sx, sy, nq) && glm::dot(nq, to_eye_q) > 0.0;
                 const double plane = glm::dot(Q, nq);
                 double in_front = Q.z - snap(sp, Q).z;
-                if (p.orthographic) {
+                if (!trusted) {
+                } else if (p.orthographic) {
                     if (std::abs(nq.z) > 1e-3) in_front = (plane - nq.x * sp.x - nq.y * sp.y) / nq.z - sp.z;
                 } else if (std::abs(glm::dot(sp, nq)) > 1e-3 * glm::length(sp)) {
                     in_front = sp.z * (plane / glm::dot(sp, nq)) - sp.z;
