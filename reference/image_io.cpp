@@ -139,6 +139,10 @@ bool read_exr_channel(const std::string& path, const std::vector<std::string>& p
     }
     for (int c = 0; c < x.header.num_channels; ++c)
         if (x.header.pixel_types[c] == TINYEXR_PIXELTYPE_HALF) x.header.requested_pixel_types[c] = TINYEXR_PIXELTYPE_FLOAT;
+    // tinyexr (1.0.1) frees a failed load with FreeEXRImage, which frees the
+    // channel buffers only up to image.num_channels, set after a successful
+    // decode: set it now so a truncated file leaks nothing (issue 11).
+    x.image.num_channels = x.header.num_channels;
     const char* err = nullptr;
     if (LoadEXRImageFromFile(&x.image, &x.header, path.c_str(), &err) != TINYEXR_SUCCESS) {
         error = path + ": cannot read the EXR pixels (" + exr_message(err) + ").";

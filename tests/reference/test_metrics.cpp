@@ -220,4 +220,23 @@ TEST_CASE("EXR round trip keeps NaN-free floats and channel names") {
     std::filesystem::remove_all(dir);
 }
 
+TEST_CASE("a truncated EXR is refused with a sentence, and nothing it allocated is kept") {
+    // tinyexr 1.0.1 frees a failed load's channel buffers only up to the
+    // image's channel count, which it sets after decoding: every truncated
+    // file leaked its buffers (LeakSanitizer, found by fuzz_exr, issue 11).
+    const auto dir = std::filesystem::temp_directory_path() / ("ssao_metrics_cut_" + std::to_string(getpid()));
+    std::filesystem::create_directories(dir);
+    const std::string path = (dir / "cut.exr").string();
+    std::vector<float> y(64, 0.5f), a(64, 1.0f);
+    std::string err;
+    REQUIRE(refio::write_exr(path, 8, 8, {{"Y", &y}, {"A", &a}}, err));
+    std::filesystem::resize_file(path, std::filesystem::file_size(path) - 10);
+    std::vector<float> back;
+    int w = 0, h = 0;
+    CHECK_FALSE(refio::read_exr_channel(path, {"Y"}, back, w, h, err));
+    CHECK(err.find("cut.exr") != std::string::npos);
+    CHECK(err.find("cannot read the EXR pixels") != std::string::npos);
+    std::filesystem::remove_all(dir);
+}
+
 }  // TEST_SUITE
