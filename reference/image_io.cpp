@@ -106,11 +106,15 @@ bool parse_header(const std::string& path, LoadedExr& x, std::string& error) {
         return false;
     }
     const char* err = nullptr;
-    if (ParseEXRHeaderFromFile(&x.header, &version, path.c_str(), &err) != TINYEXR_SUCCESS) {
+    const int rc = ParseEXRHeaderFromFile(&x.header, &version, path.c_str(), &err);
+    // Freed even when parsing failed: tinyexr fills the header (channels,
+    // pixel types) before it reports a later error, and FreeEXRHeader is
+    // safe on the initialised, unfilled header (leak found by fuzz_exr).
+    x.header_ok = true;
+    if (rc != TINYEXR_SUCCESS) {
         error = path + ": cannot parse the EXR header (" + exr_message(err) + ").";
         return false;
     }
-    x.header_ok = true;
     return true;
 }
 

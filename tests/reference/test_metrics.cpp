@@ -6,6 +6,8 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <limits>
 #include <unistd.h>
 
@@ -221,7 +223,7 @@ TEST_CASE("EXR round trip keeps NaN-free floats and channel names") {
 }
 
 TEST_CASE("a truncated EXR is refused with a sentence, and nothing it allocated is kept") {
-    // tinyexr 1.0.1 frees a failed load's channel buffers only up to the
+    // Cut in the pixels: tinyexr 1.0.1 frees a failed load's channel buffers only up to the
     // image's channel count, which it sets after decoding: every truncated
     // file leaked its buffers (LeakSanitizer, found by fuzz_exr, issue 11).
     const auto dir = std::filesystem::temp_directory_path() / ("ssao_metrics_cut_" + std::to_string(getpid()));
@@ -236,6 +238,20 @@ TEST_CASE("a truncated EXR is refused with a sentence, and nothing it allocated 
     CHECK_FALSE(refio::read_exr_channel(path, {"Y"}, back, w, h, err));
     CHECK(err.find("cut.exr") != std::string::npos);
     CHECK(err.find("cannot read the EXR pixels") != std::string::npos);
+    // Cut inside the header, after its channel list: tinyexr had filled the
+    // header's channels before failing, and a failed parse was not freed.
+    REQUIRE(refio::write_exr(path, 8, 8, {{"Y", &y}, {"A", &a}}, err));
+    std::string bytes;
+    {
+        std::ifstream in(path, std::ios::binary);
+        bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    }
+    const size_t cut = bytes.find("compression");
+    REQUIRE(cut != std::string::npos);
+    std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes.substr(0, cut + 3);
+    CHECK_FALSE(refio::read_exr_channel(path, {"Y"}, back, w, h, err));
+    CHECK(err.find("cannot parse the EXR header") != std::string::npos);
+    CHECK_FALSE(refio::exr_has_channel(path, "Y"));
     std::filesystem::remove_all(dir);
 }
 
