@@ -20,6 +20,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <exception>
 
 namespace refio {
 namespace {
@@ -118,9 +119,7 @@ bool parse_header(const std::string& path, LoadedExr& x, std::string& error) {
     return true;
 }
 
-}  // namespace
-
-bool exr_has_channel(const std::string& path, const std::string& name) {
+bool has_channel(const std::string& path, const std::string& name) {
     LoadedExr x;
     std::string err;
     if (!parse_header(path, x, err)) return false;
@@ -129,12 +128,22 @@ bool exr_has_channel(const std::string& path, const std::string& name) {
     return false;
 }
 
-bool read_exr_channel(const std::string& path, const std::vector<std::string>& preferred, std::vector<float>& out,
-                      int& width, int& height, std::string& error, std::string* used) {
+bool read_channel(const std::string& path, const std::vector<std::string>& preferred, std::vector<float>& out,
+                  int& width, int& height, std::string& error, std::string* used) {
     LoadedExr x;
     if (!parse_header(path, x, error)) return false;
     if (x.header.tiled) {
         error = path + ": tiled EXR files are not supported.";
+        return false;
+    }
+    // tinyexr sizes its buffers from the data window without checking it: a
+    // window from INT_MIN asks for exabytes (found by fuzz_exr). Our images
+    // are at most 16384 pixels a side; 65536 leaves room.
+    const EXRBox2i& dw = x.header.data_window;
+    const long long w = (long long)dw.max_x - dw.min_x + 1, h = (long long)dw.max_y - dw.min_y + 1;
+    if (w < 1 || h < 1 || w > 65536 || h > 65536) {
+        error = path + ": the EXR's data window (" + std::to_string(w) + " x " + std::to_string(h) +
+                " pixels) is outside 1..65536 a side.";
         return false;
     }
     if (x.header.num_channels <= 0) {
@@ -180,6 +189,29 @@ bool read_exr_channel(const std::string& path, const std::vector<std::string>& p
     }
     if (used) *used = x.header.channels[chosen].name;
     return true;
+}
+
+}  // namespace
+
+// tinyexr throws out of its C API on some malformed files (std::length_error
+// from a vector sized by a corrupt header, std::bad_alloc; found by
+// fuzz_exr): the readers turn that into their usual refusal.
+bool exr_has_channel(const std::string& path, const std::string& name) {
+    try {
+        return has_channel(path, name);
+    } catch (const std::exception&) {
+        return false;
+    }
+}
+
+bool read_exr_channel(const std::string& path, const std::vector<std::string>& preferred, std::vector<float>& out,
+                      int& width, int& height, std::string& error, std::string* used) {
+    try {
+        return read_channel(path, preferred, out, width, height, error, used);
+    } catch (const std::exception& e) {
+        error = path + ": a malformed EXR made the reader fail (" + e.what() + ").";
+        return false;
+    }
 }
 
 bool write_png_grey(const std::string& path, int width, int height, const std::vector<float>& values, std::string& error) {

@@ -252,6 +252,22 @@ TEST_CASE("a truncated EXR is refused with a sentence, and nothing it allocated 
     CHECK_FALSE(refio::read_exr_channel(path, {"Y"}, back, w, h, err));
     CHECK(err.find("cannot parse the EXR header") != std::string::npos);
     CHECK_FALSE(refio::exr_has_channel(path, "Y"));
+    // A data window from INT_MIN: tinyexr sizes its buffers from it (an
+    // exabyte request, or std::length_error thrown out of its C API); the
+    // reader refuses the file first.
+    REQUIRE(refio::write_exr(path, 8, 8, {{"Y", &y}, {"A", &a}}, err));
+    {
+        std::ifstream in(path, std::ios::binary);
+        bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    }
+    const std::string key("dataWindow\0box2i\0", 17);
+    const size_t window = bytes.find(key);
+    REQUIRE(window != std::string::npos);
+    bytes[window + key.size() + 4 + 4 + 3] = char(0x80);  // y_min's high byte
+    std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes;
+    CHECK_FALSE(refio::read_exr_channel(path, {"Y"}, back, w, h, err));
+    CHECK(err.find("cut.exr") != std::string::npos);
+    CHECK(err.find("data window") != std::string::npos);
     std::filesystem::remove_all(dir);
 }
 
