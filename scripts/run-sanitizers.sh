@@ -12,8 +12,9 @@ cd "$(dirname "$0")/.."
 scripts/install-deps.sh
 root=$PWD
 jobs=$(nproc)
-# Inputs per cheap fuzzer in CI (the ABI fuzzer, which renders, gets a tenth):
-# a few minutes in all on 2 cores; raise it for a longer run.
+# Inputs per fuzzer in CI (tests/fuzz/run-fuzzers.sh: the argv parsers get
+# 5x, the ABI fuzzer, which renders, a tenth): about two minutes in all on
+# 2 cores; raise it for a longer run.
 : "${SSAO_FUZZ_RUNS:=20000}"
 
 export CC=clang-14 CXX=clang++-14
@@ -56,7 +57,7 @@ step "ASan+UBSan: the CTest suite"
 LD_PRELOAD=$root/build-asan/keep_modules.so \
   ctest --test-dir build-asan --output-on-failure -j"$jobs" -LE '^(package|python|readme)$'
 
-step "fuzzers, $SSAO_FUZZ_RUNS inputs each (ABI: $((SSAO_FUZZ_RUNS / 10)))"
+step "fuzzers: scene and EXR $SSAO_FUZZ_RUNS inputs each, argv $((SSAO_FUZZ_RUNS * 5)), ABI $((SSAO_FUZZ_RUNS / 10))"
 bash tests/fuzz/run-fuzzers.sh build-asan "$SSAO_FUZZ_RUNS"
 
 step "TSan build of the library and the thread test"
