@@ -324,7 +324,10 @@ public:
 
         out_.positions.insert(out_.positions.end(), wpos.begin(), wpos.end());
         out_.normals.insert(out_.normals.end(), wnrm.begin(), wnrm.end());
-        out_.indices.reserve(out_.indices.size() + tri.size());
+        // No reserve(size + n) here: called once per node instance, an exact
+        // reserve reallocates (and copies) the whole index list every time,
+        // quadratic in the instances (found by fuzz_scene, issue 11); the
+        // vector's own geometric growth is linear.
         for (uint32_t i : tri) out_.indices.push_back(base + i);
         return true;
     }

@@ -22,7 +22,14 @@ float lerp(float a, float b, float t) { return a + (b - a) * t; }
 // A random direction in the set the shape allows, never (near) zero length.
 glm::vec3 direction(Random& rng, ssao_kernel_shape shape, int plane) {
     for (;;) {
-        glm::vec3 v(rng.next_float() * 2.0f - 1.0f, rng.next_float() * 2.0f - 1.0f, rng.next_float());
+        // One draw per statement: the order in which a constructor's
+        // arguments are evaluated is unspecified (GCC goes right to left,
+        // clang left to right), and the kernel must not depend on the
+        // compiler. This is GCC's order, so kernels stay what they were.
+        const float z = rng.next_float();
+        const float y = rng.next_float() * 2.0f - 1.0f;
+        const float x = rng.next_float() * 2.0f - 1.0f;
+        glm::vec3 v(x, y, z);
         if (shape == SSAO_KERNEL_SPHERE) v.z = v.z * 2.0f - 1.0f;
         if (shape == SSAO_KERNEL_SEPARABLE) (plane == 0 ? v.y : v.x) = 0.0f;
         const float len = glm::length(v);

@@ -20,6 +20,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <exception>
 
 namespace refio {
 namespace {
@@ -106,17 +107,19 @@ bool parse_header(const std::string& path, LoadedExr& x, std::string& error) {
         return false;
     }
     const char* err = nullptr;
-    if (ParseEXRHeaderFromFile(&x.header, &version, path.c_str(), &err) != TINYEXR_SUCCESS) {
+    const int rc = ParseEXRHeaderFromFile(&x.header, &version, path.c_str(), &err);
+    // Freed even when parsing failed: tinyexr fills the header (channels,
+    // pixel types) before it reports a later error, and FreeEXRHeader is
+    // safe on the initialised, unfilled header (leak found by fuzz_exr).
+    x.header_ok = true;
+    if (rc != TINYEXR_SUCCESS) {
         error = path + ": cannot parse the EXR header (" + exr_message(err) + ").";
         return false;
     }
-    x.header_ok = true;
     return true;
 }
 
-}  // namespace
-
-bool exr_has_channel(const std::string& path, const std::string& name) {
+bool has_channel(const std::string& path, const std::string& name) {
     LoadedExr x;
     std::string err;
     if (!parse_header(path, x, err)) return false;
@@ -125,12 +128,22 @@ bool exr_has_channel(const std::string& path, const std::string& name) {
     return false;
 }
 
-bool read_exr_channel(const std::string& path, const std::vector<std::string>& preferred, std::vector<float>& out,
-                      int& width, int& height, std::string& error, std::string* used) {
+bool read_channel(const std::string& path, const std::vector<std::string>& preferred, std::vector<float>& out,
+                  int& width, int& height, std::string& error, std::string* used) {
     LoadedExr x;
     if (!parse_header(path, x, error)) return false;
     if (x.header.tiled) {
         error = path + ": tiled EXR files are not supported.";
+        return false;
+    }
+    // tinyexr sizes its buffers from the data window without checking it: a
+    // window from INT_MIN asks for exabytes (found by fuzz_exr). Our images
+    // are at most 16384 pixels a side; 65536 leaves room.
+    const EXRBox2i& dw = x.header.data_window;
+    const long long w = (long long)dw.max_x - dw.min_x + 1, h = (long long)dw.max_y - dw.min_y + 1;
+    if (w < 1 || h < 1 || w > 65536 || h > 65536) {
+        error = path + ": the EXR's data window (" + std::to_string(w) + " x " + std::to_string(h) +
+                " pixels) is outside 1..65536 a side.";
         return false;
     }
     if (x.header.num_channels <= 0) {
@@ -139,6 +152,10 @@ bool read_exr_channel(const std::string& path, const std::vector<std::string>& p
     }
     for (int c = 0; c < x.header.num_channels; ++c)
         if (x.header.pixel_types[c] == TINYEXR_PIXELTYPE_HALF) x.header.requested_pixel_types[c] = TINYEXR_PIXELTYPE_FLOAT;
+    // tinyexr (1.0.1) frees a failed load with FreeEXRImage, which frees the
+    // channel buffers only up to image.num_channels, set after a successful
+    // decode: set it now so a truncated file leaks nothing (issue 11).
+    x.image.num_channels = x.header.num_channels;
     const char* err = nullptr;
     if (LoadEXRImageFromFile(&x.image, &x.header, path.c_str(), &err) != TINYEXR_SUCCESS) {
         error = path + ": cannot read the EXR pixels (" + exr_message(err) + ").";
@@ -172,6 +189,29 @@ bool read_exr_channel(const std::string& path, const std::vector<std::string>& p
     }
     if (used) *used = x.header.channels[chosen].name;
     return true;
+}
+
+}  // namespace
+
+// tinyexr throws out of its C API on some malformed files (std::length_error
+// from a vector sized by a corrupt header, std::bad_alloc; found by
+// fuzz_exr): the readers turn that into their usual refusal.
+bool exr_has_channel(const std::string& path, const std::string& name) {
+    try {
+        return has_channel(path, name);
+    } catch (const std::exception&) {
+        return false;
+    }
+}
+
+bool read_exr_channel(const std::string& path, const std::vector<std::string>& preferred, std::vector<float>& out,
+                      int& width, int& height, std::string& error, std::string* used) {
+    try {
+        return read_channel(path, preferred, out, width, height, error, used);
+    } catch (const std::exception& e) {
+        error = path + ": a malformed EXR made the reader fail (" + e.what() + ").";
+        return false;
+    }
 }
 
 bool write_png_grey(const std::string& path, int width, int height, const std::vector<float>& values, std::string& error) {

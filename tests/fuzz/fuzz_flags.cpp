@@ -1,17 +1,73 @@
-// fuzz_flags.cpp - libFuzzer target: the command-line parsers (ssao-host's
-// cli::parse, which walks argv with host/flags and checks the camera flags)
-// on arbitrary argument lists: the input split at '\0' bytes is argv[1..].
-// A parse either succeeds, asks for help, or fails with a sentence.
+// fuzz_flags.cpp - libFuzzer target: the command-line parsers on arbitrary
+// argument lists (the input after its first byte, split at '\0' bytes, is
+// argv[1..]). The first byte picks the parser:
+//   even: ssao-host's cli::parse (host/flags' argv walk plus the camera checks);
+//   odd:  the shared walker and number parsers themselves (flags::walk,
+//         flags::number with and without inf, flags::integer, flags::vec3),
+//         with flags shaped like those of ssao-reference, ssao-error and
+//         ssao-bench, whose own parse() functions live in their main files.
+// A parse either succeeds, asks for help/version, or fails with a sentence;
+// a parsed value is inside the range its parser was given.
 #include "cli.h"
+#include "flags.h"
 
+#include <cmath>
 #include <cstdint>
 #include <string>
 #include <vector>
 
+namespace {
+
+void check(bool ok) {
+    if (!ok) __builtin_trap();
+}
+
+void host_cli(const std::vector<std::string>& args, const std::vector<const char*>& argv) {
+    cli::Options options;
+    std::string error;
+    const cli::ParseResult r = cli::parse(int(args.size()), argv.data(), options, error);
+    check(r != cli::ParseResult::Error || !error.empty());
+    check(r == cli::ParseResult::Error || error.empty());
+}
+
+void shared_walker(const std::vector<std::string>& args, const std::vector<const char*>& argv) {
+    double finite = 1.0, maybe_inf = 1.0;
+    long long whole = 1;
+    glm::vec3 v(0.0f);
+    bool sw = false;
+    std::vector<std::string> positional;
+    const flags::Valued valued = {
+        {"--radius", [&](const std::string& f, const std::string& t) { finite = flags::number(f, t); }},
+        {"--far", [&](const std::string& f, const std::string& t) { maybe_inf = flags::number(f, t, true); }},
+        {"--width", [&](const std::string& f, const std::string& t) { whole = flags::integer(f, t, 1, 16384); }},
+        {"--seed", [&](const std::string& f, const std::string& t) { whole = flags::integer(f, t, 0, 4294967295LL); }},
+        {"--eye", [&](const std::string& f, const std::string& t) { v = flags::vec3(f, t); }},
+        {"--out", [&](const std::string& f, const std::string& t) {
+             if (t.empty()) flags::fail(f + " needs a folder name");
+         }},
+    };
+    const flags::Switches switches = {{"--quick", [&] { sw = true; }}, {"--limit", [&] { sw = !sw; }}};
+    try {
+        flags::walk(int(args.size()), argv.data(), valued, switches,
+                    [&](const std::string& a) { positional.push_back(a); });
+    } catch (const flags::Error& e) {
+        check(!e.message.empty());
+        return;
+    }
+    check(std::isfinite(finite));
+    check(!std::isnan(maybe_inf));
+    check(whole >= 0 && whole <= 4294967295LL);
+    check(std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z));
+}
+
+}  // namespace
+
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-    std::vector<std::string> args{"ssao-host"};
+    if (size == 0) return 0;
+    const bool walker = data[0] & 1;
+    std::vector<std::string> args{"ssao-tool"};
     std::string cur;
-    for (size_t i = 0; i < size; ++i) {
+    for (size_t i = 1; i < size; ++i) {
         if (data[i] == 0) {
             args.push_back(cur);
             cur.clear();
@@ -24,10 +80,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     std::vector<const char*> argv;
     for (const auto& a : args) argv.push_back(a.c_str());
     argv.push_back(nullptr);
-    cli::Options options;
-    std::string error;
-    const cli::ParseResult r = cli::parse(int(args.size()), argv.data(), options, error);
-    if (r == cli::ParseResult::Error && error.empty()) __builtin_trap();
-    if (r != cli::ParseResult::Error && !error.empty()) __builtin_trap();
+    if (walker)
+        shared_walker(args, argv);
+    else
+        host_cli(args, argv);
     return 0;
 }

@@ -115,6 +115,8 @@ def exr():
 
 
 def flags():
+    # The first byte picks the parser (fuzz_flags.cpp): "h" (even) ssao-host's
+    # cli::parse, "w" (odd) the shared walker and number parsers.
     seeds = {
         "defaults": ["scene.glb"],
         "sizes": ["--width", "64", "--height=48", "--samples", "16"],
@@ -124,11 +126,18 @@ def flags():
         "help": ["--help"],
     }
     for name, args in seeds.items():
-        write("flags", name, "\0".join(args))
+        write("flags", name, "h" + "\0".join(args))
+    walker = {
+        "walker-numbers": ["--radius", "1e-3", "--far=inf", "--width", "16384", "--seed", "4294967295"],
+        "walker-bad": ["--radius", "nan", "--width", "0x10", "--eye", "1,,2", "--out="],
+        "walker-mixed": ["a.glb", "--quick", "--eye=1,2,3", "b.glb", "--limit", "--version"],
+    }
+    for name, args in walker.items():
+        write("flags", name, "w" + "\0".join(args))
 
 
 if __name__ == "__main__":
-    scenes()
-    abi()
-    exr()
-    flags()
+    import sys
+    only = sys.argv[1:] or ["scenes", "abi", "exr", "flags"]
+    for part in only:
+        globals()[part]()

@@ -62,7 +62,9 @@ double converged_limit(const Scene& view_scene, const glm::dvec3& P, const glm::
     for (int i = 0; i < samples; ++i) {
         glm::dvec3 v;
         for (;;) {
-            v = glm::dvec3(rng.next_float() * 2.0 - 1.0, rng.next_float() * 2.0 - 1.0, rng.next_float());
+            // Sequenced draws (z, y, x), as plugin/kernel.cpp: argument order is unspecified.
+            const double z = rng.next_float(), y = rng.next_float() * 2.0 - 1.0;
+            v = glm::dvec3(rng.next_float() * 2.0 - 1.0, y, z);
             const double len = glm::length(v);
             if (len > 1e-3 && len <= 1.0) { v /= len; break; }
         }

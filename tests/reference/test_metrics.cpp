@@ -6,6 +6,8 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <limits>
 #include <unistd.h>
 
@@ -217,6 +219,55 @@ TEST_CASE("EXR round trip keeps NaN-free floats and channel names") {
     CHECK_FALSE(refio::exr_has_channel(path, "Z"));
     CHECK_FALSE(refio::read_exr_channel((dir / "missing.exr").string(), {"Y"}, back, w, h, err));
     CHECK(err.find("missing.exr") != std::string::npos);
+    std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("a truncated EXR is refused with a sentence, and nothing it allocated is kept") {
+    // Cut in the pixels: tinyexr 1.0.1 frees a failed load's channel buffers only up to the
+    // image's channel count, which it sets after decoding: every truncated
+    // file leaked its buffers (LeakSanitizer, found by fuzz_exr, issue 11).
+    const auto dir = std::filesystem::temp_directory_path() / ("ssao_metrics_cut_" + std::to_string(getpid()));
+    std::filesystem::create_directories(dir);
+    const std::string path = (dir / "cut.exr").string();
+    std::vector<float> y(64, 0.5f), a(64, 1.0f);
+    std::string err;
+    REQUIRE(refio::write_exr(path, 8, 8, {{"Y", &y}, {"A", &a}}, err));
+    std::filesystem::resize_file(path, std::filesystem::file_size(path) - 10);
+    std::vector<float> back;
+    int w = 0, h = 0;
+    CHECK_FALSE(refio::read_exr_channel(path, {"Y"}, back, w, h, err));
+    CHECK(err.find("cut.exr") != std::string::npos);
+    CHECK(err.find("cannot read the EXR pixels") != std::string::npos);
+    // Cut inside the header, after its channel list: tinyexr had filled the
+    // header's channels before failing, and a failed parse was not freed.
+    REQUIRE(refio::write_exr(path, 8, 8, {{"Y", &y}, {"A", &a}}, err));
+    std::string bytes;
+    {
+        std::ifstream in(path, std::ios::binary);
+        bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    }
+    const size_t cut = bytes.find("compression");
+    REQUIRE(cut != std::string::npos);
+    std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes.substr(0, cut + 3);
+    CHECK_FALSE(refio::read_exr_channel(path, {"Y"}, back, w, h, err));
+    CHECK(err.find("cannot parse the EXR header") != std::string::npos);
+    CHECK_FALSE(refio::exr_has_channel(path, "Y"));
+    // A data window from INT_MIN: tinyexr sizes its buffers from it (an
+    // exabyte request, or std::length_error thrown out of its C API); the
+    // reader refuses the file first.
+    REQUIRE(refio::write_exr(path, 8, 8, {{"Y", &y}, {"A", &a}}, err));
+    {
+        std::ifstream in(path, std::ios::binary);
+        bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    }
+    const std::string key("dataWindow\0box2i\0", 17);
+    const size_t window = bytes.find(key);
+    REQUIRE(window != std::string::npos);
+    bytes[window + key.size() + 4 + 4 + 3] = char(0x80);  // y_min's high byte
+    std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes;
+    CHECK_FALSE(refio::read_exr_channel(path, {"Y"}, back, w, h, err));
+    CHECK(err.find("cut.exr") != std::string::npos);
+    CHECK(err.find("data window") != std::string::npos);
     std::filesystem::remove_all(dir);
 }
 

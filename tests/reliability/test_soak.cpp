@@ -162,3 +162,24 @@ TEST_CASE("soak: 10,000 executes and 500 create/destroy cycles leave nothing beh
             " s; ", reliability::wrapped_calls(), " counted object calls");
     gl.DeleteTextures(1, &host_output);
 }
+
+TEST_CASE("soak: the object counter sees what is made and deleted through it, so a leak would show") {
+    testgl::Fixture fx;  // a current EGL context
+    const long long before = reliability::live_total();
+    auto gen = reinterpret_cast<PFNGLGENTEXTURESPROC>(reliability::counting_get_proc(nullptr, "glGenTextures"));
+    auto del = reinterpret_cast<PFNGLDELETETEXTURESPROC>(reliability::counting_get_proc(nullptr, "glDeleteTextures"));
+    auto make_program = reinterpret_cast<PFNGLCREATEPROGRAMPROC>(reliability::counting_get_proc(nullptr, "glCreateProgram"));
+    auto delete_program = reinterpret_cast<PFNGLDELETEPROGRAMPROC>(reliability::counting_get_proc(nullptr, "glDeleteProgram"));
+    REQUIRE((gen && del && make_program && delete_program));
+    GLuint t[3] = {};
+    gen(3, t);
+    const GLuint p = make_program();
+    CHECK(reliability::live_total() == before + 4);
+    CHECK(reliability::live_objects()["texture"] == 3);
+    del(2, t);
+    delete_program(p);
+    CHECK(reliability::live_total() == before + 1);  // one texture "leaked"
+    del(1, t + 2);
+    CHECK(reliability::live_total() == before);
+    CHECK(fx.gl_errors().empty());
+}
