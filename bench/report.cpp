@@ -103,21 +103,36 @@ std::vector<Summary> summarise(const std::vector<Row>& rows, int width) {
     return out;
 }
 
-// The preset rule: each preset is the configuration of the sweep (kernel and
-// visibility families) with the highest mean PSNR against V_R among those
-// whose mean time is within its budget, as a fraction of the textbook pass.
+// The preset rule (README, "Presets"), over the sweep's kernel and visibility
+// configurations, times as means of the ratio to the textbook pass:
+//   LOW    = the fastest configuration on the front against V_R;
+//   MEDIUM = the most accurate (mean PSNR against V_R) within max(1/4, 2 x LOW's time);
+//   HIGH   = the most accurate within max(1/2, 2 x MEDIUM's time);
+//   ULTRA  = the most accurate within max(1, 2 x HIGH's time).
+// The fractions are the budgets the presets aim at; the doubling keeps the
+// order (each preset buys accuracy with time) where a machine cannot meet them.
 struct Budget {
     const char* preset;
     double ratio;
 };
-constexpr Budget kBudgets[] = {{"low", 0.125}, {"medium (= default)", 0.25}, {"high", 0.5}, {"ultra", 1.0}};
+constexpr Budget kBudgets[] = {{"medium (= default)", 0.25}, {"high", 0.5}, {"ultra", 1.0}};
+
+bool in_sweep(const Summary& s) {
+    return (s.family == Family::kernel || s.family == Family::visibility) && s.kind == Row::Kind::plugin &&
+           std::isfinite(s.psnr);
+}
 
 const Summary* best_within(const std::vector<Summary>& sum, double ratio) {
     const Summary* best = nullptr;
     for (const Summary& s : sum)
-        if ((s.family == Family::kernel || s.family == Family::visibility) && s.kind == Row::Kind::plugin &&
-            std::isfinite(s.psnr) && s.ratio_textbook <= ratio && (!best || s.psnr > best->psnr))
-            best = &s;
+        if (in_sweep(s) && s.ratio_textbook <= ratio && (!best || s.psnr > best->psnr)) best = &s;
+    return best;
+}
+
+const Summary* fastest_on_front(const std::vector<Summary>& sum) {
+    const Summary* best = nullptr;
+    for (const Summary& s : sum)
+        if (in_sweep(s) && s.front_vr && (!best || s.ratio_textbook < best->ratio_textbook)) best = &s;
     return best;
 }
 
@@ -294,13 +309,18 @@ void write_report(const Options& o, const std::vector<Row>& rows) {
     std::ofstream(o.out + "/bench.md") << md.str();
 
     std::ostringstream pr;
-    pr << "Rule: each preset is the sweep configuration with the highest mean PSNR against V_R whose mean GPU time\n"
-          "is within its budget (a fraction of the textbook pass's time, same scenes, same run).\n";
+    pr << "Rule: low = the fastest configuration on the front against V_R; medium, high, ultra = the most accurate\n"
+          "(mean PSNR against V_R) within max(budget, 2 x the previous preset's time), budgets 1/4, 1/2, 1 x textbook.\n";
+    const Summary* prev = fastest_on_front(sum);
+    if (prev)
+        pr << "low: " << prev->config << " (x" << fmt(prev->ratio_textbook) << ", " << fmt(prev->psnr, 2) << " dB)\n";
     for (const Budget& b : kBudgets) {
-        const Summary* s = best_within(sum, b.ratio);
-        pr << b.preset << " (<= " << b.ratio << " x textbook): "
-           << (s ? s->config + " (x" + fmt(s->ratio_textbook) + ", " + fmt(s->psnr, 2) + " dB)" : "none within budget")
-           << "\n";
+        if (!prev) break;
+        const double budget = std::max(b.ratio, 2.0 * prev->ratio_textbook);
+        const Summary* s = best_within(sum, budget);
+        pr << b.preset << " (<= " << fmt(budget) << " x textbook): "
+           << (s ? s->config + " (x" + fmt(s->ratio_textbook) + ", " + fmt(s->psnr, 2) + " dB)" : "none") << "\n";
+        prev = s;
     }
     std::ofstream(o.out + "/presets.txt") << pr.str();
     std::printf("%s\n%s", md.str().c_str(), pr.str().c_str());

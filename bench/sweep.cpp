@@ -15,6 +15,7 @@ Config kernel(uint32_t samples, ssao_blur blur, ssao_kernel_distribution d = SSA
     c.family = Family::kernel;
     c.s = zeroed();
     c.s.method = SSAO_METHOD_KERNEL;
+    c.s.resolution = SSAO_RESOLUTION_FULL;  // explicit: the default follows the DEFAULT preset
     c.s.sample_count = samples;
     c.s.distribution = d;
     c.s.blur = blur;
@@ -22,7 +23,8 @@ Config kernel(uint32_t samples, ssao_blur blur, ssao_kernel_distribution d = SSA
     return c;
 }
 
-Config visibility(uint32_t directions, uint32_t steps, ssao_blur blur) {
+Config visibility(uint32_t directions, uint32_t steps, ssao_blur blur,
+                  ssao_resolution res = SSAO_RESOLUTION_FULL) {
     Config c;
     c.family = Family::visibility;
     c.s = zeroed();
@@ -30,6 +32,7 @@ Config visibility(uint32_t directions, uint32_t steps, ssao_blur blur) {
     c.s.sample_count = directions;
     c.s.step_count = steps;
     c.s.blur = blur;
+    c.s.resolution = res;
     c.name = describe(c.s);
     return c;
 }
@@ -64,6 +67,8 @@ std::string describe(const ssao_settings& s) {
         d = std::string("kernel ") + std::to_string(s.sample_count) +
             (s.distribution == SSAO_DISTRIBUTION_ACCELERATING ? " accelerating" : " uniform") +
             (s.kernel_shape == SSAO_KERNEL_SPHERE ? " sphere" : s.kernel_shape == SSAO_KERNEL_SEPARABLE ? " separable" : "");
+    if (s.resolution == SSAO_RESOLUTION_HALF) d += ", half res";
+    if (s.resolution == SSAO_RESOLUTION_QUARTER) d += ", quarter res";
     d += std::string(", blur ") + blur_name(s.blur);
     if (s.rotation == SSAO_ROTATION_HASH) d += ", hash rotation";
     return d;
@@ -78,9 +83,21 @@ std::vector<Config> sweep() {
     Config chapter = kernel(64, SSAO_BLUR_BOX_4X4, SSAO_DISTRIBUTION_ACCELERATING);
     c.push_back(chapter);
 
-    for (uint32_t d : {2u, 4u, 8u, 16u})
-        for (uint32_t steps : {2u, 4u, 8u, 16u})
+    for (uint32_t d : {2u, 4u, 8u})
+        for (uint32_t steps : {4u, 8u, 16u})
             for (ssao_blur b : blurs) c.push_back(visibility(d, steps, b));
+    // Below full resolution: a quarter (or a sixteenth) of the pixels sampled.
+    for (uint32_t d : {2u, 4u, 8u, 16u})
+        for (uint32_t steps : {4u, 8u, 16u})
+            for (ssao_blur b : {SSAO_BLUR_NONE, SSAO_BLUR_DEPTH_AWARE})
+                c.push_back(visibility(d, steps, b, SSAO_RESOLUTION_HALF));
+    for (uint32_t d : {4u, 8u, 16u}) c.push_back(visibility(d, 8, SSAO_BLUR_DEPTH_AWARE, SSAO_RESOLUTION_QUARTER));
+    for (uint32_t n : {16u, 64u}) {
+        Config k = kernel(n, SSAO_BLUR_DEPTH_AWARE);
+        k.s.resolution = SSAO_RESOLUTION_HALF;
+        k.name = describe(k.s);
+        c.push_back(k);
+    }
     c.push_back(visibility(32, 16, SSAO_BLUR_NONE));
     c.push_back(visibility(64, 32, SSAO_BLUR_NONE));  // converged: what the estimator tends to
     // Thickness: the one knob the limit says matters most (R/2 is the default).
