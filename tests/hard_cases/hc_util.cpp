@@ -70,6 +70,7 @@ ssao_settings make(uint32_t samples, ssao_blur blur, ssao_rotation rotation, flo
     // zeroed struct is the DEFAULT preset, which may not use it).
     s.method = method;
     s.distribution = SSAO_DISTRIBUTION_ACCELERATING;
+    s.resolution = SSAO_RESOLUTION_FULL;  // full resolution: the CPU formula is per pixel
     s.sample_count = samples;
     // DEFAULT meant the depth-aware blur when these cases were written (the
     // kernel method's own default is now the chapter's box).

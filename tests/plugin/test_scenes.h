@@ -35,6 +35,7 @@ inline ssao_settings make(uint32_t samples, ssao_blur blur, ssao_rotation rotati
     // were written for (a zeroed struct is the DEFAULT preset, which may not be).
     s.method = SSAO_METHOD_KERNEL;
     s.distribution = SSAO_DISTRIBUTION_ACCELERATING;
+    s.resolution = SSAO_RESOLUTION_FULL;  // full resolution: the CPU formula is per pixel
     s.sample_count = samples;
     // DEFAULT meant the depth-aware blur when these cases were written (the
     // kernel method's own default is now the chapter's box).

@@ -116,6 +116,7 @@ Result measure(const std::string& path, const ssao_api& api) {
         ssao_settings s{};
         s.size = sizeof s;
         s.method = SSAO_METHOD_VISIBILITY;
+        s.resolution = SSAO_RESOLUTION_FULL;  // the limit is per pixel
         s.sample_count = SSAO_MAX_SAMPLES;
         s.step_count = SSAO_MAX_STEPS;
         s.blur = SSAO_BLUR_NONE;

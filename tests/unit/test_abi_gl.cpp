@@ -68,9 +68,11 @@ void expect_execute_fails(GlFixture& f, const ssao_inputs& in, ssao_status expec
     CHECK(f.log.entries.back().message == error);
 }
 
+// Full resolution: these cases name the full-resolution passes.
 ssao_settings with_blur(ssao_blur blur) {
     ssao_settings s = sized<ssao_settings>();
     s.blur = blur;
+    s.resolution = SSAO_RESOLUTION_FULL;
     return s;
 }
 
@@ -499,8 +501,10 @@ TEST_CASE("abi: a valid execute runs the passes the settings call for") {
     off.strength = SSAO_STRENGTH_OFF;
     ssao_settings off_no_blur = off;
     off_no_blur.blur = SSAO_BLUR_NONE;
+    ssao_settings half_no_blur = with_blur(SSAO_BLUR_NONE);
+    half_no_blur.resolution = SSAO_RESOLUTION_HALF;
     const Expect expect[] = {
-        {"defaults", sized<ssao_settings>(), SSAO_PASS_AO | SSAO_PASS_BLUR_X | SSAO_PASS_BLUR_Y},
+        {"half resolution, no blur", half_no_blur, SSAO_PASS_DOWNSAMPLE | SSAO_PASS_AO | SSAO_PASS_UPSAMPLE},
         {"depth-aware", with_blur(SSAO_BLUR_DEPTH_AWARE), SSAO_PASS_AO | SSAO_PASS_BLUR_X | SSAO_PASS_BLUR_Y},
         {"gaussian", with_blur(SSAO_BLUR_GAUSSIAN), SSAO_PASS_AO | SSAO_PASS_BLUR_X | SSAO_PASS_BLUR_Y},
         {"box 4x4", with_blur(SSAO_BLUR_BOX_4X4), SSAO_PASS_AO | SSAO_PASS_BLUR_X},
@@ -560,7 +564,7 @@ TEST_CASE("abi: a host output texture is written at the viewport only and return
     const int32_t viewport[4] = {4, 6, 16, 12};
     ssao_settings off = sized<ssao_settings>();
     off.strength = SSAO_STRENGTH_OFF;
-    for (const ssao_settings& s : {sized<ssao_settings>(), off}) {
+    for (const ssao_settings& s : {with_blur(SSAO_BLUR_DEPTH_AWARE), off}) {
         set_settings_ok(f, s);
         // A host R8 texture filled with 0.25 everywhere.
         const GLuint host_out = make_color(gl, kSize, kSize, GL_R8);

@@ -106,7 +106,10 @@ TEST_CASE("settings: resolution keeps each named value and maps it to its grid s
         CHECK(r.resolution == c.value);
         CHECK(ssao_impl::resolution_scale(r) == c.scale);
     }
-    CHECK(ssao_impl::resolution_scale(resolve_ok(zeroed())) == 1);  // the default is full for now
+    // The default is the DEFAULT preset's resolution.
+    const ssao_resolution def = ssao_impl::preset_row(SSAO_PRESET_DEFAULT).resolution;
+    CHECK(ssao_impl::resolution_scale(resolve_ok(zeroed())) ==
+          (def == SSAO_RESOLUTION_QUARTER ? 4 : def == SSAO_RESOLUTION_HALF ? 2 : 1));
 }
 
 TEST_CASE("settings: setting only the kernel method gives the chapter's configuration") {

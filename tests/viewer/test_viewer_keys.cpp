@@ -299,10 +299,12 @@ TEST_CASE("the overlay states the settings, the GPU milliseconds and what a key 
     t.blur_ms = 0.5;
     t.total_ms = 1.75;
     tap(c, GLFW_KEY_U);
+    const ssao_blur before = c.state().settings.blur;
     tap(c, GLFW_KEY_B);
     lines = viewer::overlay_lines(c.state(), t, 320, 240);
     CHECK(contains(lines, "mode U hemisphere"));
-    CHECK(contains(lines, "blur box"));
+    CHECK(c.state().settings.blur != before);
+    CHECK(contains(lines, std::string("blur ") + cli::name(c.state().settings.blur)));
     CHECK(contains(lines, "ao 1.250  blur 0.500  total 1.750"));
 #ifdef SSAO_MAX_PASSES   // interface 1.1 timings: every pass on its own
     t.pass_count = 3;
