@@ -21,7 +21,12 @@ struct Row {
     enum class Kind { plugin, textbook, floor, limit } kind = Kind::plugin;
     int width = 0, height = 0;
     ssao_settings s{};             // resolved (plugin rows)
-    double median_ms = 0, p10_ms = 0, p90_ms = 0;  // NaN for the limit
+    double median_ms = 0, p10_ms = 0, p90_ms = 0;  // GPU timestamps; NaN for the limit
+    // Median wall time from submission to glFinish returning. On llvmpipe the
+    // CPU is the device, and a pass's closing timestamp does not wait for its
+    // rasteriser, so this is the cost a user sees there; on a GPU it adds the
+    // round trip.
+    double wall_ms = 0;
     bool has_error = false;        // errors measured (base size only)
     metrics::Stats all, interior, silhouette, border;  // against V_R
     metrics::Stats vs_limit;       // against the depth-only limit (all pixels)

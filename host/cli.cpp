@@ -1,5 +1,7 @@
 #include "cli.h"
 
+#include "preset_text.h"
+
 #include "camera.h"
 #include "camera_flags.h"
 #include "flags.h"
@@ -41,7 +43,8 @@ const std::vector<std::pair<const char*, ssao_output_format>> kOutputs = {
 const std::vector<std::pair<const char*, ssao_method>> kMethods = {
     {"kernel", SSAO_METHOD_KERNEL}, {"visibility", SSAO_METHOD_VISIBILITY}};
 const std::vector<std::pair<const char*, ssao_preset>> kPresets = {
-    {"low", SSAO_PRESET_LOW}, {"medium", SSAO_PRESET_MEDIUM}, {"high", SSAO_PRESET_HIGH}, {"ultra", SSAO_PRESET_ULTRA}};
+    {"low", SSAO_PRESET_LOW}, {"medium", SSAO_PRESET_MEDIUM}, {"high", SSAO_PRESET_HIGH}, {"ultra", SSAO_PRESET_ULTRA},
+    {"chapter", SSAO_PRESET_CHAPTER}};
 const std::vector<std::pair<const char*, DepthFormat>> kDepths = {
     {"d16", DepthFormat::D16}, {"d24", DepthFormat::D24}, {"d32f", DepthFormat::D32F}};
 
@@ -179,7 +182,19 @@ ParseResult parse(int argc, const char* const* argv, Options& o, std::string& er
     return ParseResult::Run;
 }
 
-std::string help_text(const ssao_settings* d, const std::string& default_scene) {
+// One line per preset, from what the plugin returns (preset_text.h).
+static std::string preset_lines(const ssao_settings* presets) {
+    if (!presets) return "                          (presets unknown: the plugin could not be loaded)\n";
+    std::string out;
+    for (int i = 0; i < preset_text::kPresetCount; ++i) {
+        std::string n = preset_text::name(preset_text::kPresetOrder[i]);
+        n.resize(8, ' ');
+        out += "                            " + n + preset_text::describe(presets[i]) + "\n";
+    }
+    return out;
+}
+
+std::string help_text(const ssao_settings* d, const std::string& default_scene, const ssao_settings* presets) {
     auto def = [&](const std::function<std::string(const ssao_settings&)>& f) -> std::string {
         return d ? f(*d) : std::string("unknown: the plugin could not be loaded");
     };
@@ -218,7 +233,9 @@ std::string help_text(const ssao_settings* d, const std::string& default_scene) 
          "  --normal-format rgba16f|rgba8   rgba16f stores signed normals, rgba8 n*0.5+0.5 (default rgba16f)\n"
          "\n"
          "SSAO settings (precedence: flags > scene hints (glTF extras \"ssao\") > --preset > plugin defaults)\n"
-         "  --preset low|medium|high|ultra   start from a plugin preset (default medium = plugin defaults)\n"
+         "  --preset low|medium|high|ultra|chapter   start from a plugin preset (default: the plugin's defaults, which\n"
+         "                          are the medium (DEFAULT) preset)\n"
+      << preset_lines(presets) <<
          "  --method kernel|visibility  estimator: the chapter's point kernel, or ray-marched visibility\n"
          "                          (default " << def([](const ssao_settings& s) { return std::string(name(s.method)); }) << ")\n"
          "  --samples N             kernel samples (visibility: directions), 1.." << SSAO_MAX_SAMPLES << " (default " << def([](const ssao_settings& s) { return std::to_string(s.sample_count); }) << ")\n"

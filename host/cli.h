@@ -67,7 +67,9 @@ ParseResult parse(int argc, const char* const* argv, Options& out, std::string& 
 // The --help text. `defaults` are the plugin's resolved defaults (a zeroed
 // ssao_settings through resolve_settings), or nullptr when the plugin could not
 // be loaded, in which case the plugin's defaults are shown as unavailable.
-std::string help_text(const ssao_settings* defaults, const std::string& default_scene);
+// presets: the four presets (LOW..ULTRA) resolved by the plugin, or null.
+std::string help_text(const ssao_settings* defaults, const std::string& default_scene,
+                      const ssao_settings* presets = nullptr);
 
 // Names as the flags spell them (also used in the printed summary).
 const char* name(ssao_kernel_shape v);

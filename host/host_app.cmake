@@ -14,6 +14,7 @@ target_compile_options(ssao_host_gl PRIVATE ${SSAO_WARNINGS})
 # starts from, the lighting pass and the picture files; ssao-viewer uses them too.
 add_library(ssao_host_app STATIC
   ${CMAKE_CURRENT_LIST_DIR}/cli.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/preset_text.cpp
   ${CMAKE_CURRENT_LIST_DIR}/run_setup.cpp
   ${CMAKE_CURRENT_LIST_DIR}/composite.cpp
   ${CMAKE_CURRENT_LIST_DIR}/image_io.cpp)

@@ -12,6 +12,7 @@
 #include "locate.h"
 #include "modes.h"
 #include "plugin_loader.h"
+#include "preset_text.h"
 #include "run_setup.h"
 #include "scene.h"
 
@@ -408,12 +409,19 @@ int main(int argc, char** argv) {
             ssao_settings defaults{};
             defaults.size = sizeof defaults;
             bool have = false;
+            ssao_settings presets[preset_text::kPresetCount] = {};
             if (library.open_default(options.plugin_path, error)) {
                 ssao_settings zero{};
                 zero.size = sizeof zero;
                 have = library.api().resolve_settings(&zero, &defaults) == SSAO_OK;
+                for (int i = 0; i < preset_text::kPresetCount && have; ++i) {
+                    presets[i].size = sizeof presets[i];
+                    have = library.api().preset_settings(preset_text::kPresetOrder[i], &presets[i]) == SSAO_OK;
+                }
             }
-            std::fputs(cli::help_text(have ? &defaults : nullptr, run_setup::default_scene_path()).c_str(), stdout);
+            std::fputs(cli::help_text(have ? &defaults : nullptr, run_setup::default_scene_path(), have ? presets : nullptr)
+                           .c_str(),
+                       stdout);
             return 0;
         }
         case cli::ParseResult::Version: std::printf("%s\n", flags::version_line("ssao-host").c_str()); return 0;

@@ -137,7 +137,7 @@ ssao_status resolve_settings(const ssao_settings& caller, ssao_settings& out, st
 }
 
 ssao_status preset_settings(uint32_t raw_preset, ssao_settings& out, std::string& why) {
-    if (raw_preset > SSAO_PRESET_ULTRA) return fail(why, SSAO_ERROR_INVALID_ENUM, "preset is not an ssao_preset");
+    if (raw_preset > SSAO_PRESET_CHAPTER) return fail(why, SSAO_ERROR_INVALID_ENUM, "preset is not an ssao_preset");
     const PresetRow& row = preset_row(static_cast<ssao_preset>(raw_preset));
     ssao_settings s{};
     s.size = sizeof(ssao_settings);

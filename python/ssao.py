@@ -130,6 +130,7 @@ class ssao_preset(enum.IntEnum):
     SSAO_PRESET_MEDIUM = 2
     SSAO_PRESET_HIGH = 3
     SSAO_PRESET_ULTRA = 4
+    SSAO_PRESET_CHAPTER = 5
     SSAO_PRESET_MAX_ENUM = 0x7FFFFFFF
 
 

@@ -198,7 +198,7 @@ typedef enum ssao_blur {
 
 /* How occlusion is estimated (settings.method). */
 typedef enum ssao_method {
-    SSAO_METHOD_DEFAULT = 0,      /* = SSAO_METHOD_KERNEL */
+    SSAO_METHOD_DEFAULT = 0,      /* the DEFAULT preset's (kernel) */
     SSAO_METHOD_KERNEL = 1,       /* the chapter's point kernel: the fraction of kernel points behind
                                      the depth buffer (a volume estimate, range-checked); uses
                                      kernel_shape and distribution */
@@ -216,7 +216,7 @@ typedef enum ssao_method {
  * run on that grid, and a depth-aware upsample writes every viewport pixel
  * (README, "Half resolution"). */
 typedef enum ssao_resolution {
-    SSAO_RESOLUTION_DEFAULT = 0,  /* = SSAO_RESOLUTION_FULL */
+    SSAO_RESOLUTION_DEFAULT = 0,  /* the method's default: the DEFAULT preset's (half) for its method */
     SSAO_RESOLUTION_FULL = 1,     /* one AO sample per viewport pixel */
     SSAO_RESOLUTION_HALF = 2,     /* one per 2x2 block: ceil(w/2) x ceil(h/2) */
     SSAO_RESOLUTION_QUARTER = 3,  /* one per 4x4 block: ceil(w/4) x ceil(h/4) */
@@ -236,7 +236,13 @@ typedef enum ssao_output_format {
 
 typedef struct ssao_settings {
     uint32_t size;               /* sizeof(ssao_settings) */
-    uint32_t sample_count;       /* kernel samples, 1..64; default 16 */
+    uint32_t sample_count;       /* kernel samples or visibility directions, 1..64. Defaults of the
+                                    fields a preset sets (sample_count, distribution, blur, method,
+                                    step_count, resolution): the DEFAULT preset's; with only the
+                                    method set to the other estimator, that estimator's classic
+                                    configuration (kernel: the LearnOpenGL chapter's 64 accelerating
+                                    samples with the 4x4 box blur, full resolution; visibility: 8
+                                    directions x 8 steps, depth-aware blur, full resolution) */
     float radius;                /* sampling radius, view-space units, > 0; default 0.5 */
     float bias;                  /* depth bias, view-space units, > 0; default 0.025 * radius
                                     (kernel method) or 0.0025 * radius (visibility method)
@@ -250,39 +256,43 @@ typedef struct ssao_settings {
                                     ao = pow(1 - strength * occlusion, power), clamped to [0,1].
                                     SSAO_STRENGTH_OFF: strength 0, output is 1 and no pass samples. */
     ssao_kernel_shape kernel_shape;             /* default hemisphere */
-    ssao_kernel_distribution distribution;      /* default accelerating */
+    ssao_kernel_distribution distribution;      /* kernel only; default: see sample_count */
     ssao_rotation rotation;                     /* default 4x4 noise */
     uint32_t seed;               /* seed of kernel, noise and hash; 0 = default seed 1 (deterministic) */
-    ssao_blur blur;                             /* default depth-aware */
+    ssao_blur blur;                             /* default: see sample_count */
     uint32_t blur_radius;        /* taps either side, pixels, 1..16; default 2 (box 4x4 ignores it) */
     float blur_sigma;            /* gaussian sigma, pixels, (0, 64]; default blur_radius (gaussian and depth-aware) */
     float blur_depth_tolerance;  /* depth-aware blur: a tap counts when |z_tap - z_centre| <=
                                     tolerance * |z_centre| (relative view depth), (0, 1]; default 0.05 */
     ssao_output_format output_format;           /* plugin-owned output format; default R8 */
     /* ---- appended in interface 1.1 (a 1.0-sized struct reads them as zero = default) */
-    ssao_method method;          /* estimator; default kernel */
+    ssao_method method;          /* estimator; default: the DEFAULT preset's (kernel) */
     float thickness;             /* visibility: how far behind the depth buffer a step still counts
                                     as blocked, view-space units, > 0; default radius / 2
                                     (a huge value such as 1e30 gives the height-field assumption) */
-    uint32_t step_count;         /* visibility: steps per direction, 1..32; default 4 */
-    ssao_resolution resolution;  /* grid the sampling pass runs on; default full. Below full the
+    uint32_t step_count;         /* visibility: steps per direction, 1..32; default: see sample_count */
+    ssao_resolution resolution;  /* grid the sampling pass runs on; default: see sample_count. Below full the
                                     blur runs on that grid and a depth-aware upsample follows */
 } ssao_settings;
 
 /* sizeof(ssao_settings) as interface 1.0 defined it; the library accepts it. */
 #define SSAO_SETTINGS_SIZE_1_0 64u
 
-/* Named quality presets, picked from the Pareto front of error against GPU
- * time that ssao-bench measures (README, "Accuracy against time"). Each keeps
- * the radius, bias and every other field at its default; set the radius for
- * your scene after taking a preset. A zeroed ssao_settings is not a preset: it
- * is the classic configuration (16 accelerating samples, depth-aware blur). */
+/* Named quality presets, picked from the front of error against GPU time
+ * that ssao-bench measures, by the rule stated in the README ("Presets").
+ * Each sets the fields below and keeps every other field (radius, bias,
+ * thickness, ...) at its default; set the radius for your scene after taking
+ * a preset. A zeroed ssao_settings resolves to SSAO_PRESET_DEFAULT. The
+ * comments are tested against preset_settings (tests/host/test_presets_doc.cpp). */
 typedef enum ssao_preset {
     SSAO_PRESET_DEFAULT = 0,    /* = SSAO_PRESET_MEDIUM, the recommended default */
-    SSAO_PRESET_LOW = 1,        /* 4 samples, uniform, no blur */
-    SSAO_PRESET_MEDIUM = 2,     /* 4 samples, uniform, 4x4 box blur */
-    SSAO_PRESET_HIGH = 3,       /* 32 samples, uniform, no blur */
-    SSAO_PRESET_ULTRA = 4, /* 64 samples, uniform, no blur */
+    SSAO_PRESET_LOW = 1,        /* kernel, 4 uniform samples, full resolution, no blur */
+    SSAO_PRESET_MEDIUM = 2,     /* kernel, 16 uniform samples, half resolution, depth-aware blur */
+    SSAO_PRESET_HIGH = 3,       /* visibility, 8 directions x 4 steps, half resolution, no blur */
+    SSAO_PRESET_ULTRA = 4,      /* visibility, 8 directions x 8 steps, half resolution, no blur */
+    SSAO_PRESET_CHAPTER = 5,    /* kernel, 64 accelerating samples, full resolution, 4x4 box blur */
+                                /* (1.1) the LearnOpenGL chapter's configuration, the textbook
+                                   baseline: not picked by the rule, kept one flag away */
     SSAO_PRESET_MAX_ENUM = 0x7fffffff  /* not a value: keeps the enum 32 bits wide */
 } ssao_preset;
 

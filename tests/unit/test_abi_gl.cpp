@@ -908,7 +908,7 @@ TEST_CASE("abi: get_timings accepts the 1.0 size (fills the prefix only) and the
     GlFixture f;
     Scene scene(f.gl(), kW, kH);
     uint64_t executes = 0;
-    const ssao_timings full = measured_timings(f, scene, sized<ssao_settings>(), executes);
+    const ssao_timings full = measured_timings(f, scene, with_blur(SSAO_BLUR_DEPTH_AWARE), executes);
     REQUIRE(full.available == 1u);
     REQUIRE(full.pass_count == 3u);
 

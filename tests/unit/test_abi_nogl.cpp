@@ -190,7 +190,7 @@ TEST_CASE("abi: resolve_settings and preset_settings through the library") {
     set_raw(in.blur, 42);
     CHECK(a.resolve_settings(&in, &o) == SSAO_ERROR_INVALID_ENUM);
     CHECK(same_bytes(o, before));
-    for (uint32_t raw : {5u, 0x7fffffffu, 0xffffffffu}) {
+    for (uint32_t raw : {6u, 0x7fffffffu, 0xffffffffu}) {
         CAPTURE(raw);
         CHECK(unit_c_preset_raw(&a, raw, &o) == SSAO_ERROR_INVALID_ENUM);
         CHECK(same_bytes(o, before));

@@ -21,6 +21,7 @@ ssao_settings resolved(ssao_blur blur, float strength = 0.0f) {
     ssao_settings in{};
     in.size = sizeof in;
     in.method = SSAO_METHOD_KERNEL;  // the plan's cases name the kernel's program
+    in.resolution = SSAO_RESOLUTION_FULL;  // and the full-resolution passes
     in.blur = blur;
     in.strength = strength;
     ssao_settings out{};
