@@ -123,9 +123,15 @@ struct Budget {
 };
 constexpr Budget kBudgets[] = {{"medium (= default)", 0.25}, {"high", 0.5}, {"ultra", 1.0}};
 
+// A preset sets the method, samples, steps, distribution, blur and
+// resolution and keeps every other field at its default: the rule picks only
+// among sweep configurations a preset can express (no thickness or rotation
+// variants).
 bool in_sweep(const Summary& s) {
+    const bool expressible = s.s.rotation == SSAO_ROTATION_NOISE_4X4 &&
+                             std::fabs(s.s.thickness - 0.5f * s.s.radius) <= 1e-4f * s.s.radius;
     return (s.family == Family::kernel || s.family == Family::visibility) && s.kind == Row::Kind::plugin &&
-           std::isfinite(s.psnr);
+           std::isfinite(s.psnr) && expressible;
 }
 
 const Summary* best_within(const std::vector<Summary>& sum, double ratio) {
@@ -150,7 +156,8 @@ void write_csv(const Options& o, const std::vector<Row>& rows) {
         if (r.kind == Row::Kind::floor) floor_wall[{r.scene, r.width}] = r.wall_ms;
     }
     std::ofstream csv(o.out + "/bench.csv");
-    csv << "scene,config,family,kind,width,height,method,samples,steps,blur,thickness,rotation,radius,"
+    csv << "scene,config,family,kind,width,height,method,samples,steps,blur,thickness,rotation,radius,resolution,"
+           "distribution,"
            "median_ms,p10_ms,p90_ms,x_textbook,wall_ms,x_textbook_wall,x_floor_wall,rmse,psnr,rmse_vs_limit,psnr_vs_limit,rmse_interior,"
            "rmse_silhouette,rmse_border,reference_noise_rms\n";
     for (const Row& r : rows) {
@@ -160,9 +167,9 @@ void write_csv(const Options& o, const std::vector<Row>& rows) {
         if (plugin)
             csv << (r.s.method == SSAO_METHOD_VISIBILITY ? "visibility" : "kernel") << "," << r.s.sample_count << ","
                 << r.s.step_count << "," << blur_name(r.s.blur) << "," << r.s.thickness << "," << r.s.rotation << ","
-                << r.s.radius << ",";
+                << r.s.radius << "," << r.s.resolution << "," << r.s.distribution << ",";
         else
-            csv << ",,,,,,,";
+            csv << ",,,,,,,,,";
         csv << fmt(r.median_ms, 4) << "," << fmt(r.p10_ms, 4) << "," << fmt(r.p90_ms, 4) << ","
             << fmt(r.median_ms / textbook_ms[{r.scene, r.width}], 4) << "," << fmt(r.wall_ms, 4) << ","
             << fmt(r.wall_ms / textbook_wall[{r.scene, r.width}], 4) << "," << fmt(r.wall_ms / floor_wall[{r.scene, r.width}], 3)

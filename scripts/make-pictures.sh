@@ -4,7 +4,8 @@
 #   docs/images/{ao,lit_ao,lit_no_ao,modes}.png   ssao-host's pictures of that view (plugin defaults)
 #   docs/images/viewer.png        ssao-viewer's window with its overlay (under xvfb-run)
 # and, with --bench, the accuracy-versus-time plot docs/bench/error_vs_time.png with the
-# benchmark's tables (scripts/run-bench.sh: three scenes, several minutes on a CPU).
+# benchmark's tables and the README's figures (scripts/run-bench.sh, then scripts/bench_readme.py:
+# three scenes, about ten minutes on a CPU).
 # Without --bench the committed plot is left as it is. Runs in about a minute on llvmpipe.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -55,9 +56,11 @@ echo "make-pictures: docs/images/ao.png lit_ao.png lit_no_ao.png modes.png (plug
 
 if [ "$bench" -eq 1 ]; then
   scripts/run-bench.sh
-  for f in error_vs_time.png bench.csv bench.md presets.txt; do
+  for f in error_vs_time.png bench.csv bench.md presets.txt bench.dat front_vr.dat front_limit.dat plot.gp; do
     [ -f "bench-out/$f" ] && cp "bench-out/$f" "docs/bench/$f"
   done
-  echo "make-pictures: docs/bench/ from bench-out/ (the README's tables are written by hand from bench.md)"
+  # The README's preset table, per-scene summary, targets and time table.
+  /usr/bin/python3 scripts/bench_readme.py docs/bench README.md
+  echo "make-pictures: docs/bench/ from bench-out/, README's bench blocks rewritten (scripts/bench_readme.py)"
 fi
 ls -l docs/images/*.png docs/bench/error_vs_time.png | awk '{ printf "  %7d bytes  %s\n", $5, $9 }'

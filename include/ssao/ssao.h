@@ -198,7 +198,7 @@ typedef enum ssao_blur {
 
 /* How occlusion is estimated (settings.method). */
 typedef enum ssao_method {
-    SSAO_METHOD_DEFAULT = 0,      /* the DEFAULT preset's (kernel) */
+    SSAO_METHOD_DEFAULT = 0,      /* the DEFAULT preset's (visibility) */
     SSAO_METHOD_KERNEL = 1,       /* the chapter's point kernel: the fraction of kernel points behind
                                      the depth buffer (a volume estimate, range-checked); uses
                                      kernel_shape and distribution */
@@ -266,7 +266,7 @@ typedef struct ssao_settings {
                                     tolerance * |z_centre| (relative view depth), (0, 1]; default 0.05 */
     ssao_output_format output_format;           /* plugin-owned output format; default R8 */
     /* ---- appended in interface 1.1 (a 1.0-sized struct reads them as zero = default) */
-    ssao_method method;          /* estimator; default: the DEFAULT preset's (kernel) */
+    ssao_method method;          /* estimator; default: the DEFAULT preset's (visibility) */
     float thickness;             /* visibility: how far behind the depth buffer a step still counts
                                     as blocked, view-space units, > 0; default radius / 2
                                     (a huge value such as 1e30 gives the height-field assumption) */
@@ -286,10 +286,10 @@ typedef struct ssao_settings {
  * comments are tested against preset_settings (tests/host/test_presets_doc.cpp). */
 typedef enum ssao_preset {
     SSAO_PRESET_DEFAULT = 0,    /* = SSAO_PRESET_MEDIUM, the recommended default */
-    SSAO_PRESET_LOW = 1,        /* kernel, 4 uniform samples, full resolution, no blur */
-    SSAO_PRESET_MEDIUM = 2,     /* kernel, 16 uniform samples, half resolution, depth-aware blur */
-    SSAO_PRESET_HIGH = 3,       /* visibility, 8 directions x 4 steps, half resolution, no blur */
-    SSAO_PRESET_ULTRA = 4,      /* visibility, 8 directions x 8 steps, half resolution, no blur */
+    SSAO_PRESET_LOW = 1,        /* visibility, 2 directions x 4 steps, half resolution, no blur */
+    SSAO_PRESET_MEDIUM = 2,     /* visibility, 8 directions x 4 steps, half resolution, no blur */
+    SSAO_PRESET_HIGH = 3,       /* visibility, 8 directions x 8 steps, half resolution, no blur */
+    SSAO_PRESET_ULTRA = 4,      /* visibility, 4 directions x 8 steps, full resolution, depth-aware blur */
     SSAO_PRESET_CHAPTER = 5,    /* kernel, 64 accelerating samples, full resolution, 4x4 box blur */
                                 /* (1.1) the LearnOpenGL chapter's configuration, the textbook
                                    baseline: not picked by the rule, kept one flag away */

@@ -395,7 +395,11 @@ TEST_CASE("settings: every preset resolves to the documented table") {
         CHECK(p.resolution == row.resolution);
     }
     // Cost grows from LOW to ULTRA: more samples (times steps) at each level.
-    auto work = [](const ssao_settings& p) { return p.sample_count * (p.method == SSAO_METHOD_VISIBILITY ? p.step_count : 1u); };
+    // Samples (times steps) per pixel sampled, times the pixels sampled (16 per 16 at full resolution).
+    auto work = [](const ssao_settings& p) {
+        const uint32_t pixels = p.resolution == SSAO_RESOLUTION_QUARTER ? 1u : p.resolution == SSAO_RESOLUTION_HALF ? 4u : 16u;
+        return p.sample_count * (p.method == SSAO_METHOD_VISIBILITY ? p.step_count : 1u) * pixels;
+    };
     CHECK(work(low) <= work(medium) * 4u);
     CHECK(work(medium) < work(high));
     CHECK(work(high) < work(ultra));
