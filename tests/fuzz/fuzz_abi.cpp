@@ -302,14 +302,16 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
                 const ssao_inputs in = decode_inputs(w, r);
                 ssao_output out{};
                 out.size = r.u8() < 250 ? sizeof out : r.u32();
-                const ssao_status st = a.execute(c, &in, r.u8() < 20 ? nullptr : &out);
+                const bool with_out = r.u8() >= 20;  // `out` may be NULL (ssao.h)
+                const ssao_status st = a.execute(c, &in, with_out ? &out : nullptr);
                 check_after(w, "execute", st);
                 if (st == SSAO_OK) {
                     if (in.depth_texture == in.output_texture || in.normal_texture == in.output_texture)
                         finding("execute OK with the output as an input");
                     GladGLContext& gl = w.egl->gl();
-                    if (out.size == sizeof out && out.texture == 0) finding("execute OK without an output texture");
-                    if (in.output_texture != 0 && out.size == sizeof out && out.texture != in.output_texture)
+                    if (with_out && out.size == sizeof out && out.texture == 0)
+                        finding("execute OK without an output texture");
+                    if (with_out && in.output_texture != 0 && out.size == sizeof out && out.texture != in.output_texture)
                         finding("execute OK but wrote elsewhere than output_texture");
                     for (float v : in.projection)
                         if (!std::isfinite(v)) finding("execute OK with a non-finite projection");
