@@ -54,24 +54,24 @@ const char* SSAO_CALL status_string(ssao_status status) {
 
 ssao_status SSAO_CALL api_resolve_settings(const ssao_settings* in, ssao_settings* out) {
     if (!in || !out) return SSAO_ERROR_NULL_POINTER;
-    if (!ssao_impl::settings_size_known(out->size)) return SSAO_ERROR_STRUCT_SIZE;
+    if (!ssao_impl::is_known_size<ssao_settings>(out->size)) return SSAO_ERROR_STRUCT_SIZE;
     return guarded(nullptr, [&] {
         std::string why;
         ssao_settings resolved{};
         const ssao_status st = resolve_settings(*in, resolved, why);
-        if (st == SSAO_OK) ssao_impl::store_settings(resolved, *out);
+        if (st == SSAO_OK) ssao_impl::write_prefix(out, resolved);
         return st;
     });
 }
 
 ssao_status SSAO_CALL api_preset_settings(ssao_preset preset, ssao_settings* out) {
     if (!out) return SSAO_ERROR_NULL_POINTER;
-    if (!ssao_impl::settings_size_known(out->size)) return SSAO_ERROR_STRUCT_SIZE;
+    if (!ssao_impl::is_known_size<ssao_settings>(out->size)) return SSAO_ERROR_STRUCT_SIZE;
     return guarded(nullptr, [&] {
         std::string why;
         ssao_settings resolved{};
         const ssao_status st = ssao_impl::preset_settings(ssao_impl::raw_enum(preset), resolved, why);
-        if (st == SSAO_OK) ssao_impl::store_settings(resolved, *out);
+        if (st == SSAO_OK) ssao_impl::write_prefix(out, resolved);
         return st;
     });
 }
@@ -145,20 +145,21 @@ ssao_status SSAO_CALL api_set_settings(ssao_context* ctx, const ssao_settings* s
 ssao_status SSAO_CALL api_get_settings(const ssao_context* ctx, ssao_settings* out) {
     if (!ctx) return SSAO_ERROR_NULL_POINTER;
     if (!out) return ctx->fail(SSAO_ERROR_NULL_POINTER, "get_settings: out is NULL");
-    if (!ssao_impl::settings_size_known(out->size))
-        return ctx->fail(SSAO_ERROR_STRUCT_SIZE, "get_settings: ssao_settings.size does not match this library");
-    ssao_impl::store_settings(ctx->settings, *out);
+    if (!ssao_impl::is_known_size<ssao_settings>(out->size))
+        return ctx->fail(SSAO_ERROR_STRUCT_SIZE, "get_settings: ssao_settings.size matches no version this library knows");
+    ssao_impl::write_prefix(out, ctx->settings);
     return SSAO_OK;
 }
 
 ssao_status SSAO_CALL api_execute(ssao_context* ctx, const ssao_inputs* inputs, ssao_output* out) {
     if (!ctx) return SSAO_ERROR_NULL_POINTER;
     if (!inputs) return ctx->fail(SSAO_ERROR_NULL_POINTER, "inputs is NULL");
-    if (inputs->size != sizeof(ssao_inputs))
-        return ctx->fail(SSAO_ERROR_STRUCT_SIZE, "ssao_inputs.size does not match this library");
+    if (!ssao_impl::is_known_size<ssao_inputs>(inputs->size))
+        return ctx->fail(SSAO_ERROR_STRUCT_SIZE, "ssao_inputs.size matches no version of ssao_inputs this library knows");
     if (out && out->size != sizeof(ssao_output))
         return ctx->fail(SSAO_ERROR_STRUCT_SIZE, "ssao_output.size does not match this library");
-    return guarded(ctx, [&] { return ssao_impl::execute(*ctx, *inputs, out); });
+    const ssao_inputs full = ssao_impl::read_prefix(*inputs);  // a 1.1 host's: the 1.2 fields read as zero
+    return guarded(ctx, [&] { return ssao_impl::execute(*ctx, full, out); });
 }
 
 ssao_status SSAO_CALL api_get_timings(ssao_context* ctx, ssao_timings* out) {

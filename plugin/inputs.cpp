@@ -65,6 +65,11 @@ ssao_status check_inputs(ssao_context& ctx, const ssao_inputs& in, AnalysedInput
         return ctx.fail(SSAO_ERROR_INVALID_ENUM, "inputs.normal_packing is not an ssao_normal_packing");
     if (!raw_enum_at_most(in.clip_range, SSAO_CLIP_ZERO_TO_ONE))
         return ctx.fail(SSAO_ERROR_INVALID_ENUM, "inputs.clip_range is not an ssao_clip_range");
+    if (!raw_enum_at_most(in.output_mode, SSAO_OUTPUT_MODE_MULTIPLY))
+        return ctx.fail(SSAO_ERROR_INVALID_ENUM, "inputs.output_mode is not an ssao_output_mode");
+    if (in.output_mode == SSAO_OUTPUT_MODE_MULTIPLY && in.output_texture == 0)
+        return ctx.fail(SSAO_ERROR_INVALID_VALUE,
+                        "inputs.output_mode is MULTIPLY but output_texture is 0 (multiply needs the host's lit image)");
     const bool world_normals = in.normal_space == SSAO_NORMAL_SPACE_WORLD;
     if (world_normals) {
         for (float v : in.view_matrix)

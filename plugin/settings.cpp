@@ -2,6 +2,7 @@
 
 #include "presets.h"
 #include "raw_enum.h"
+#include "struct_versions.h"
 
 #include <algorithm>
 #include <cmath>
@@ -21,29 +22,13 @@ ssao_status fail(std::string& why, ssao_status status, const std::string& what) 
 
 }  // namespace
 
-bool settings_size_known(uint32_t size) { return size == SSAO_SETTINGS_SIZE_1_0 || size == sizeof(ssao_settings); }
-
-bool load_settings(const ssao_settings& caller, ssao_settings& full) {
-    if (!settings_size_known(caller.size)) return false;
-    full = ssao_settings{};
-    std::memcpy(&full, &caller, caller.size);
-    full.size = sizeof(ssao_settings);
-    return true;
-}
-
-void store_settings(const ssao_settings& full, ssao_settings& caller) {
-    const uint32_t size = caller.size;
-    std::memcpy(&caller, &full, size);
-    caller.size = size;
-}
-
 ssao_status resolve_settings(const ssao_settings& caller, ssao_settings& out, std::string& why) {
-    ssao_settings r{};
-    if (!load_settings(caller, r))
+    if (!is_known_size<ssao_settings>(caller.size))
         return fail(why, SSAO_ERROR_STRUCT_SIZE,
                     "ssao_settings.size is " + std::to_string(caller.size) + ", expected " +
-                        std::to_string(sizeof(ssao_settings)) + " (or " + std::to_string(SSAO_SETTINGS_SIZE_1_0) +
-                        " for interface 1.0)");
+                        std::to_string(sizeof(ssao_settings)) + " (or " + std::to_string(SSAO_SETTINGS_SIZE_1_1) +
+                        " for interface 1.1, " + std::to_string(SSAO_SETTINGS_SIZE_1_0) + " for 1.0)");
+    ssao_settings r = read_prefix(caller);
 
     // The method first: the defaults of the fields a preset sets depend on it.
     if (!raw_enum_at_most(r.method, SSAO_METHOD_VISIBILITY))
@@ -131,6 +116,20 @@ ssao_status resolve_settings(const ssao_settings& caller, ssao_settings& out, st
     if (!raw_enum_at_most(r.resolution, SSAO_RESOLUTION_QUARTER))
         return fail(why, SSAO_ERROR_INVALID_ENUM, "resolution is not an ssao_resolution");
     if (r.resolution == SSAO_RESOLUTION_DEFAULT) r.resolution = defaults.resolution;
+
+    // Distance fade: off (both zero) or 0 <= fade_start < fade_end < inf.
+    if (!finite(r.fade_start) || !finite(r.fade_end) || r.fade_start < 0.0f || r.fade_end < 0.0f)
+        return fail(why, SSAO_ERROR_INVALID_VALUE, "fade_start and fade_end must be finite and >= 0");
+    if (r.fade_end == 0.0f && r.fade_start != 0.0f)
+        return fail(why, SSAO_ERROR_INVALID_VALUE, "fade_start is set but fade_end is 0 (no fade)");
+    if (r.fade_end != 0.0f && !(r.fade_start < r.fade_end))
+        return fail(why, SSAO_ERROR_INVALID_VALUE, "fade_end must be greater than fade_start");
+
+    if (!finite(r.radius_pixels) || r.radius_pixels < 0.0f || r.radius_pixels > static_cast<float>(SSAO_MAX_DIMENSION))
+        return fail(why, SSAO_ERROR_INVALID_VALUE, "radius_pixels must be finite and in [0, 16384] (0 = off)");
+
+    if (!raw_enum_at_most(r.debug_view, SSAO_DEBUG_VIEW_BLUR_WEIGHTS))
+        return fail(why, SSAO_ERROR_INVALID_ENUM, "debug_view is not an ssao_debug_view");
 
     out = r;
     return SSAO_OK;

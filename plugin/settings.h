@@ -28,20 +28,8 @@ constexpr float kMaxStrength = 8.0f;
 constexpr float kMaxPower = 16.0f;
 constexpr float kMaxBlurSigma = 64.0f;
 
-static_assert(offsetof(ssao_settings, method) == SSAO_SETTINGS_SIZE_1_0, "the 1.1 fields must follow the 1.0 struct");
-
-// Is `size` the size of a version of ssao_settings this library knows?
-bool settings_size_known(uint32_t size);
-
-// Copies a caller's settings of any known version into a full struct (the
-// fields its version lacks read as zero = default). False for unknown sizes.
-bool load_settings(const ssao_settings& caller, ssao_settings& full);
-
-// Writes a full struct into a caller's of any known version (only the prefix
-// its size covers; its size field is kept). Needs a known out.size.
-void store_settings(const ssao_settings& full, ssao_settings& caller);
-
-// Resolves zero fields to defaults and validates the rest. On failure returns
+// Resolves zero fields to defaults and validates the rest. `in` may be of
+// any known version (struct_versions.h): the fields it lacks read as zero. On failure returns
 // the status and a sentence in `why`, and leaves `out` untouched.
 ssao_status resolve_settings(const ssao_settings& in, ssao_settings& out, std::string& why);
 

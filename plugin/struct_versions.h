@@ -37,6 +37,23 @@ struct KnownSizes<ssao_timings> {
     static constexpr uint32_t sizes[] = {kTimingsSize_1_0, static_cast<uint32_t>(sizeof(ssao_timings))};
 };
 
+// ssao_settings: 1.0 ended at output_format; 1.1 appended method .. resolution;
+// 1.2 fade_start .. debug_view.
+static_assert(offsetof(ssao_settings, method) == SSAO_SETTINGS_SIZE_1_0, "ssao_settings 1.0 prefix moved");
+static_assert(offsetof(ssao_settings, fade_start) == SSAO_SETTINGS_SIZE_1_1, "ssao_settings 1.1 prefix moved");
+template <>
+struct KnownSizes<ssao_settings> {
+    static constexpr uint32_t sizes[] = {SSAO_SETTINGS_SIZE_1_0, SSAO_SETTINGS_SIZE_1_1,
+                                         static_cast<uint32_t>(sizeof(ssao_settings))};
+};
+
+// ssao_inputs: 1.0 and 1.1 ended at output_texture; 1.2 appended sample_index .. frame_index.
+static_assert(offsetof(ssao_inputs, sample_index) == SSAO_INPUTS_SIZE_1_1, "ssao_inputs 1.1 prefix moved");
+template <>
+struct KnownSizes<ssao_inputs> {
+    static constexpr uint32_t sizes[] = {SSAO_INPUTS_SIZE_1_1, static_cast<uint32_t>(sizeof(ssao_inputs))};
+};
+
 template <typename T>
 constexpr bool is_known_size(uint32_t size) {
     for (uint32_t s : KnownSizes<T>::sizes)

@@ -36,12 +36,14 @@ def SSAO_MAKE_VERSION(major, minor):
     return ((major << 16) | minor) & 0xFFFFFFFF
 
 
-SSAO_API_VERSION = SSAO_MAKE_VERSION(1, 1)
+SSAO_API_VERSION = SSAO_MAKE_VERSION(1, 2)
 SSAO_MAX_SAMPLES = 64
 SSAO_MAX_BLUR_RADIUS = 16
 SSAO_MAX_STEPS = 32
 SSAO_MAX_PASSES = 8
 SSAO_SETTINGS_SIZE_1_0 = 64
+SSAO_SETTINGS_SIZE_1_1 = 80
+SSAO_INPUTS_SIZE_1_1 = 172
 SSAO_MAX_DIMENSION = 16384
 SSAO_TEXTURE_UNITS_USED = 4
 SSAO_STRENGTH_OFF = -1.0
@@ -117,6 +119,22 @@ class ssao_resolution(enum.IntEnum):
     SSAO_RESOLUTION_MAX_ENUM = 0x7FFFFFFF
 
 
+class ssao_debug_view(enum.IntEnum):
+    SSAO_DEBUG_VIEW_NONE = 0
+    SSAO_DEBUG_VIEW_NORMALS = 1
+    SSAO_DEBUG_VIEW_RECONSTRUCTED_NORMALS = 2
+    SSAO_DEBUG_VIEW_RAW_AO = 3
+    SSAO_DEBUG_VIEW_BLUR_WEIGHTS = 4
+    SSAO_DEBUG_VIEW_MAX_ENUM = 0x7FFFFFFF
+
+
+class ssao_output_mode(enum.IntEnum):
+    SSAO_OUTPUT_MODE_DEFAULT = 0
+    SSAO_OUTPUT_MODE_OVERWRITE = 1
+    SSAO_OUTPUT_MODE_MULTIPLY = 2
+    SSAO_OUTPUT_MODE_MAX_ENUM = 0x7FFFFFFF
+
+
 class ssao_output_format(enum.IntEnum):
     SSAO_OUTPUT_DEFAULT = 0
     SSAO_OUTPUT_R8 = 1
@@ -173,7 +191,7 @@ class ssao_log_level(enum.IntEnum):
 
 
 ENUMS = (ssao_status, ssao_kernel_shape, ssao_kernel_distribution, ssao_rotation, ssao_blur,
-         ssao_method, ssao_resolution, ssao_output_format, ssao_preset, ssao_clip_range, ssao_normal_space, ssao_normal_packing,
+         ssao_method, ssao_resolution, ssao_debug_view, ssao_output_mode, ssao_output_format, ssao_preset, ssao_clip_range, ssao_normal_space, ssao_normal_packing,
          ssao_pass, ssao_log_level)
 for _e in ENUMS:
     globals().update(_e.__members__)
@@ -225,6 +243,11 @@ class ssao_settings(_Sized):
         ("thickness", ctypes.c_float),
         ("step_count", ctypes.c_uint32),
         ("resolution", _enum),
+        # 1.2
+        ("fade_start", ctypes.c_float),
+        ("fade_end", ctypes.c_float),
+        ("radius_pixels", ctypes.c_float),
+        ("debug_view", _enum),
     ]
 
 
@@ -240,6 +263,10 @@ class ssao_inputs(_Sized):
         ("clip_range", _enum),
         ("viewport", ctypes.c_int32 * 4),
         ("output_texture", ctypes.c_uint32),
+        # 1.2
+        ("sample_index", ctypes.c_uint32),
+        ("output_mode", _enum),
+        ("frame_index", ctypes.c_uint32),
     ]
 
 

@@ -104,7 +104,7 @@ extern "C" {
  * A host asking for major M gets any library of major M with minor >= its
  * own minor; the table's `version` field says which one it got. */
 #define SSAO_MAKE_VERSION(major, minor) ((uint32_t)(((major) << 16) | (minor)))
-#define SSAO_API_VERSION SSAO_MAKE_VERSION(1, 1)
+#define SSAO_API_VERSION SSAO_MAKE_VERSION(1, 2)
 #define SSAO_VERSION_MAJOR(v) ((uint32_t)(v) >> 16)
 #define SSAO_VERSION_MINOR(v) ((uint32_t)(v) & 0xffffu)
 
@@ -230,6 +230,23 @@ typedef enum ssao_output_format {
     SSAO_OUTPUT_MAX_ENUM = 0x7fffffff  /* not a value: keeps the enum 32 bits wide */
 } ssao_output_format;
 
+/* (1.2) What execute writes into the output instead of the AO (settings.debug_view):
+ * the anchors' debug modes, for looking at what the pass sees. The normal views
+ * write the view-space normal packed as n * 0.5 + 0.5 into red, green and blue;
+ * the library's own output is then RGBA8 (output_format is ignored). A host
+ * texture needs three channels for them. */
+typedef enum ssao_debug_view {
+    SSAO_DEBUG_VIEW_NONE = 0,         /* the AO (default) */
+    SSAO_DEBUG_VIEW_NORMALS = 1,      /* the normals the sampling pass reads (the G-buffer's, rotated and
+                                         unpacked; or the reconstructed ones when normal_texture is 0) */
+    SSAO_DEBUG_VIEW_RECONSTRUCTED_NORMALS = 2, /* the normals rebuilt from depth alone, whatever the inputs */
+    SSAO_DEBUG_VIEW_RAW_AO = 3,       /* the sampling pass's AO before any blur (upsampled without depth
+                                         weights below full resolution) */
+    SSAO_DEBUG_VIEW_BLUR_WEIGHTS = 4, /* the share of the blur's gaussian weight that passed the depth test
+                                         (1 = nothing rejected); 1 everywhere for blurs that ignore depth */
+    SSAO_DEBUG_VIEW_MAX_ENUM = 0x7fffffff  /* not a value: keeps the enum 32 bits wide */
+} ssao_debug_view;
+
 /* strength is a multiplier in which 0 is meaningful (no AO at all). Because a
  * zero field means "default", ask for strength 0 with this value. */
 #define SSAO_STRENGTH_OFF (-1.0f)
@@ -273,10 +290,21 @@ typedef struct ssao_settings {
     uint32_t step_count;         /* visibility: steps per direction, 1..32; default: see sample_count */
     ssao_resolution resolution;  /* grid the sampling pass runs on; default: see sample_count. Below full the
                                     blur runs on that grid and a depth-aware upsample follows */
+    /* ---- appended in interface 1.2 (older structs read them as zero = off) */
+    float fade_start;            /* distance fade: view depth (view-space units along the view axis) where AO
+                                    starts to fade to 1, >= 0; default 0. Only with fade_end */
+    float fade_end;              /* view depth where AO has faded to 1 (no occlusion beyond), > fade_start,
+                                    finite; 0 = no fade (default): no instruction of it runs */
+    float radius_pixels;         /* > 0: the sampling radius is given in viewport pixels at each pixel's
+                                    depth (the view-space size of that many pixels there), clamped to at
+                                    most `radius` view units, (0, 16384]; 0 = off (default): radius is
+                                    view units. thickness and bias scale with the per-pixel radius */
+    ssao_debug_view debug_view;  /* what to write instead of the AO; default none */
 } ssao_settings;
 
-/* sizeof(ssao_settings) as interface 1.0 defined it; the library accepts it. */
+/* sizeof(ssao_settings) as interfaces 1.0 and 1.1 defined it; the library accepts them. */
 #define SSAO_SETTINGS_SIZE_1_0 64u
+#define SSAO_SETTINGS_SIZE_1_1 80u
 
 /* Named quality presets, picked from the front of error against GPU time
  * that ssao-bench measures, by the rule stated in the README ("Presets").
@@ -318,10 +346,21 @@ typedef enum ssao_normal_packing {
     SSAO_NORMAL_PACKING_MAX_ENUM = 0x7fffffff  /* not a value: keeps the enum 32 bits wide */
 } ssao_normal_packing;
 
+/* (1.2) How the AO reaches a host output texture (inputs.output_mode). */
+typedef enum ssao_output_mode {
+    SSAO_OUTPUT_MODE_DEFAULT = 0,     /* = SSAO_OUTPUT_MODE_OVERWRITE */
+    SSAO_OUTPUT_MODE_OVERWRITE = 1,   /* the viewport rectangle's channels are overwritten: rgb = AO, a = 1 */
+    SSAO_OUTPUT_MODE_MULTIPLY = 2,    /* the host's lit image: its RGB at the viewport rectangle is multiplied
+                                         by AO through blending (alpha untouched); needs output_texture */
+    SSAO_OUTPUT_MODE_MAX_ENUM = 0x7fffffff  /* not a value: keeps the enum 32 bits wide */
+} ssao_output_mode;
+
 typedef struct ssao_inputs {
     uint32_t size;               /* sizeof(ssao_inputs) */
-    uint32_t depth_texture;      /* GL_TEXTURE_2D, D16/D24/D24S8/D32F/D32FS8; required */
-    uint32_t normal_texture;     /* GL_TEXTURE_2D of the same size, xyz = normal; required */
+    uint32_t depth_texture;      /* GL_TEXTURE_2D, D16/D24/D24S8/D32F/D32FS8; required. (1.2) Or a
+                                    GL_TEXTURE_2D_MULTISAMPLE: sample_index is read at every pixel */
+    uint32_t normal_texture;     /* a texture of the same size and target (and sample count), xyz = normal.
+                                    (1.2) 0: view-space normals are reconstructed from depth */
     ssao_normal_space normal_space;
     ssao_normal_packing normal_packing;
     float projection[16];        /* the projection that rendered the depth, column-major.
@@ -339,8 +378,21 @@ typedef struct ssao_inputs {
                                     viewport pixel (x,y)) and returns it in ssao_output.
                                     Otherwise a colour-renderable GL_TEXTURE_2D of the host's
                                     (not an input), written at the same viewport rectangle: every
-                                    channel there is overwritten, red = green = blue = AO, alpha = 1. */
+                                    channel there is overwritten, red = green = blue = AO, alpha = 1
+                                    (or multiplied, see output_mode). */
+    /* ---- appended in interface 1.2 (older structs read them as zero = today's behaviour) */
+    uint32_t sample_index;       /* multisampled inputs (GL_TEXTURE_2D_MULTISAMPLE depth and normal): the
+                                    sample read at every pixel, < the textures' sample count; default 0.
+                                    Ignored for single-sample inputs */
+    ssao_output_mode output_mode;/* default: overwrite */
+    uint32_t frame_index;        /* 0: the fixed noise pattern of every earlier version. Otherwise the
+                                    per-pixel rotation and step jitter move along a low-discrepancy sequence
+                                    indexed by it, so a host's TAA averages the noise away: pass the frame
+                                    number (any uint32; a fixed index gives bit-identical output) */
 } ssao_inputs;
+
+/* sizeof(ssao_inputs) as interfaces 1.0 and 1.1 defined it; the library accepts it. */
+#define SSAO_INPUTS_SIZE_1_1 172u
 
 typedef struct ssao_output {
     uint32_t size;               /* sizeof(ssao_output) */

@@ -186,6 +186,26 @@ TEST_CASE("abi: every context function rejects wrong struct sizes and writes not
     }
 }
 
+TEST_CASE("abi: a 1.1-sized ssao_inputs is accepted and its missing 1.2 fields read as today's behaviour") {
+    // A host compiled against interface 1.1 hands 172 bytes: what follows in
+    // its memory must not be read, and the AO equals the full struct's with
+    // the 1.2 fields zero.
+    GlFixture f;
+    const ssao_api& a = api();
+    Scene scene(f.gl(), kW, kH);
+    ssao_output out = sized<ssao_output>();
+    REQUIRE(a.execute(f.ctx, &scene.inputs, &out) == SSAO_OK);
+    const std::vector<float> full = read_red(f.gl(), out.texture, kW, kH);
+    ssao_inputs old = scene.inputs;
+    std::memset(reinterpret_cast<unsigned char*>(&old) + SSAO_INPUTS_SIZE_1_1, 0xab, sizeof old - SSAO_INPUTS_SIZE_1_1);
+    old.size = SSAO_INPUTS_SIZE_1_1;
+    REQUIRE(a.execute(f.ctx, &old, &out) == SSAO_OK);
+    CHECK(read_red(f.gl(), out.texture, kW, kH) == full);
+    // The same garbage read as a 1.2 struct is refused: the tail is not ignored there.
+    old.size = sizeof old;
+    CHECK(a.execute(f.ctx, &old, &out) == SSAO_ERROR_INVALID_ENUM);
+}
+
 TEST_CASE("abi: get_settings and get_frame_info failures are reported in last_error and the log") {
     // The contract: "when a context is given, last_error(ctx) holds a sentence
     // on the most recent failure of that context", and the log "receives

@@ -54,7 +54,7 @@ TEST_CASE("abi: ssao_get_api rejects NULL and a too-small table and other versio
         CHECK(same_bytes(table, before));
     }
     const uint32_t refused[] = {SSAO_MAKE_VERSION(0, 0), SSAO_MAKE_VERSION(0, 9), SSAO_MAKE_VERSION(2, 0),
-                                SSAO_MAKE_VERSION(2, 5), SSAO_MAKE_VERSION(1, 2), SSAO_MAKE_VERSION(1, 0xffff),
+                                SSAO_MAKE_VERSION(2, 5), SSAO_MAKE_VERSION(1, 3), SSAO_MAKE_VERSION(1, 0xffff),
                                 0xffffffffu};
     for (uint32_t version : refused) {
         CAPTURE(version);
@@ -63,12 +63,12 @@ TEST_CASE("abi: ssao_get_api rejects NULL and a too-small table and other versio
         CHECK(get_api(version, &table) == SSAO_ERROR_VERSION_MISMATCH);
         CHECK(same_bytes(table, before));
     }
-    // A 1.0 host and a 1.1 host are both served by this 1.1 library.
-    for (uint32_t version : {SSAO_MAKE_VERSION(1, 1), SSAO_MAKE_VERSION(1, 0)}) {
+    // 1.0, 1.1 and 1.2 hosts are all served by this 1.2 library.
+    for (uint32_t version : {SSAO_MAKE_VERSION(1, 2), SSAO_MAKE_VERSION(1, 1), SSAO_MAKE_VERSION(1, 0)}) {
         CAPTURE(version);
         ssao_api t = sentinel<ssao_api>();
         REQUIRE(get_api(version, &t) == SSAO_OK);
-        CHECK(t.version == SSAO_MAKE_VERSION(1, 1));
+        CHECK(t.version == SSAO_MAKE_VERSION(1, 2));
     }
     ssao_api table = sentinel<ssao_api>();
     REQUIRE(get_api(SSAO_MAKE_VERSION(1, 0), &table) == SSAO_OK);
@@ -166,6 +166,62 @@ TEST_CASE("abi: a 1.0-sized ssao_settings is read and written only up to its siz
     out.s.size = SSAO_SETTINGS_SIZE_1_0;
     CHECK(a.preset_settings(SSAO_PRESET_HIGH, &out.s) == SSAO_OK);
     CHECK(out.s.size == SSAO_SETTINGS_SIZE_1_0);
+}
+
+TEST_CASE("abi: a 1.1-sized ssao_settings reads the 1.2 fields as off and is written only up to its size") {
+    const ssao_api& a = api();
+    struct Padded {
+        ssao_settings s;
+        unsigned char guard[64];
+    };
+    Padded in{}, out{};
+    std::memset(&in, 0xab, sizeof in);
+    std::memset(&out, 0xcd, sizeof out);
+    std::memset(&in.s, 0, SSAO_SETTINGS_SIZE_1_1);
+    in.s.size = SSAO_SETTINGS_SIZE_1_1;
+    in.s.step_count = 3;
+    out.s.size = SSAO_SETTINGS_SIZE_1_1;
+    REQUIRE(a.resolve_settings(&in.s, &out.s) == SSAO_OK);
+    CHECK(out.s.size == SSAO_SETTINGS_SIZE_1_1);
+    CHECK(out.s.step_count == 3u);
+    const unsigned char* tail = reinterpret_cast<const unsigned char*>(&out.s) + SSAO_SETTINGS_SIZE_1_1;
+    for (size_t i = 0; i < sizeof(ssao_settings) - SSAO_SETTINGS_SIZE_1_1; ++i) CHECK(tail[i] == 0xcd);
+    ssao_settings full = sized<ssao_settings>();
+    REQUIRE(a.resolve_settings(&in.s, &full) == SSAO_OK);
+    CHECK(full.fade_start == 0.0f);
+    CHECK(full.fade_end == 0.0f);
+    CHECK(full.radius_pixels == 0.0f);
+    CHECK(full.debug_view == SSAO_DEBUG_VIEW_NONE);
+    // Sizes between the versions are refused.
+    for (uint32_t size : {SSAO_SETTINGS_SIZE_1_1 - 4, SSAO_SETTINGS_SIZE_1_1 + 4, uint32_t(sizeof(ssao_settings)) + 4}) {
+        CAPTURE(size);
+        in.s.size = size;
+        CHECK(a.resolve_settings(&in.s, &full) == SSAO_ERROR_STRUCT_SIZE);
+    }
+}
+
+TEST_CASE("abi: the 1.2 settings are validated: fade range, radius in pixels, debug view") {
+    const ssao_api& a = api();
+    auto status_of = [&](void (*edit)(ssao_settings&)) {
+        ssao_settings in = sized<ssao_settings>(), out = sized<ssao_settings>();
+        edit(in);
+        return a.resolve_settings(&in, &out);
+    };
+    CHECK(status_of([](ssao_settings& s) { s.fade_start = 10.0f, s.fade_end = 20.0f; }) == SSAO_OK);
+    CHECK(status_of([](ssao_settings& s) { s.fade_end = 20.0f; }) == SSAO_OK);  // fade from the camera
+    CHECK(status_of([](ssao_settings& s) { s.fade_start = 10.0f; }) == SSAO_ERROR_INVALID_VALUE);  // no end
+    CHECK(status_of([](ssao_settings& s) { s.fade_start = 20.0f, s.fade_end = 20.0f; }) == SSAO_ERROR_INVALID_VALUE);
+    CHECK(status_of([](ssao_settings& s) { s.fade_start = 30.0f, s.fade_end = 20.0f; }) == SSAO_ERROR_INVALID_VALUE);
+    CHECK(status_of([](ssao_settings& s) { s.fade_start = -1.0f, s.fade_end = 20.0f; }) == SSAO_ERROR_INVALID_VALUE);
+    CHECK(status_of([](ssao_settings& s) { s.fade_end = INFINITY; }) == SSAO_ERROR_INVALID_VALUE);
+    CHECK(status_of([](ssao_settings& s) { s.fade_end = NAN; }) == SSAO_ERROR_INVALID_VALUE);
+    CHECK(status_of([](ssao_settings& s) { s.radius_pixels = 24.0f; }) == SSAO_OK);
+    CHECK(status_of([](ssao_settings& s) { s.radius_pixels = -1.0f; }) == SSAO_ERROR_INVALID_VALUE);
+    CHECK(status_of([](ssao_settings& s) { s.radius_pixels = 16385.0f; }) == SSAO_ERROR_INVALID_VALUE);
+    CHECK(status_of([](ssao_settings& s) { s.radius_pixels = NAN; }) == SSAO_ERROR_INVALID_VALUE);
+    CHECK(status_of([](ssao_settings& s) { s.debug_view = SSAO_DEBUG_VIEW_BLUR_WEIGHTS; }) == SSAO_OK);
+    CHECK(status_of([](ssao_settings& s) { s.debug_view = static_cast<ssao_debug_view>(5); }) == SSAO_ERROR_INVALID_ENUM);
+    CHECK(status_of([](ssao_settings& s) { s.debug_view = static_cast<ssao_debug_view>(-1); }) == SSAO_ERROR_INVALID_ENUM);
 }
 
 TEST_CASE("abi: resolve_settings and preset_settings through the library") {
