@@ -3,10 +3,9 @@
 #include "context.h"
 
 #include "debug.h"
-#include "programs.h"
+#include "program_cache.h"
 #include "uniforms.h"
 
-#include <ssao_shaders_embedded.h>
 
 #include <algorithm>
 #include <cstdio>
@@ -31,99 +30,6 @@ struct LoaderUser {
 GLADapiproc load_with_user(void* userptr, const char* name) {
     auto* u = static_cast<LoaderUser*>(userptr);
     return reinterpret_cast<GLADapiproc>(u->fn(u->user, name));
-}
-
-// #version first, then the shared constants and code, then the pass's own code.
-std::string assemble(const char* body, SharedCode shared) {
-    std::string s = "#version 330 core\n";
-    s += k_ssao_constants_h;
-    s += "\n";
-    if (shared != SharedCode::none) s += k_common_glsl;
-    if (shared == SharedCode::common_and_sampling) s += k_sampling_glsl;
-    s += "\n#line 1\n";
-    s += body;
-    return s;
-}
-
-bool compile(ssao_context& ctx, GLenum type, const std::string& source, const char* name, GLuint& out) {
-    const GladGLContext& gl = ctx.gl;
-    GLuint sh = gl.CreateShader(type);
-    const char* src = source.c_str();
-    gl.ShaderSource(sh, 1, &src, nullptr);
-    gl.CompileShader(sh);
-    GLint ok = 0;
-    gl.GetShaderiv(sh, GL_COMPILE_STATUS, &ok);
-    if (!ok) {
-        char log[4096] = {};
-        gl.GetShaderInfoLog(sh, sizeof log, nullptr, log);
-        gl.DeleteShader(sh);
-        ctx.fail(SSAO_ERROR_SHADER, std::string("shader ") + name + " failed to compile: " + log);
-        return false;
-    }
-    out = sh;
-    return true;
-}
-
-// Points the program's samplers at their texture units. With GL 4.1's
-// glProgramUniform the host's current program is never touched. Without it
-// the program is made current for the calls; a host program flagged for
-// deletion is deleted by that and cannot be made current again (restoring
-// its name would raise GL_INVALID_VALUE and leave ours current), so then 0 is.
-void set_sampler_units(const GladGLContext& gl, GLuint program) {
-    const struct { const char* name; int unit; } samplers[] = {
-        {"u_depth_tex", SSAO_UNIT_DEPTH}, {"u_normal_tex", SSAO_UNIT_NORMAL},
-        {"u_noise_tex", SSAO_UNIT_NOISE}, {"u_ao_tex", SSAO_UNIT_AO}};
-    if (gl.ProgramUniform1i) {
-        for (const auto& s : samplers) {
-            const GLint loc = gl.GetUniformLocation(program, s.name);
-            if (loc >= 0) gl.ProgramUniform1i(program, loc, s.unit);
-        }
-        return;
-    }
-    GLint previous = 0;
-    gl.GetIntegerv(GL_CURRENT_PROGRAM, &previous);
-    if (previous != 0) {
-        GLint flagged = GL_FALSE;
-        gl.GetProgramiv(static_cast<GLuint>(previous), GL_DELETE_STATUS, &flagged);
-        if (flagged) previous = 0;
-    }
-    gl.UseProgram(program);
-    for (const auto& s : samplers) {
-        const GLint loc = gl.GetUniformLocation(program, s.name);
-        if (loc >= 0) gl.Uniform1i(loc, s.unit);
-    }
-    gl.UseProgram(static_cast<GLuint>(previous));
-}
-
-ssao_status link(ssao_context& ctx, const char* fragment_body, SharedCode shared, const char* name, GLuint& program) {
-    const GladGLContext& gl = ctx.gl;
-    GLuint vs = 0, fs = 0;
-    if (!compile(ctx, GL_VERTEX_SHADER, assemble(k_fullscreen_vert, SharedCode::none), "fullscreen.vert", vs))
-        return SSAO_ERROR_SHADER;
-    if (!compile(ctx, GL_FRAGMENT_SHADER, assemble(fragment_body, shared), name, fs)) {
-        gl.DeleteShader(vs);
-        return SSAO_ERROR_SHADER;
-    }
-    program = gl.CreateProgram();
-    gl.AttachShader(program, vs);
-    gl.AttachShader(program, fs);
-    gl.LinkProgram(program);
-    gl.DeleteShader(vs);
-    gl.DeleteShader(fs);
-    GLint ok = 0;
-    gl.GetProgramiv(program, GL_LINK_STATUS, &ok);
-    if (!ok) {
-        char log[4096] = {};
-        gl.GetProgramInfoLog(program, sizeof log, nullptr, log);
-        return ctx.fail(SSAO_ERROR_SHADER, std::string("program ") + name + " failed to link: " + log);
-    }
-    // GLSL 3.30 has no layout(binding): bind blocks and samplers here, once.
-    const GLuint frame_block = gl.GetUniformBlockIndex(program, "SsaoFrame");
-    if (frame_block != GL_INVALID_INDEX) gl.UniformBlockBinding(program, frame_block, SSAO_UBO_FRAME);
-    const GLuint kernel_block = gl.GetUniformBlockIndex(program, "SsaoKernel");
-    if (kernel_block != GL_INVALID_INDEX) gl.UniformBlockBinding(program, kernel_block, SSAO_UBO_KERNEL);
-    set_sampler_units(gl, program);
-    return SSAO_OK;
 }
 
 // Every GL 3.3 core function the plugin calls: a loader that hands back NULL
@@ -205,13 +111,8 @@ ssao_status initialise(ssao_context& ctx, const ssao_context_desc& desc) {
 
     ssao_impl::init_debug(ctx);
 
-    for (int i = 0; i < static_cast<int>(ProgramId::count); ++i) {
-        const ProgramInfo& info = program_info(static_cast<ProgramId>(i));
-        const ssao_status st = link(ctx, info.fragment_source, info.shared, info.file_name, ctx.programs[i]);
-        if (st != SSAO_OK) return st;
-        label_object(ctx, GL_PROGRAM, ctx.programs[i], info.label);
-        ctx.pass_uniforms[i] = find_pass_uniforms(gl, ctx.programs[i]);
-    }
+    const ssao_status st = compile_base_programs(ctx);
+    if (st != SSAO_OK) return st;
 
     // Object creation binds nothing here: buffers and textures are first bound
     // inside execute, under the state guard.
@@ -238,8 +139,7 @@ ssao_status initialise(ssao_context& ctx, const ssao_context_desc& desc) {
 void release(ssao_context& ctx) {
     GladGLContext& gl = ctx.gl;
     if (!ctx.gl_ready) return;  // GL never (fully) loaded: nothing was made
-    for (GLuint program : ctx.programs)
-        if (program) gl.DeleteProgram(program);
+    delete_programs(ctx);
     if (ctx.vao) gl.DeleteVertexArrays(1, &ctx.vao);
     if (ctx.fbo) gl.DeleteFramebuffers(1, &ctx.fbo);
     if (ctx.ubo_frame) gl.DeleteBuffers(1, &ctx.ubo_frame);

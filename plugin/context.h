@@ -9,7 +9,7 @@
 #include "debug.h"
 #include "gl_state_guard.h"
 #include "plan.h"
-#include "programs.h"
+#include "program_cache.h"
 #include "projection.h"
 #include "uniforms.h"
 
@@ -18,6 +18,7 @@
 #include <glad/gl.h>
 
 #include <string>
+#include <vector>
 
 struct ssao_context {
     GladGLContext gl{};
@@ -32,10 +33,9 @@ struct ssao_context {
     bool frame_uploaded = false;
     bool kernel_dirty = true;   // kernel / noise need uploading
 
-    // The compiled programs, one per ProgramId (programs.cpp), and the
-    // locations of the per-pass uniforms in each.
-    GLuint programs[static_cast<int>(ssao_impl::ProgramId::count)] = {};
-    ssao_impl::PassUniforms pass_uniforms[static_cast<int>(ssao_impl::ProgramId::count)] = {};
+    // The compiled programs (program_cache.cpp): variant 0 of every
+    // ProgramId first, then each variant a plan has used.
+    std::vector<ssao_impl::CompiledProgram> programs;
     GLuint vao = 0, fbo = 0, ubo_frame = 0, ubo_kernel = 0, noise_texture = 0, sampler = 0;
 
     // The plan's intermediate textures, each with the size and format it was

@@ -35,6 +35,12 @@ struct AnalysedInputs {
     int viewport[4] = {0, 0, 0, 0};
     uint32_t depth_texture = 0, normal_texture = 0;  // the host's inputs (checked)
     uint32_t output_texture = 0;  // the host's output texture (checked), 0 = the library's own
+    // (1.2) Multisampled depth and normal (GL_TEXTURE_2D_MULTISAMPLE): the
+    // grid pass reads sample `sample_index` of each pixel.
+    bool multisample = false;
+    int sample_index = 0;
+    // (1.2) No normal texture: the grid pass rebuilds normals from depth.
+    bool normals_from_depth = false;
 };
 
 // Checks that need no GL state change: the enums, view matrix and projection,

@@ -5,6 +5,7 @@
 #include "context.h"
 #include "inputs.h"
 #include "plan.h"
+#include "program_cache.h"
 #include "resources.h"
 #include "runner.h"
 
@@ -66,6 +67,8 @@ ssao_status execute(ssao_context& ctx, const ssao_inputs& in, ssao_output* out) 
     if (st != SSAO_OK) return st;
 
     const FramePlan plan = plan_frame(ctx.settings, analysed);
+    st = compile_plan_programs(ctx, plan);  // a variant's first use compiles it
+    if (st != SSAO_OK) return st;
 
     // Resources: (re)allocate only on change; only then are the unpack state
     // and our framebuffer's completeness looked at.

@@ -41,51 +41,85 @@ private:
     FramePlan& plan_;
 };
 
-// Below full resolution: downsample -> AO -> [blur x -> [blur y]] on the
-// reduced grid, ceil(w/scale) x ceil(h/scale) (the last block of an odd size
-// is partial, never dropped; every blur kind is made depth-aware there) ->
-// depth-aware upsample into the output, which writes every viewport pixel.
-void plan_reduced(Builder& b, int scale, ProgramId estimator, bool blur, bool separable, int vw, int vh,
-                  const TexRef& output, const Rect& final_rect) {
-    const int lw = (vw + scale - 1) / scale, lh = (vh + scale - 1) / scale;
-    const Rect low{0, 0, lw, lh};
+// Variant bits of a pass that reads the host's depth and normal textures.
+uint32_t host_input_variant(const AnalysedInputs& in) { return in.multisample ? variant::multisample : 0u; }
 
-    const TexRef grid = TexRef::of(Source::intermediate, b.intermediate(lw, lh, TexFormat::rgba32f));
+// The grid pass: one picked texel per scale x scale block (scale 1: every
+// pixel) -> RGBA32F (depth as stored, view-space normal). It runs below full
+// resolution, for multisampled inputs (it reads one sample, so no later pass
+// sees the multisampled textures) and when normals come from depth (it
+// rebuilds them once, not in every sampling step).
+TexRef add_grid_pass(Builder& b, const AnalysedInputs& in, int scale, const Rect& low) {
+    const TexRef grid = TexRef::of(Source::intermediate, b.intermediate(low.width, low.height, TexFormat::rgba32f));
     Pass& down = b.add(PassKind::downsample, ProgramId::downsample, grid, low);
     down.inputs[SSAO_UNIT_DEPTH] = TexRef::of(Source::depth);
-    down.inputs[SSAO_UNIT_NORMAL] = TexRef::of(Source::normal);
+    if (!in.normals_from_depth) down.inputs[SSAO_UNIT_NORMAL] = TexRef::of(Source::normal);
     down.scale = scale;
+    down.variant = host_input_variant(in) | (in.normals_from_depth ? variant::normals_from_depth : 0u);
+    return grid;
+}
 
-    // The sampling pass reads depth and normal from the grid on both units.
-    const TexRef ao_target = TexRef::of(Source::intermediate, b.intermediate(lw, lh, TexFormat::rg32f));
-    Pass& ao = b.add(PassKind::ao, estimator, ao_target, low);
-    ao.inputs[SSAO_UNIT_DEPTH] = grid;
-    ao.inputs[SSAO_UNIT_NORMAL] = grid;
+// On the grid: [grid pass ->] AO -> [blur x -> [blur y]], ceil(w/scale) x
+// ceil(h/scale) (the last block of an odd size is partial, never dropped).
+// Below full resolution every blur kind is made depth-aware there and a
+// depth-aware upsample writes every viewport pixel of the output; at full
+// resolution the last pass writes the output itself.
+void plan_sampling(Builder& b, const ssao_settings& s, const AnalysedInputs& in, const TexRef& output,
+                   const Rect& final_rect) {
+    const int scale = resolution_scale(s);
+    const int vw = in.viewport[2], vh = in.viewport[3];
+    const int lw = (vw + scale - 1) / scale, lh = (vh + scale - 1) / scale;
+    const Rect low{0, 0, lw, lh};
+    const bool reduced = scale > 1;
+    const bool blur = s.blur != SSAO_BLUR_NONE;
+    const bool separable = blur && s.blur != SSAO_BLUR_BOX_4X4;
+    const ProgramId estimator = s.method == SSAO_METHOD_VISIBILITY ? ProgramId::visibility : ProgramId::ao;
+
+    const bool grid = reduced || in.multisample || in.normals_from_depth;
+    const TexRef grid_tex = grid ? add_grid_pass(b, in, scale, low) : TexRef{};
+
+    // Where the last pass on the grid writes: the output at full resolution,
+    // else an intermediate for the upsample.
+    const bool last_is_ao = !blur;
+    const bool ao_to_output = !reduced && last_is_ao;
+    const TexRef ao_target =
+        ao_to_output ? output : TexRef::of(Source::intermediate, b.intermediate(lw, lh, TexFormat::rg32f));
+    Pass& ao = b.add(PassKind::ao, estimator, ao_target, ao_to_output ? final_rect : low);
+    ao.inputs[SSAO_UNIT_DEPTH] = grid ? grid_tex : TexRef::of(Source::depth);
+    ao.inputs[SSAO_UNIT_NORMAL] = grid ? grid_tex : TexRef::of(Source::normal);
     ao.inputs[SSAO_UNIT_NOISE] = TexRef::of(Source::noise);
     ao.scale = scale;
+    ao.variant = grid ? variant::grid_input : 0u;
 
+    // The blurs read the AO and its view z from the intermediates only.
     TexRef low_ao = ao_target;
     if (blur) {
-        const TexRef x_target = TexRef::of(Source::intermediate, b.intermediate(lw, lh, TexFormat::rg32f));
-        Pass& bx = b.add(PassKind::blur_x, ProgramId::blur, x_target, low);
+        const bool x_to_output = !reduced && !separable;
+        const TexRef x_target =
+            x_to_output ? output : TexRef::of(Source::intermediate, b.intermediate(lw, lh, TexFormat::rg32f));
+        Pass& bx = b.add(PassKind::blur_x, ProgramId::blur, x_target, x_to_output ? final_rect : low);
         bx.inputs[SSAO_UNIT_AO] = ao_target;
         bx.direction[0] = 1;
-        bx.depth_aware = true;
+        bx.depth_aware = reduced;
         low_ao = x_target;
         if (separable) {
-            // Back into the AO pass's texture: its contents are no longer needed.
-            Pass& by = b.add(PassKind::blur_y, ProgramId::blur, ao_target, low);
+            // Below full resolution back into the AO pass's texture: its
+            // contents are no longer needed.
+            const TexRef y_target = reduced ? ao_target : output;
+            Pass& by = b.add(PassKind::blur_y, ProgramId::blur, y_target, reduced ? low : final_rect);
             by.inputs[SSAO_UNIT_AO] = x_target;
             by.direction[1] = 1;
-            by.depth_aware = true;
-            low_ao = ao_target;
+            by.depth_aware = reduced;
+            low_ao = y_target;
         }
     }
+    if (!reduced) return;
 
     Pass& up = b.add(PassKind::upsample, ProgramId::upsample, output, final_rect);
     up.inputs[SSAO_UNIT_DEPTH] = TexRef::of(Source::depth);
     up.inputs[SSAO_UNIT_AO] = low_ao;
     up.scale = scale;
+    up.variant = host_input_variant(in);
 }
 
 }  // namespace
@@ -109,7 +143,6 @@ FramePlan plan_frame(const ssao_settings& s, const AnalysedInputs& in) {
     plan.output_origin[1] = plan.owned_output ? 0 : in.viewport[1];
     const TexRef output = TexRef::of(Source::output);
     const Rect final_rect{plan.output_origin[0], plan.output_origin[1], vw, vh};
-    const Rect full{0, 0, vw, vh};
 
     Builder b(plan);
     if (s.strength == SSAO_STRENGTH_OFF) {
@@ -117,35 +150,7 @@ FramePlan plan_frame(const ssao_settings& s, const AnalysedInputs& in) {
         b.add(PassKind::clear, ProgramId::none, output, final_rect);
         return plan;
     }
-    const bool blur = s.blur != SSAO_BLUR_NONE;
-    const bool separable = blur && s.blur != SSAO_BLUR_BOX_4X4;
-    const ProgramId estimator = s.method == SSAO_METHOD_VISIBILITY ? ProgramId::visibility : ProgramId::ao;
-    const int scale = resolution_scale(s);
-    if (scale > 1) {
-        plan_reduced(b, scale, estimator, blur, separable, vw, vh, output, final_rect);
-        return plan;
-    }
-
-    // AO -> [blur x -> [blur y]] -> output. Intermediates hold (ao, view z) at
-    // the viewport's size, texel (0,0) = viewport pixel (x,y).
-    const TexRef ao_target = blur ? TexRef::of(Source::intermediate, b.intermediate(vw, vh, TexFormat::rg32f)) : output;
-    Pass& ao = b.add(PassKind::ao, estimator, ao_target, blur ? full : final_rect);
-    ao.inputs[SSAO_UNIT_DEPTH] = TexRef::of(Source::depth);
-    ao.inputs[SSAO_UNIT_NORMAL] = TexRef::of(Source::normal);
-    ao.inputs[SSAO_UNIT_NOISE] = TexRef::of(Source::noise);
-    if (!blur) return plan;
-
-    // The blur reads the AO and its view z from the intermediate only.
-    const TexRef x_target = separable ? TexRef::of(Source::intermediate, b.intermediate(vw, vh, TexFormat::rg32f))
-                                      : output;
-    Pass& bx = b.add(PassKind::blur_x, ProgramId::blur, x_target, separable ? full : final_rect);
-    bx.inputs[SSAO_UNIT_AO] = ao_target;
-    bx.direction[0] = 1;
-    if (!separable) return plan;
-
-    Pass& by = b.add(PassKind::blur_y, ProgramId::blur, output, final_rect);
-    by.inputs[SSAO_UNIT_AO] = x_target;
-    by.direction[1] = 1;
+    plan_sampling(b, s, in, output, final_rect);
     return plan;
 }
 

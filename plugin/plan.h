@@ -15,12 +15,13 @@
 //      what it samples), its target (an intermediate it declares, or the
 //      output), its rectangle, and the intermediates it needs;
 //   3. the pass file: its fragment shader in shaders/ (listed in
-//      shaders/CMakeLists.txt) and its row in programs.cpp (shader, label).
+//      shaders/CMakeLists.txt) and its row in shader_source.cpp (shader, label).
 // The resources, the runner, the timers and the debug groups follow the plan
 // and need no change. Per-pass values a shader reads (target origin, packing,
 // direction; a source scale for half resolution, say) are fields of Pass that
 // the runner sets as uniforms of the same name in every program
-// (programs.cpp, PassUniforms); a program without one ignores it.
+// (programs.cpp, PassUniforms); a program without one ignores it. A feature
+// that is off by default is a variant bit (namespace variant below).
 // Limits to know: a pass samples at most SSAO_UNITS_USED (4) units, the ones
 // the state guard saves and the ABI documents; an intermediate of a new
 // format needs its TexFormat here and its GL triple in resources.cpp
@@ -55,6 +56,25 @@ enum class PassKind : uint32_t {
 // ao and visibility are the two estimators (ssao_settings.method) of the ao pass.
 // downsample and upsample run only below full resolution (ssao_settings.resolution).
 enum class ProgramId : int { none = -1, ao = 0, visibility = 1, blur = 2, downsample = 3, upsample = 4, count = 5 };
+
+// Compile-time variants of a program. Each bit is a feature that is off by
+// default and free when off: its shader code sits behind `#ifdef SSAO_<NAME>`
+// (shader_source.cpp adds the defines), so a plan that does not ask for it
+// runs not one instruction or branch of it. The runner compiles a variant the
+// first time a plan uses it (program_cache.cpp); variant 0 of every program is
+// compiled at create_context. A new bit: a constant here, its name in
+// kVariantNames (shader_source.cpp), the #ifdef code, and the plan sets it.
+namespace variant {
+constexpr uint32_t grid_input = 1u << 0;          // GRID_INPUT: the sampling pass reads the prepared grid (depth,
+                                                  // normal) instead of the host's depth and normal textures
+constexpr uint32_t multisample = 1u << 1;         // MULTISAMPLE: the host's depth/normal are sampler2DMS, sample u_sample_index
+constexpr uint32_t normals_from_depth = 1u << 2;  // NORMALS_FROM_DEPTH: the grid pass rebuilds normals from depth
+constexpr uint32_t fade = 1u << 3;                // FADE: AO fades to 1 between fade_start and fade_end
+constexpr uint32_t radius_pixels = 1u << 4;       // RADIUS_PIXELS: per-pixel radius from radius_pixels
+constexpr uint32_t frame_noise = 1u << 5;         // FRAME_NOISE: rotation and jitter move with frame_index
+constexpr uint32_t blur_weights = 1u << 6;        // BLUR_WEIGHTS: the blur writes its accepted weight share
+constexpr int kBits = 7;
+}  // namespace variant
 
 // Formats of the textures the plan renders into.
 enum class TexFormat : uint8_t {
@@ -107,6 +127,7 @@ struct Pass {
     // (u_depth_aware). Set below full resolution, where a blurred grid texel
     // spans several pixels and the upsample could not undo a leak.
     bool depth_aware = false;
+    uint32_t variant = 0;  // bits of `variant::`: which compiled variant of `program` runs
 };
 
 // A texture the plan renders into and a later pass samples.

@@ -1,27 +1,14 @@
-// programs.h - the pass programs: one row per ProgramId (its fragment shader
-// and its debug label), and the per-pass uniforms every program may declare,
-// set from the plan's Pass by the runner.
+// programs.h - the per-pass uniforms every pass program may declare, set
+// from the plan's Pass by the runner (the programs' sources are in
+// shader_source.cpp, their compiled variants in program_cache.cpp).
 #pragma once
 
 #include "plan.h"
+#include "shader_source.h"
 
 #include <glad/gl.h>
 
 namespace ssao_impl {
-
-// The shared GLSL a fragment shader is built on, after the constants header.
-enum class SharedCode { none, common, common_and_sampling };
-
-struct ProgramInfo {
-    ProgramId id;
-    const char* fragment_source;  // the embedded shader (after the constants header and `shared`)
-    SharedCode shared;
-    const char* file_name;        // for compile errors
-    const char* label;            // glObjectLabel name
-};
-
-// The row of `id` (id != none).
-const ProgramInfo& program_info(ProgramId id);
 
 // Locations of the per-pass uniforms in one program (-1: it does not use it;
 // glUniform* ignores location -1).

@@ -3,7 +3,7 @@
 
 #include "context.h"
 #include "debug.h"
-#include "programs.h"
+#include "program_cache.h"
 #include "timers.h"
 
 namespace ssao_impl {
@@ -61,10 +61,10 @@ void clear_to_one(const GladGLContext& gl, const Pass& pass) {
 
 void draw(const ssao_context& ctx, const Pass& pass) {
     const GladGLContext& gl = ctx.gl;
-    const int program = static_cast<int>(pass.program);
+    const CompiledProgram& program = program_for(ctx, pass);
     gl.Viewport(pass.rect.x, pass.rect.y, pass.rect.width, pass.rect.height);
-    gl.UseProgram(ctx.programs[program]);
-    set_pass_uniforms(gl, ctx.pass_uniforms[program], pass);
+    gl.UseProgram(program.program);
+    set_pass_uniforms(gl, program.uniforms, pass);
     gl.DrawArrays(GL_TRIANGLES, 0, 3);
 }
 

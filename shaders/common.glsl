@@ -30,10 +30,15 @@ ivec2 grid_pixel(ivec2 t) {
     return min(t * u_scale + o, u_viewport.zw - 1);
 }
 
-// Depth of grid texel t: at scale 1 the host's depth texture; below full
-// resolution u_depth_tex is the downsample's grid, whose red channel is the
-// picked pixel's depth copied bit for bit.
-float fetch_depth(ivec2 t) { return u_scale == 1 ? input_depth(t) : texelFetch(u_depth_tex, t, 0).r; }
+// Depth of grid texel t: the host's depth texture, or (variant GRID_INPUT:
+// below full resolution, multisampled inputs, normals from depth) the grid
+// pass's texture, whose red channel is the picked pixel's depth copied bit
+// for bit.
+#ifdef SSAO_GRID_INPUT
+float fetch_depth(ivec2 t) { return texelFetch(u_depth_tex, t, 0).r; }
+#else
+float fetch_depth(ivec2 t) { return input_depth(t); }
+#endif
 
 // The far plane (cleared depth) in either convention: exact comparison, since
 // a cleared buffer holds exactly the clear value.

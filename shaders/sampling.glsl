@@ -51,14 +51,15 @@ vec3 decode_normal(vec3 stored, vec3 to_eye) {
 }
 
 // The normal of grid texel t before it is turned towards the camera; false
-// when it is broken. Below full resolution the downsample has decoded it
-// already (the picked pixel's unit normal, or zero for a broken one).
+// when it is broken. From the grid (variant GRID_INPUT) the grid pass has
+// decoded it already (the picked pixel's unit normal, or zero for a broken one).
 bool raw_normal(ivec2 t, out vec3 n) {
-    if (u_scale != 1) {
-        n = texelFetch(u_normal_tex, t, 0).yzw;
-        return dot(n, n) > 0.5;
-    }
+#ifdef SSAO_GRID_INPUT
+    n = texelFetch(u_normal_tex, t, 0).yzw;
+    return dot(n, n) > 0.5;
+#else
     return decode_raw_normal(texelFetch(u_normal_tex, t + u_viewport.xy, 0).xyz, n);
+#endif
 }
 
 // The normal of grid texel t as the sampling passes see it.

@@ -509,7 +509,8 @@ typedef struct ssao_api {
     /* Renders AO for inputs->viewport. `out` may be NULL. Returns OK,
      * NULL_POINTER, STRUCT_SIZE, INVALID_ENUM, INVALID_VALUE, INVALID_SIZE,
      * INVALID_TEXTURE, UNSUPPORTED_FORMAT, INVALID_PROJECTION, FRAMEBUFFER,
-     * OUT_OF_MEMORY, INTERNAL. */
+     * OUT_OF_MEMORY, INTERNAL, and (1.2) SHADER: a feature that is off by
+     * default compiles its shader variant the first time a frame uses it. */
     ssao_status (SSAO_CALL *execute)(ssao_context* ctx, const ssao_inputs* inputs, ssao_output* out);
 
     /* GPU times of the newest frame whose queries have completed, without

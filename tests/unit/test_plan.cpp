@@ -389,3 +389,43 @@ TEST_CASE("plan: the reduced-resolution passes have their own names and timing b
     CHECK(uint32_t(PassKind::downsample) == uint32_t(SSAO_PASS_DOWNSAMPLE));
     CHECK(uint32_t(PassKind::upsample) == uint32_t(SSAO_PASS_UPSAMPLE));
 }
+
+TEST_CASE("plan: multisampled inputs or normals from depth add the grid pass at full resolution too, with its variants") {
+    for (bool ms : {false, true})
+        for (bool from_depth : {false, true})
+            for (ssao_resolution res : {SSAO_RESOLUTION_FULL, SSAO_RESOLUTION_HALF})
+                for (ssao_blur blur : {SSAO_BLUR_NONE, SSAO_BLUR_BOX_4X4, SSAO_BLUR_DEPTH_AWARE}) {
+                    CAPTURE(ms);
+                    CAPTURE(from_depth);
+                    CAPTURE(res);
+                    CAPTURE(blur);
+                    AnalysedInputs in = inputs(0, 0, 67, 41);
+                    in.multisample = ms;
+                    in.normals_from_depth = from_depth;
+                    const FramePlan p = plan_frame(at_resolution(blur, res), in);
+                    check_invariants(p, in);
+                    const bool grid = ms || from_depth || res != SSAO_RESOLUTION_FULL;
+                    const Pass& first = p.passes[0];
+                    CHECK((first.kind == PassKind::downsample) == grid);
+                    for (int i = 0; i < p.pass_count; ++i) {
+                        const Pass& pass = p.passes[i];
+                        CAPTURE(i);
+                        // Only the passes that read the host's textures read them multisampled.
+                        const bool reads_host = pass.kind == PassKind::downsample || pass.kind == PassKind::upsample ||
+                                                (pass.kind == PassKind::ao && !grid);
+                        CHECK(((pass.variant & variant::multisample) != 0) == (ms && reads_host));
+                        CHECK(((pass.variant & variant::normals_from_depth) != 0) ==
+                              (from_depth && pass.kind == PassKind::downsample));
+                        CHECK(((pass.variant & variant::grid_input) != 0) == (grid && pass.kind == PassKind::ao));
+                    }
+                    if (!grid) continue;
+                    // No normal texture to read: the grid pass leaves the unit unbound.
+                    CHECK((first.inputs[SSAO_UNIT_NORMAL].source == Source::normal) == !from_depth);
+                    const int scale = res == SSAO_RESOLUTION_HALF ? 2 : 1;
+                    CHECK(first.scale == scale);
+                    CHECK(p.intermediates[first.target.index].width == (67 + scale - 1) / scale);
+                    CHECK(p.intermediates[first.target.index].format == TexFormat::rgba32f);
+                    // At full resolution nothing is upsampled.
+                    CHECK(((p.passes_run() & SSAO_PASS_UPSAMPLE) != 0) == (scale > 1));
+                }
+}

@@ -1,0 +1,41 @@
+// program_cache.h - the compiled pass programs: variant 0 of every ProgramId
+// at create_context (so a driver that cannot compile the shaders fails
+// there), and each other variant the first time a plan asks for it (plan.h,
+// namespace variant), kept until destroy_context.
+#pragma once
+
+#include "plan.h"
+#include "programs.h"
+
+#include <ssao/ssao.h>
+
+#include <glad/gl.h>
+
+#include <cstdint>
+
+struct ssao_context;
+
+namespace ssao_impl {
+
+struct CompiledProgram {
+    ProgramId id = ProgramId::none;
+    uint32_t variant = 0;
+    GLuint program = 0;
+    PassUniforms uniforms;
+};
+
+// create_context: variant 0 of every program. SHADER (last_error holds the
+// driver's log) when one fails.
+ssao_status compile_base_programs(ssao_context& ctx);
+
+// execute, after planning: every (program, variant) the plan runs. SHADER
+// when one fails to compile; OUT_OF_MEMORY is left to the caller's guard.
+ssao_status compile_plan_programs(ssao_context& ctx, const FramePlan& plan);
+
+// The compiled program of a pass (compile_plan_programs ran for its plan).
+const CompiledProgram& program_for(const ssao_context& ctx, const Pass& pass);
+
+// destroy_context: deletes them all.
+void delete_programs(ssao_context& ctx);
+
+}  // namespace ssao_impl
