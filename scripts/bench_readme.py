@@ -4,8 +4,8 @@
 Reads a run of ssao-bench (bench.csv, presets.txt in DIR, default docs/bench)
 and rewrites the README blocks between <!-- bench:NAME --> and
 <!-- /bench:NAME --> markers: the preset table rows, the summary, the
-targets of issues 8 and 9 (met or missed, as measured) and the time-against-
-pixels table. Every number in those blocks comes from the run; nothing is
+targets of issues 8 and 9 (met or missed, as measured), the time-against-
+pixels table and the half/quarter-resolution ratios. Every number in those blocks comes from the run; nothing is
 typed by hand.
 
 usage: scripts/bench_readme.py [DIR] [README]
@@ -169,6 +169,8 @@ def main():
                                                                f(xt, 3), f(xf, 1)))
     blocks["time"] = "\n".join(lines)
 
+    blocks["resolution"] = resolution_table(rows, base_w, scenes, f, mean)
+
     text = open(readme).read()
     for name, body in blocks.items():
         pat = re.compile(r"(<!-- bench:%s -->\n)(?:.*?\n)?(<!-- /bench:%s -->)" % (name, name), re.S)
@@ -177,6 +179,38 @@ def main():
         text = pat.sub(lambda m: m.group(1) + body + "\n" + m.group(2), text)
     open(readme, "w").write(text)
     print("bench_readme: %d blocks written from %s" % (len(blocks), d))
+
+
+def resolution_table(rows, base_w, scenes, f, mean):
+    """Half and quarter against full resolution: every sweep configuration the
+    run measured at all three on every scene, GPU and wall-clock ratios."""
+    key_fields = ("method", "samples", "steps", "blur", "rotation", "distribution")
+    runs = {}
+    for r in rows:
+        if r["kind"] != "plugin" or r["width"] != base_w or not r["config"].startswith(r["method"] + " "):
+            continue
+        if r["method"] == "visibility" and abs(float(r["thickness"]) - float(r["radius"]) / 2) > 1e-4:
+            continue  # a thickness variant: not the default configuration
+        runs.setdefault(tuple(r[k] for k in key_fields), {}).setdefault(r["resolution"], {})[r["scene"]] = r
+    lines = ["| configuration | full: GPU ms | half / full (GPU) | quarter / full (GPU) | half / full (wall) | "
+             "quarter / full (wall) | PSNR against V_R full / half / quarter (dB) |",
+             "|---|---:|---:|---:|---:|---:|---|"]
+    for key, by_res in sorted(runs.items()):
+        if not all(len(by_res.get(res, {})) == len(scenes) for res in ("1", "2", "3")):
+            continue
+        full, half, quarter = by_res["1"], by_res["2"], by_res["3"]
+
+        def rt(low, field):
+            return mean(low[s][field] / full[s][field] for s in scenes)
+
+        method, samples, steps, blur = key[:4]
+        name = "%s %s x %s, blur %s" % (method, samples, steps, blur) if method == "visibility" else \
+            "kernel %s, blur %s" % (samples, blur)
+        lines.append("| %s | %s | %s | %s | %s | %s | %s / %s / %s |" % (
+            name, f(mean(full[s]["median_ms"] for s in scenes)), f(rt(half, "median_ms")), f(rt(quarter, "median_ms")),
+            f(rt(half, "wall_ms")), f(rt(quarter, "wall_ms")), f(mean(full[s]["psnr"] for s in scenes)),
+            f(mean(half[s]["psnr"] for s in scenes)), f(mean(quarter[s]["psnr"] for s in scenes))))
+    return "\n".join(lines)
 
 
 def help_presets():
