@@ -111,6 +111,13 @@ ssao_settings build_settings(const ssao_api& api, const cli::Options& o, const s
     if (o.fade_end) s.fade_end = *o.fade_end;
     if (o.fade_end && *o.fade_end == 0.0f && !o.fade_start) s.fade_start = 0.0f;
     if (o.radius_pixels) s.radius_pixels = *o.radius_pixels;
+    // Hints and flags meet here, so say which range is wrong before the
+    // plugin's resolve_settings (which has no context to explain it) refuses it.
+    if (s.fade_end == 0.0f && s.fade_start != 0.0f)
+        throw Error("the fade start " + fmt(s.fade_start) + " has no fade end (--fade-end or the scene's hint ssao.fade_end)");
+    if (s.fade_end != 0.0f && !(s.fade_start < s.fade_end))
+        throw Error("fade_end must be greater than fade_start: the fade runs " + fmt(s.fade_start) + " .. " +
+                    fmt(s.fade_end) + " (flags --fade-start/--fade-end or the scene's hints)");
 
     ssao_settings resolved{};
     resolved.size = sizeof(ssao_settings);
