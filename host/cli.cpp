@@ -161,6 +161,17 @@ ParseResult parse(int argc, const char* const* argv, Options& o, std::string& er
         {"--steps", [&](const std::string& f, const std::string& v) {
              o.steps = static_cast<int>(flags::integer(f, v, 1, SSAO_MAX_STEPS));
          }},
+        {"--fade-start", [&](const std::string& f, const std::string& v) { o.fade_start = ranged(f, v, 0, false, kBig, false); }},
+        {"--fade-end", [&](const std::string& f, const std::string& v) { o.fade_end = ranged(f, v, 0, false, kBig, false); }},
+        {"--radius-pixels", [&](const std::string& f, const std::string& v) {
+             o.radius_pixels = ranged(f, v, 0, false, SSAO_MAX_DIMENSION, false);
+         }},
+        {"--frame-index", [&](const std::string& f, const std::string& v) {
+             o.frame_index = static_cast<uint32_t>(flags::integer(f, v, 0, 4294967295LL));
+         }},
+        {"--accumulate", [&](const std::string& f, const std::string& v) {
+             o.accumulate = static_cast<int>(flags::integer(f, v, 1, 1024));
+         }},
     };
     // Flags without a value.
     const flags::Switches switches = {
@@ -266,6 +277,16 @@ std::string help_text(const ssao_settings* d, const std::string& default_scene, 
          "  --steps N               visibility: steps per direction, 1.." << SSAO_MAX_STEPS << " (default "
       << def([](const ssao_settings& s) { return std::to_string(s.step_count); }) << ")\n"
          "  --output-format r8|r16f plugin output texture format (default " << def([](const ssao_settings& s) { return std::string(name(s.output_format)); }) << ")\n"
+         "  --fade-start D          distance fade: view depth where AO starts fading to 1, >= 0 (default: scene\n"
+         "                          hint, else 0); needs a fade end\n"
+         "  --fade-end D            view depth beyond which AO is 1, > fade start; 0 = no fade (default: scene\n"
+         "                          hint, else 0)\n"
+         "  --radius-pixels N       radius in viewport pixels at each pixel's depth, at most --radius, (0, 16384];\n"
+         "                          0 = off, radius in scene units (default: scene hint, else 0)\n"
+         "  --frame-index N         inputs.frame_index, 0..4294967295: 0 = the fixed noise pattern, else rotation\n"
+         "                          and jitter move with it for a TAA host (default 0)\n"
+         "  --accumulate K          ao.png/ao.exr = the mean AO of frame indices N..N+K-1 (what a TAA host\n"
+         "                          converges to), 1..1024; the lit pictures use frame N (default 1)\n"
          "\n"
          "Files written to the output directory (all or none: written to temporary names, renamed at the end)\n"
          "  ao.png ao.exr           ambient occlusion (EXR: one float channel Y, 1 = unoccluded)\n"

@@ -56,6 +56,13 @@ struct Options {
     std::optional<ssao_method> method;
     std::optional<float> thickness;  // visibility: view units
     std::optional<int> steps;        // visibility: steps per direction
+    // (1.2) Distance fade (view depth; --fade-end 0 turns a scene hint's fade
+    // off) and the radius in viewport pixels (0 = off).
+    std::optional<float> fade_start, fade_end, radius_pixels;
+    // (1.2) inputs.frame_index of the first frame (0 = the fixed noise), and
+    // how many consecutive frame indices ao.png/ao.exr average (1 = none).
+    uint32_t frame_index = 0;
+    int accumulate = 1;
 };
 
 enum class ParseResult { Run, Help, Version, Error };

@@ -90,6 +90,28 @@ std::vector<float> read_ao(GladGLContext& gl, const ssao_output& out, int w, int
     return top_down;
 }
 
+// --accumulate K: the mean AO of frame indices N..N+K-1 (`first` is frame
+// N's), what a TAA host converges to. Ends with frame N executed again, so
+// the lit pictures drawn from `output` show frame N as without the flag.
+std::vector<float> accumulate_ao(const ssao_api& api, PluginContext& plugin, GladGLContext& gl, ssao_inputs& inputs,
+                                 ssao_output& output, const std::vector<float>& first, int frames, int w, int h) {
+    std::vector<double> sum(first.begin(), first.end());
+    const uint32_t n = inputs.frame_index;
+    for (int k = 1; k < frames; ++k) {
+        inputs.frame_index = n + static_cast<uint32_t>(k);  // wraps past 2^32 - 1 like a frame counter
+        const ssao_status st = api.execute(plugin.ctx, &inputs, &output);
+        if (st != SSAO_OK) throw RunError("the SSAO plugin failed: " + plugin.error(st));
+        const std::vector<float> ao = read_ao(gl, output, w, h);
+        for (size_t i = 0; i < sum.size(); ++i) sum[i] += ao[i];
+    }
+    inputs.frame_index = n;
+    const ssao_status st = api.execute(plugin.ctx, &inputs, &output);
+    if (st != SSAO_OK) throw RunError("the SSAO plugin failed: " + plugin.error(st));
+    std::vector<float> mean(sum.size());
+    for (size_t i = 0; i < sum.size(); ++i) mean[i] = static_cast<float>(sum[i] / frames);
+    return mean;
+}
+
 std::vector<uint8_t> to_bytes(const std::vector<float>& v) {
     std::vector<uint8_t> b(v.size());
     for (size_t i = 0; i < v.size(); ++i) {
@@ -239,6 +261,7 @@ int run(const cli::Options& o) {
         std::copy_n(glm::value_ptr(view), 16, inputs.view_matrix);
         inputs.clip_range = cam.zero_to_one ? SSAO_CLIP_ZERO_TO_ONE : SSAO_CLIP_NEGATIVE_ONE_TO_ONE;
         inputs.output_texture = 0;   // the plugin's own texture, in settings.output_format
+        inputs.frame_index = o.frame_index;
 
         for (int frame = 0; frame < o.frames; ++frame) {
             st = api.execute(plugin.ctx, &inputs, &output);
@@ -250,6 +273,7 @@ int run(const cli::Options& o) {
         api.get_frame_info(plugin.ctx, &info);
         gl_util::check(gl, "the SSAO plugin's execute");
         ao = read_ao(gl, output, W, H);
+        if (o.accumulate > 1) ao = accumulate_ao(api, plugin, gl, inputs, output, ao, o.accumulate, W, H);
 
         if (full || sheet) {
             composite::Compositor compositor(gl, W, H);
@@ -376,6 +400,12 @@ int run(const cli::Options& o) {
                 settings.method == SSAO_METHOD_VISIBILITY
                     ? (" (steps " + std::to_string(settings.step_count) + ", thickness " + fmt(settings.thickness) + ")").c_str()
                     : "");
+    // Printed only when one of them is on, so other runs print what they always did.
+    if (settings.fade_end > 0.0f || settings.radius_pixels > 0.0f || o.frame_index != 0 || o.accumulate > 1) {
+        std::printf("  ssao 1.2: fade %s, radius pixels %s, frame index %u, accumulate %d\n",
+                    settings.fade_end > 0.0f ? (fmt(settings.fade_start) + ".." + fmt(settings.fade_end)).c_str() : "off",
+                    settings.radius_pixels > 0.0f ? fmt(settings.radius_pixels).c_str() : "off", o.frame_index, o.accumulate);
+    }
     std::printf("  plugin: %s\n", library.loaded_path().c_str());
     std::printf("  plugin saw: %s, %s depth%s%s, near %s, far %s\n", info.orthographic ? "orthographic" : "perspective",
                 info.depth_bits == 32 ? "32-bit float" : (std::to_string(info.depth_bits) + "-bit").c_str(),

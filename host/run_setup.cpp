@@ -67,6 +67,21 @@ ssao_settings build_settings(const ssao_api& api, const cli::Options& o, const s
             throw Error("the scene's hint ssao.power = " + fmt(*h.power) + " is out of range (0, 16]");
         s.power = *h.power;
     }
+    if (h.fade_start) {
+        if (!(std::isfinite(*h.fade_start) && *h.fade_start >= 0.0f))
+            throw Error("the scene's hint ssao.fade_start = " + fmt(*h.fade_start) + " is not a number >= 0");
+        s.fade_start = *h.fade_start;
+    }
+    if (h.fade_end) {
+        if (!(std::isfinite(*h.fade_end) && *h.fade_end >= 0.0f))
+            throw Error("the scene's hint ssao.fade_end = " + fmt(*h.fade_end) + " is not a number >= 0");
+        s.fade_end = *h.fade_end;
+    }
+    if (h.radius_pixels) {
+        if (!(std::isfinite(*h.radius_pixels) && *h.radius_pixels >= 0.0f && *h.radius_pixels <= SSAO_MAX_DIMENSION))
+            throw Error("the scene's hint ssao.radius_pixels = " + fmt(*h.radius_pixels) + " is out of range [0, 16384]");
+        s.radius_pixels = *h.radius_pixels;
+    }
     // Flags. A zero field means "default" in the ABI, so an explicit 0 for a
     // bias becomes the smallest positive float and strength 0 SSAO_STRENGTH_OFF.
     if (o.samples) s.sample_count = static_cast<uint32_t>(*o.samples);
@@ -90,6 +105,19 @@ ssao_settings build_settings(const ssao_api& api, const cli::Options& o, const s
     if (o.method) s.method = *o.method;
     if (o.thickness) s.thickness = *o.thickness;
     if (o.steps) s.step_count = static_cast<uint32_t>(*o.steps);
+    // The fade: a flag replaces its end of the hint's range; --fade-end 0
+    // (no fade) drops a hinted start too, so it always turns the fade off.
+    if (o.fade_start) s.fade_start = *o.fade_start;
+    if (o.fade_end) s.fade_end = *o.fade_end;
+    if (o.fade_end && *o.fade_end == 0.0f && !o.fade_start) s.fade_start = 0.0f;
+    if (o.radius_pixels) s.radius_pixels = *o.radius_pixels;
+    // Hints and flags meet here, so say which range is wrong before the
+    // plugin's resolve_settings (which has no context to explain it) refuses it.
+    if (s.fade_end == 0.0f && s.fade_start != 0.0f)
+        throw Error("the fade start " + fmt(s.fade_start) + " has no fade end (--fade-end or the scene's hint ssao.fade_end)");
+    if (s.fade_end != 0.0f && !(s.fade_start < s.fade_end))
+        throw Error("fade_end must be greater than fade_start: the fade runs " + fmt(s.fade_start) + " .. " +
+                    fmt(s.fade_end) + " (flags --fade-start/--fade-end or the scene's hints)");
 
     ssao_settings resolved{};
     resolved.size = sizeof(ssao_settings);

@@ -480,6 +480,9 @@ void read_hints(const tinygltf::Value& extras, AoHints& h) {
     if (auto v = number("samples"); v && !h.samples && *v >= 0 && *v <= 1e6) h.samples = int(*v);
     if (auto v = number("bias"); v && !h.bias) h.bias = float(*v);
     if (auto v = number("power"); v && !h.power) h.power = float(*v);
+    if (auto v = number("fade_start"); v && !h.fade_start) h.fade_start = float(*v);
+    if (auto v = number("fade_end"); v && !h.fade_end) h.fade_end = float(*v);
+    if (auto v = number("radius_pixels"); v && !h.radius_pixels) h.radius_pixels = float(*v);
     if (!h.blur && s.Has("blur") && s.Get("blur").IsString()) h.blur = s.Get("blur").Get<std::string>();
 }
 

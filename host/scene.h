@@ -33,13 +33,16 @@ struct GltfCamera {
 };
 
 // AO settings a scene may carry in the extras of its scene or of its root
-// glTF object: {"ssao": {"radius": 0.3, "samples": 32, "blur": "depth-aware", ...}}.
+// glTF object: {"ssao": {"radius": 0.3, "samples": 32, "blur": "depth-aware", ...}}
+// (also "fade_start", "fade_end", "radius_pixels": the ssao_settings fields).
 struct AoHints {
     std::optional<float> radius;        // scene units
     std::optional<int> samples;
     std::optional<std::string> blur;    // names as the host's --blur flag takes
     std::optional<float> bias;
     std::optional<float> power;
+    std::optional<float> fade_start, fade_end;  // view depth (scene units)
+    std::optional<float> radius_pixels;         // viewport pixels, 0 = off
 };
 
 struct Scene {

@@ -38,6 +38,16 @@ SsaoFrame make_frame_block(const ssao_settings& s, const AnalysedInputs& in) {
     const DepthFormat& fmt = in.depth;
     const float unorm_step = fmt.is_float ? 0.0f : static_cast<float>(1.0 / (std::ldexp(1.0, fmt.bits) - 1.0));
     frame.u_depth = {{proj.sky_depth, unorm_step, proj.reverse_z ? 1.0f : 0.0f, proj.orthographic ? 1.0f : 0.0f}};
+    // Read only by the variants the plan sets for them (FADE, RADIUS_PIXELS,
+    // FRAME_NOISE); zero otherwise, so the block of a frame without them does
+    // not change from frame to frame.
+    frame.u_fade = {{s.fade_start, s.fade_end, s.radius_pixels, 0.0f}};
+    if (in.frame_index != 0) {
+        const glm::dvec2 off = frame_noise_offsets(in.frame_index);
+        const double turn = off.x * 6.283185307179586;
+        frame.u_frame = {{static_cast<float>(std::cos(turn)), static_cast<float>(std::sin(turn)),
+                          static_cast<float>(off.y), 0.0f}};
+    }
     return frame;
 }
 

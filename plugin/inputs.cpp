@@ -98,6 +98,7 @@ ssao_status check_inputs(ssao_context& ctx, const ssao_inputs& in, AnalysedInput
             for (int r = 0; r < 3; ++r) out.normal_to_view[c][r] = in.view_matrix[c * 4 + r];
     }
     out.signed_normals = in.normal_packing == SSAO_NORMAL_PACKING_SIGNED;
+    out.frame_index = in.frame_index;  // any value is valid
     return SSAO_OK;
 }
 

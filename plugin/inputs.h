@@ -41,6 +41,9 @@ struct AnalysedInputs {
     int sample_index = 0;
     // (1.2) No normal texture: the grid pass rebuilds normals from depth.
     bool normals_from_depth = false;
+    // (1.2) inputs.frame_index: 0 = the fixed noise pattern, else the
+    // sampling pass's rotation and jitter move with it (variant FRAME_NOISE).
+    uint32_t frame_index = 0;
 };
 
 // Checks that need no GL state change: the enums, view matrix and projection,

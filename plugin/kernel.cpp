@@ -109,4 +109,12 @@ float pixel_hash(uint32_t x, uint32_t y, uint32_t seed) {
     return static_cast<float>(w >> 8) * (1.0f / 16777216.0f);
 }
 
+glm::dvec2 frame_noise_offsets(uint32_t frame_index) {
+    // round(2^32 / g) and round(2^32 / g^2): the products wrap mod 2^32,
+    // which is exactly the fractional part in 32-bit fixed point.
+    const uint32_t a = frame_index * 3242174889u;
+    const uint32_t b = frame_index * 2447445414u;
+    return glm::dvec2(a, b) / 4294967296.0;
+}
+
 }  // namespace ssao_impl

@@ -48,4 +48,12 @@ std::vector<glm::vec2> make_noise(uint32_t seed);
 // The per-pixel hash the shader uses (same integer arithmetic), in [0, 1).
 float pixel_hash(uint32_t x, uint32_t y, uint32_t seed);
 
+// Noise for TAA hosts (inputs.frame_index, variant FRAME_NOISE): frame n's
+// offsets of the R2 sequence (Roberts 2018, the plastic number's 2D
+// generalisation of the golden ratio), fract(n / g) and fract(n / g^2) with
+// g = 1.3247179572: x turns the per-pixel rotation by x * 2 pi, y is added
+// to the step jitter mod 1. Computed in 32-bit fixed point, so every uint32
+// index is exact and consecutive frames stay evenly spread.
+glm::dvec2 frame_noise_offsets(uint32_t frame_index);
+
 }  // namespace ssao_impl

@@ -44,6 +44,16 @@ private:
 // Variant bits of a pass that reads the host's depth and normal textures.
 uint32_t host_input_variant(const AnalysedInputs& in) { return in.multisample ? variant::multisample : 0u; }
 
+// Variant bits of the sampling pass's optional features (1.2): each only
+// when asked for, so a plan without them compiles and runs none of their code.
+uint32_t sampling_feature_variant(const ssao_settings& s, const AnalysedInputs& in) {
+    uint32_t v = 0;
+    if (s.fade_end > 0.0f) v |= variant::fade;                // distance fade
+    if (s.radius_pixels > 0.0f) v |= variant::radius_pixels;  // radius in viewport pixels
+    if (in.frame_index != 0) v |= variant::frame_noise;       // noise moving with the frame index
+    return v;
+}
+
 // The grid pass: one picked texel per scale x scale block (scale 1: every
 // pixel) -> RGBA32F (depth as stored, view-space normal). It runs below full
 // resolution, for multisampled inputs (it reads one sample, so no later pass
@@ -89,7 +99,7 @@ void plan_sampling(Builder& b, const ssao_settings& s, const AnalysedInputs& in,
     ao.inputs[SSAO_UNIT_NORMAL] = grid ? grid_tex : TexRef::of(Source::normal);
     ao.inputs[SSAO_UNIT_NOISE] = TexRef::of(Source::noise);
     ao.scale = scale;
-    ao.variant = grid ? variant::grid_input : 0u;
+    ao.variant = (grid ? variant::grid_input : 0u) | sampling_feature_variant(s, in);
 
     // The blurs read the AO and its view z from the intermediates only.
     TexRef low_ao = ao_target;

@@ -6,11 +6,14 @@
 void main() {
     Surface sf;
     if (!load_surface(sf)) { o_ao = result(1.0, SKY_Z); return; }
+#ifdef SSAO_FADE
+    if (fade_weight(sf.P) >= 1.0) { o_ao = result(1.0, sf.P.z); return; }  // faded out: nothing to sample
+#endif
     vec3 P = sf.P, n = sf.n;
     mat3 TBN = sf.TBN;
     bool ortho = sf.ortho;
 
-    float radius = u_ao.x;
+    float radius = sf.radius;  // the kernel scales with the per-pixel radius (RADIUS_PIXELS)
     float step_p = sf.step;
     float occlusion = 0.0;
     float valid = 0.0;
@@ -25,7 +28,7 @@ void main() {
         vec4 Qw = view_position_w(spx, sd);
         vec3 Q = Qw.xyz;
         vec3 sn = snap_to_texel_ray(s, n, Q, ortho);
-        float bias = u_ao.y + u_ao.z * (step_p + depth_step(Qw, sd));
+        float bias = u_ao.y * sf.radius_scale + u_ao.z * (step_p + depth_step(Qw, sd));
         // The chapter's range check smoothstep(0, 1, radius / |dz|), which is 1
         // for |dz| <= radius: written so that dz = 0 divides nothing.
         float dz = abs(P.z - Q.z);
@@ -34,5 +37,8 @@ void main() {
     }
     float o = valid > 0.0 ? occlusion / valid : 0.0;
     float ao = pow(clamp(1.0 - u_ao.w * o, 0.0, 1.0), u_ao2.x);
+#ifdef SSAO_FADE
+    ao = apply_fade(ao, P);
+#endif
     o_ao = result(ao, P.z);
 }

@@ -87,7 +87,7 @@ float pixel_hash(uvec2 p, uint seed) {
     return float(w >> 8) * (1.0 / 16777216.0);
 }
 
-vec2 rotation(ivec2 vpx) {
+vec2 fixed_rotation(ivec2 vpx) {
     if (u_modes.y == SSAO_SHADER_ROTATION_NOISE)
         return texelFetch(u_noise_tex, vpx & (SSAO_NOISE_SIZE - 1), 0).xy;  // tiles from the viewport's corner
     if (u_modes.y == SSAO_SHADER_ROTATION_HASH) {
@@ -97,10 +97,23 @@ vec2 rotation(ivec2 vpx) {
     return vec2(1.0, 0.0);
 }
 
+// The per-pixel rotation (cos, sin). Variant FRAME_NOISE (inputs.frame_index
+// != 0): the fixed pattern turned by the frame's R2 offset (u_frame.xy =
+// cos, sin of 2 pi fract(n / g), plugin/kernel.cpp frame_noise_offsets), so
+// each pixel's rotation walks a low-discrepancy sequence over the frames;
+// without rotation (NONE) the whole kernel turns per frame.
+vec2 rotation(ivec2 vpx) {
+    vec2 r = fixed_rotation(vpx);
+#ifdef SSAO_FRAME_NOISE
+    r = vec2(r.x * u_frame.x - r.y * u_frame.y, r.x * u_frame.y + r.y * u_frame.x);
+#endif
+    return r;
+}
+
 // Per-pixel offset in (0,1) of the visibility method's steps along each
 // direction; plugin/kernel.cpp step_jitter() computes the same. The 4x4 noise
 // gets an ordered (Bayer) pattern, so the 4x4 box blur averages 16 offsets.
-float step_jitter(ivec2 vpx) {
+float fixed_step_jitter(ivec2 vpx) {
     if (u_modes.y == SSAO_SHADER_ROTATION_NOISE) {
         const int bayer[16] = int[16](0, 8, 2, 10, 12, 4, 14, 6, 3, 11, 1, 9, 15, 7, 13, 5);
         ivec2 t = vpx & 3;
@@ -109,6 +122,16 @@ float step_jitter(ivec2 vpx) {
     if (u_modes.y == SSAO_SHADER_ROTATION_HASH)
         return pixel_hash(uvec2(vpx.yx), uint(u_counts.y) ^ 0x5bd1e995u) * 0.9999 + 0.00005;
     return 0.5;
+}
+
+// The step jitter; variant FRAME_NOISE adds the frame's second R2 offset
+// (u_frame.z = fract(n / g^2)) mod 1.
+float step_jitter(ivec2 vpx) {
+#ifdef SSAO_FRAME_NOISE
+    return fract(fixed_step_jitter(vpx) + u_frame.z);
+#else
+    return fixed_step_jitter(vpx);
+#endif
 }
 
 // Snap: the point on the ray through the fetched texel's centre (view position
@@ -135,7 +158,38 @@ struct Surface {
     mat3 TBN;     // tangent frame around n, rotated per pixel
     float step;   // view-z change of one depth-format step at P
     bool ortho;
+    float radius;        // sampling radius at P (view units): u_ao.x, or from radius_pixels
+    float radius_scale;  // radius / u_ao.x: bias and thickness scale with it (1 without RADIUS_PIXELS)
 };
+
+#ifdef SSAO_RADIUS_PIXELS
+// View-space size of one viewport pixel at the point Pw (view_position_w:
+// xyz the position, w the reconstruction's homogeneous w): how far the
+// reconstructed position moves per NDC unit along x and along y at the same
+// depth value (d/dndc of inv_proj * ndc / w, analytic), times one pixel's
+// NDC extent (2 / viewport size); the geometric mean of the two. Pixels are
+// the viewport's, also on a half or quarter resolution grid. From the
+// inverse projection, so orthographic (constant size) and off-centre
+// frusta come out right.
+float pixel_size_at(vec4 Pw) {
+    vec3 dx = (u_inv_proj[0].xyz - Pw.xyz * u_inv_proj[0].w) / Pw.w;
+    vec3 dy = (u_inv_proj[1].xyz - Pw.xyz * u_inv_proj[1].w) / Pw.w;
+    return sqrt(length(dx) * (2.0 / float(u_viewport.z)) * length(dy) * (2.0 / float(u_viewport.w)));
+}
+#endif
+
+#ifdef SSAO_FADE
+// Distance fade (settings fade_start = u_fade.x, fade_end = u_fade.y): the
+// weight of "no occlusion" at view-space P, linear in view depth -P.z (the
+// distance along the view axis): 0 up to fade_start, 1 from fade_end on.
+float fade_weight(vec3 P) { return clamp((-P.z - u_fade.x) / (u_fade.y - u_fade.x), 0.0, 1.0); }
+
+// AO blended towards 1 by the fade weight; exactly `ao` before fade_start.
+float apply_fade(float ao, vec3 P) {
+    float f = fade_weight(P);
+    return f > 0.0 ? mix(ao, 1.0, f) : ao;
+}
+#endif
 
 // Fills `sf` for this fragment; false for sky and for depths whose position
 // is not finite (they get AO 1).
@@ -155,6 +209,15 @@ bool load_surface(out Surface sf) {
     vec3 T = r.x * b1 + r.y * b2;
     sf.TBN = mat3(T, cross(sf.n, T), sf.n);
     sf.step = depth_step(Pw, d);
+    sf.radius = u_ao.x;
+    sf.radius_scale = 1.0;
+#ifdef SSAO_RADIUS_PIXELS
+    // radius_pixels (u_fade.z) pixels at this depth, at most `radius`; a
+    // degenerate size (NaN) keeps `radius`.
+    float pixels = u_fade.z * pixel_size_at(Pw);
+    sf.radius = pixels < u_ao.x ? pixels : u_ao.x;
+    sf.radius_scale = sf.radius / u_ao.x;
+#endif
     return true;
 }
 

@@ -67,6 +67,10 @@ SSAO_BLOCK(SsaoFrame) {
     SSAO_VEC4 u_ao2;           /* power, blur sigma, blur depth tolerance, ndc-per-depth (1 or 2) */
     SSAO_VEC4 u_depth;         /* far-plane depth value (sky), depth step of a unorm format (0 = float), reverse-Z, orthographic */
     SSAO_VEC4 u_march;         /* visibility: thickness (view units), 0, 0, 0 */
+    SSAO_VEC4 u_fade;          /* (1.2) fade_start, fade_end (view depth), radius_pixels, 0: read only by
+                                  the variants FADE and RADIUS_PIXELS */
+    SSAO_VEC4 u_frame;         /* (1.2) variant FRAME_NOISE: cos and sin of frame_index's rotation offset,
+                                  its step-jitter offset in [0,1), 0 */
 }
 SSAO_BLOCK_END
 

@@ -41,9 +41,12 @@ float surface_in_front(vec3 s, vec3 Q, ivec2 spx, Surface sf) {
 void main() {
     Surface sf;
     if (!load_surface(sf)) { o_ao = result(1.0, SKY_Z); return; }
+#ifdef SSAO_FADE
+    if (fade_weight(sf.P) >= 1.0) { o_ao = result(1.0, sf.P.z); return; }  // faded out: nothing to march
+#endif
 
-    float radius = u_ao.x;
-    float thickness = u_march.x;
+    float radius = sf.radius;  // the step length scales with the per-pixel radius (RADIUS_PIXELS)
+    float thickness = u_march.x * sf.radius_scale;
     int steps = u_method.y;
     float jitter = step_jitter(sf.vpx);
     int count = u_counts.x;
@@ -63,7 +66,7 @@ void main() {
             float sd = fetch_depth(spx);
             if (is_sky(sd)) continue;                       // the sky blocks nothing
             vec4 Qw = view_position_w(spx, sd);
-            float bias = u_ao.y + u_ao.z * (sf.step + depth_step(Qw, sd));
+            float bias = u_ao.y * sf.radius_scale + u_ao.z * (sf.step + depth_step(Qw, sd));
             float in_front = surface_in_front(s, Qw.xyz, spx, sf);  // > 0: the surface hides the step
             blocked = in_front >= bias && in_front <= thickness;
         }
@@ -71,5 +74,8 @@ void main() {
     }
     float occlusion = 1.0 - open / float(count);
     float ao = pow(clamp(1.0 - u_ao.w * occlusion, 0.0, 1.0), u_ao2.x);
+#ifdef SSAO_FADE
+    ao = apply_fade(ao, sf.P);
+#endif
     o_ao = result(ao, sf.P.z);
 }

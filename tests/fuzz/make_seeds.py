@@ -64,6 +64,8 @@ def scenes():
     write("scene", "triangle.glb", glb(doc_b, data_b))
     doc, _ = gltf(pos, triangle_bin((0, 1, 2, 1))[1], mode=5, extras={"ssao": {"radius": 0.3, "blur": "box"}})
     write("scene", "strip-hints.gltf", json.dumps(doc))
+    doc, _ = gltf(pos, idx, extras={"ssao": {"fade_start": 2.5, "fade_end": 1e39, "radius_pixels": -1}})
+    write("scene", "fade-hints.gltf", json.dumps(doc))
     nodes = [{"mesh": 0, "translation": [i, 0, 0]} for i in range(8)]
     doc, data = gltf(pos, idx, uri=False, nodes=nodes)
     write("scene", "repeated.glb", glb(doc, data))
@@ -124,6 +126,8 @@ def flags():
         "ortho": ["--ortho", "2", "--blur", "gaussian", "--radius", "0.5"],
         "bad": ["--width", "abc", "--eye", "1,2", "--bogus"],
         "help": ["--help"],
+        "fade-taa": ["--fade-start", "2", "--fade-end=9", "--radius-pixels", "12", "--frame-index", "4294967295",
+                     "--accumulate", "16"],
     }
     for name, args in seeds.items():
         write("flags", name, "h" + "\0".join(args))

@@ -1,0 +1,123 @@
+// test_plan_fade.cpp - issue 12 features 4 and 5 in the frame plan (no GL):
+// the sampling pass gets the FADE, RADIUS_PIXELS and FRAME_NOISE variant bits
+// only when asked for (fade_end > 0, radius_pixels > 0, frame_index != 0),
+// no other pass ever does and no pass is added, so a frame without them runs
+// exactly today's programs; and frame_noise_offsets walks the R2 sequence.
+#include "kernel.h"
+#include "plan.h"
+#include "settings.h"
+
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <string>
+
+using namespace ssao_impl;
+
+namespace {
+
+constexpr uint32_t kFeatureBits = variant::fade | variant::radius_pixels | variant::frame_noise;
+
+ssao_settings resolved(float fade_start, float fade_end, float radius_pixels, ssao_resolution res) {
+    ssao_settings in{};
+    in.size = sizeof in;
+    in.resolution = res;
+    in.fade_start = fade_start;
+    in.fade_end = fade_end;
+    in.radius_pixels = radius_pixels;
+    ssao_settings out{};
+    out.size = sizeof out;
+    std::string why;
+    REQUIRE(resolve_settings(in, out, why) == SSAO_OK);
+    return out;
+}
+
+AnalysedInputs inputs(uint32_t frame_index) {
+    AnalysedInputs in;
+    in.texture_width = 64;
+    in.texture_height = 48;
+    in.viewport[2] = 64;
+    in.viewport[3] = 48;
+    in.depth.bits = 32;
+    in.depth.is_float = true;
+    in.frame_index = frame_index;
+    return in;
+}
+
+// The feature bits of the plan's passes: the sampling pass's, and those of all others.
+struct Bits {
+    uint32_t ao = 0, others = 0;
+    int passes = 0;
+};
+Bits bits_of(const FramePlan& p) {
+    Bits b;
+    b.passes = p.pass_count;
+    for (int i = 0; i < p.pass_count; ++i)
+        (p.passes[i].kind == PassKind::ao ? b.ao : b.others) |= p.passes[i].variant & kFeatureBits;
+    return b;
+}
+
+}  // namespace
+
+TEST_CASE("plan: fade, radius in pixels and frame noise are sampling-pass variants, set only when asked for") {
+    for (ssao_resolution res : {SSAO_RESOLUTION_FULL, SSAO_RESOLUTION_HALF, SSAO_RESOLUTION_QUARTER}) {
+        CAPTURE(res);
+        const Bits off = bits_of(plan_frame(resolved(0, 0, 0, res), inputs(0)));
+        CHECK(off.ao == 0u);
+        CHECK(off.others == 0u);
+        const Bits fade = bits_of(plan_frame(resolved(10, 20, 0, res), inputs(0)));
+        CHECK(fade.ao == variant::fade);
+        const Bits from_camera = bits_of(plan_frame(resolved(0, 20, 0, res), inputs(0)));
+        CHECK(from_camera.ao == variant::fade);
+        const Bits px = bits_of(plan_frame(resolved(0, 0, 24, res), inputs(0)));
+        CHECK(px.ao == variant::radius_pixels);
+        const Bits noise = bits_of(plan_frame(resolved(0, 0, 0, res), inputs(7)));
+        CHECK(noise.ao == variant::frame_noise);
+        const Bits all = bits_of(plan_frame(resolved(1, 2, 3, res), inputs(0xffffffffu)));
+        CHECK(all.ao == kFeatureBits);
+        for (const Bits& b : {fade, from_camera, px, noise, all}) {
+            CHECK(b.others == 0u);         // no other pass compiles a variant for them
+            CHECK(b.passes == off.passes);  // and none is added
+        }
+    }
+    // Strength 0 samples nothing: no sampling pass, no variant.
+    ssao_settings zero = resolved(1, 2, 3, SSAO_RESOLUTION_FULL);
+    zero.strength = SSAO_STRENGTH_OFF;
+    const Bits cleared = bits_of(plan_frame(zero, inputs(5)));
+    CHECK(cleared.ao == 0u);
+    CHECK(cleared.others == 0u);
+}
+
+TEST_CASE("frame noise offsets: frame 0 is no offset, frame n is fract(n / g, n / g^2) of the R2 sequence, evenly spread") {
+    CHECK(frame_noise_offsets(0) == glm::dvec2(0.0));
+    const double a1 = 0.7548776662466927, a2 = 0.5698402909980532;  // 1/g, 1/g^2, g = 1.3247179572...
+    for (uint32_t n : {1u, 2u, 3u, 100u, 65536u}) {
+        CAPTURE(n);
+        const glm::dvec2 o = frame_noise_offsets(n);
+        // 32-bit fixed point: off by at most n * 2^-33 from the real sequence.
+        const double tol = (n + 1.0) * std::ldexp(1.0, -32);
+        CHECK(std::abs(o.x - (n * a1 - std::floor(n * a1))) <= tol);
+        CHECK(std::abs(o.y - (n * a2 - std::floor(n * a2))) <= tol);
+    }
+    // Any 16 consecutive frames (also across the uint32 wrap) put 2..6 of
+    // their 16 offsets in each quarter of [0,1), per coordinate (ideal: 4).
+    for (uint32_t first : {1u, 17u, 12345u, 4294967290u}) {
+        CAPTURE(first);
+        int x[4] = {0, 0, 0, 0}, y[4] = {0, 0, 0, 0};
+        for (uint32_t k = 0; k < 16; ++k) {
+            const glm::dvec2 o = frame_noise_offsets(first + k);
+            REQUIRE(o.x >= 0.0);
+            REQUIRE(o.x < 1.0);
+            REQUIRE(o.y >= 0.0);
+            REQUIRE(o.y < 1.0);
+            ++x[int(o.x * 4)];
+            ++y[int(o.y * 4)];
+        }
+        for (int q = 0; q < 4; ++q) {
+            CHECK(x[q] >= 2);
+            CHECK(x[q] <= 6);
+            CHECK(y[q] >= 2);
+            CHECK(y[q] <= 6);
+        }
+    }
+}
