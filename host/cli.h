@@ -56,6 +56,9 @@ struct Options {
     std::optional<ssao_method> method;
     std::optional<float> thickness;  // visibility: view units
     std::optional<int> steps;        // visibility: steps per direction
+    // --debug-view: what the extra execute writes into debug_view.png (none:
+    // no extra execute, no file). Names: debug_view_text.h.
+    ssao_debug_view debug_view = SSAO_DEBUG_VIEW_NONE;
 };
 
 enum class ParseResult { Run, Help, Version, Error };
