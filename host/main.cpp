@@ -345,6 +345,10 @@ int run(const cli::Options& o) {
             debug_output.size = sizeof debug_output;
             st = api.execute(plugin.ctx, &inputs, &debug_output);
             if (st != SSAO_OK) throw RunError("the SSAO plugin failed in the debug view: " + plugin.error(st));
+            // Finished before the read-back, as the frames above are: without
+            // it Mesa 22.3's llvmpipe now and then returned the texture's
+            // previous contents after a clear pass (blur-weights without a blur).
+            gl.Finish();
             debug_channels = debug_view_text::is_rgb(o.debug_view) ? 3 : 1;
             debug_png = to_bytes(read_ao(gl, debug_output, W, H, debug_channels));
         }
