@@ -181,6 +181,10 @@ TEST_CASE("--debug-view: an unknown name is a usage error (exit 2, one line nami
         const std::string dir = fresh_dir("bad");
         const Run r = run_host({"--out", dir, "--width", "32", "--height", "32", "--debug-view", bad});
         CHECK(r.exit_code == 2);
+        int own_lines = 0;  // one line of ssao-host's own (drivers may add theirs)
+        std::istringstream lines(r.err);
+        for (std::string line; std::getline(lines, line);) own_lines += line.rfind("ssao-host", 0) == 0;
+        CHECK(own_lines == 1);
         CHECK(r.err.find("--debug-view") != std::string::npos);
         CHECK(r.err.find(debug_view_text::choices()) != std::string::npos);
         CHECK(fs::is_empty(dir));  // nothing written
