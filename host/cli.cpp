@@ -1,5 +1,6 @@
 #include "cli.h"
 
+#include "debug_view_text.h"
 #include "preset_text.h"
 
 #include "camera.h"
@@ -172,6 +173,11 @@ ParseResult parse(int argc, const char* const* argv, Options& o, std::string& er
         {"--accumulate", [&](const std::string& f, const std::string& v) {
              o.accumulate = static_cast<int>(flags::integer(f, v, 1, 1024));
          }},
+        {"--debug-view", [&](const std::string& f, const std::string& v) {
+             const auto view = debug_view_text::parse(v);
+             if (!view) fail(f + " expects one of " + debug_view_text::choices() + ", got " + quoted(v));
+             o.debug_view = *view;
+         }},
     };
     // Flags without a value.
     const flags::Switches switches = {
@@ -287,6 +293,9 @@ std::string help_text(const ssao_settings* d, const std::string& default_scene, 
          "                          and jitter move with it for a TAA host (default 0)\n"
          "  --accumulate K          ao.png/ao.exr = the mean AO of frame indices N..N+K-1 (what a TAA host\n"
          "                          converges to), 1..1024; the lit pictures use frame N (default 1)\n"
+         "  --debug-view " << debug_view_text::choices() << "\n"
+         "                          one more execute with this debug view, written to debug_view.png (normal\n"
+         "                          views: RGB, n*0.5+0.5; raw-ao, blur-weights: grey) (default none)\n"
          "\n"
          "Files written to the output directory (all or none: written to temporary names, renamed at the end)\n"
          "  ao.png ao.exr           ambient occlusion (EXR: one float channel Y, 1 = unoccluded)\n"
@@ -294,6 +303,7 @@ std::string help_text(const ssao_settings* d, const std::string& default_scene, 
          "  normals.png             view-space normals as n*0.5+0.5\n"
          "  depth.png               linear view depth, nearest surface black, farthest white, sky white\n"
          "  view_depth.exr          view distance along -z (one float channel Y); sky = +inf\n"
+         "  debug_view.png          with --debug-view (not none): what that view writes\n"
          "  modes.png               panels left to right: E no SSAO, R no rotation, T noise rotation,\n"
          "                          Y accelerating distribution, U hemisphere kernel (each lit with its AO)\n"
          "\n"

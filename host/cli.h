@@ -63,6 +63,9 @@ struct Options {
     // how many consecutive frame indices ao.png/ao.exr average (1 = none).
     uint32_t frame_index = 0;
     int accumulate = 1;
+    // --debug-view: what the extra execute writes into debug_view.png (none:
+    // no extra execute, no file). Names: debug_view_text.h.
+    ssao_debug_view debug_view = SSAO_DEBUG_VIEW_NONE;
 };
 
 enum class ParseResult { Run, Help, Version, Error };

@@ -4,6 +4,7 @@
 #include "camera.h"
 #include "cli.h"
 #include "composite.h"
+#include "debug_view_text.h"
 #include "egl_context.h"
 #include "gbuffer.h"
 #include "gl_util.h"
@@ -80,13 +81,15 @@ void SSAO_CALL plugin_log(void* user, ssao_log_level level, const char* message)
     std::printf("  plugin %s: %s\n", level == SSAO_LOG_WARNING ? "warning" : "info", message ? message : "");
 }
 
-// Reads the plugin's AO (viewport-sized at output.origin), top row first.
-std::vector<float> read_ao(GladGLContext& gl, const ssao_output& out, int w, int h) {
-    std::vector<float> bottom_up = gl_util::read_texture(gl, out.texture, out.origin[0], out.origin[1], w, h, 1);
+// Reads the plugin's output (viewport-sized at output.origin), `components`
+// channels (1: the AO; 3: a normal debug view's RGB), top row first.
+std::vector<float> read_ao(GladGLContext& gl, const ssao_output& out, int w, int h, int components = 1) {
+    std::vector<float> bottom_up =
+        gl_util::read_texture(gl, out.texture, out.origin[0], out.origin[1], w, h, components);
     std::vector<float> top_down(bottom_up.size());
+    const ptrdiff_t row = static_cast<ptrdiff_t>(w) * components;
     for (int y = 0; y < h; ++y)
-        std::copy_n(bottom_up.begin() + static_cast<ptrdiff_t>(y) * w, w,
-                    top_down.begin() + static_cast<ptrdiff_t>(h - 1 - y) * w);
+        std::copy_n(bottom_up.begin() + y * row, row, top_down.begin() + (h - 1 - y) * row);
     return top_down;
 }
 
@@ -217,7 +220,8 @@ int run(const cli::Options& o) {
 
     // Everything rendered is kept in memory and written at the end.
     std::vector<float> ao, view_depth;
-    std::vector<uint8_t> lit_ao, lit_no_ao, normals_png, depth_png, modes_png;
+    std::vector<uint8_t> lit_ao, lit_no_ao, normals_png, depth_png, modes_png, debug_png;
+    int debug_channels = 1;
     ssao_timings timings{};
     timings.size = sizeof timings;
     ssao_frame_info info{};
@@ -354,6 +358,24 @@ int run(const cli::Options& o) {
                 if (std::isfinite(view_depth[i]))
                     depth_png[i] = static_cast<uint8_t>(std::lround(std::clamp((view_depth[i] - zmin) / span, 0.0, 1.0) * 255.0));
         }
+        if (o.debug_view != SSAO_DEBUG_VIEW_NONE) {
+            // One more execute with the debug view (last: it overwrites the
+            // plugin's own output texture, which the pictures above read).
+            ssao_settings ds = settings;
+            ds.debug_view = o.debug_view;
+            st = api.set_settings(plugin.ctx, &ds);
+            if (st != SSAO_OK) throw RunError("the SSAO plugin refused the debug view: " + plugin.error(st));
+            ssao_output debug_output{};
+            debug_output.size = sizeof debug_output;
+            st = api.execute(plugin.ctx, &inputs, &debug_output);
+            if (st != SSAO_OK) throw RunError("the SSAO plugin failed in the debug view: " + plugin.error(st));
+            // Finished before the read-back, as the frames above are: without
+            // it Mesa 22.3's llvmpipe now and then returned the texture's
+            // previous contents after a clear pass (blur-weights without a blur).
+            gl.Finish();
+            debug_channels = debug_view_text::is_rgb(o.debug_view) ? 3 : 1;
+            debug_png = to_bytes(read_ao(gl, debug_output, W, H, debug_channels));
+        }
         gl_util::check(gl, "the read-back");
     }
 
@@ -369,6 +391,7 @@ int run(const cli::Options& o) {
         files.exr("view_depth.exr", W, H, view_depth);
     }
     if (sheet) files.png("modes.png", W * 5, H, 3, modes_png);
+    if (!debug_png.empty()) files.png("debug_view.png", W, H, debug_channels, debug_png);
     files.commit();
 
     // The report.
@@ -411,6 +434,8 @@ int run(const cli::Options& o) {
                 info.depth_bits == 32 ? "32-bit float" : (std::to_string(info.depth_bits) + "-bit").c_str(),
                 info.reverse_z ? ", reverse-Z" : "", info.infinite_far ? ", infinite far" : "",
                 fmt(info.near_distance).c_str(), std::isinf(info.far_distance) ? "inf" : fmt(info.far_distance).c_str());
+    if (o.debug_view != SSAO_DEBUG_VIEW_NONE)
+        std::printf("  debug view: %s (one more execute, debug_view.png)\n", debug_view_text::name(o.debug_view));
     if (timings.available)
         std::printf("  GPU times (frame %llu of %d): ao %.3f ms, blur %.3f ms, total %.3f ms\n",
                     static_cast<unsigned long long>(timings.frame), o.frames, timings.ao_ms, timings.blur_ms,

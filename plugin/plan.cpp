@@ -132,6 +132,35 @@ void plan_sampling(Builder& b, const ssao_settings& s, const AnalysedInputs& in,
     up.variant = host_input_variant(in);
 }
 
+// Debug views RAW_AO and BLUR_WEIGHTS (settings.debug_view): the same passes
+// as the AO, with the last one writing what the view shows. Returns false for
+// the views this function does not plan. The upsample below full resolution
+// takes each pixel's own grid texel (variant UPSAMPLE_NEAREST): the view shows
+// what the grid holds, not what depth weights make of it.
+//   RAW_AO: planned as blur NONE, so at full resolution it is exactly the
+//     output with blur NONE.
+//   BLUR_WEIGHTS: the blurs run as variant BLUR_WEIGHTS and write the share
+//     of their gaussian weight that passed the depth test (blur.frag); with
+//     blur NONE there is nothing to weigh and the output is cleared to 1.
+bool plan_ao_debug_view(Builder& b, const ssao_settings& s, const AnalysedInputs& in, const TexRef& output,
+                        const Rect& final_rect, FramePlan& plan) {
+    const bool raw = s.debug_view == SSAO_DEBUG_VIEW_RAW_AO;
+    if (!raw && s.debug_view != SSAO_DEBUG_VIEW_BLUR_WEIGHTS) return false;
+    if (!raw && s.blur == SSAO_BLUR_NONE) {
+        b.add(PassKind::clear, ProgramId::none, output, final_rect);
+        return true;
+    }
+    ssao_settings planned = s;
+    if (raw) planned.blur = SSAO_BLUR_NONE;
+    plan_sampling(b, planned, in, output, final_rect);
+    for (int i = 0; i < plan.pass_count; ++i) {
+        Pass& p = plan.passes[i];
+        if (p.kind == PassKind::upsample) p.variant |= variant::upsample_nearest;
+        if (p.kind == PassKind::blur_x || p.kind == PassKind::blur_y) p.variant |= variant::blur_weights;
+    }
+    return true;
+}
+
 }  // namespace
 
 uint32_t FramePlan::passes_run() const {
@@ -160,6 +189,7 @@ FramePlan plan_frame(const ssao_settings& s, const AnalysedInputs& in) {
         b.add(PassKind::clear, ProgramId::none, output, final_rect);
         return plan;
     }
+    if (plan_ao_debug_view(b, s, in, output, final_rect, plan)) return plan;
     plan_sampling(b, s, in, output, final_rect);
     return plan;
 }

@@ -73,7 +73,9 @@ constexpr uint32_t fade = 1u << 3;                // FADE: AO fades to 1 between
 constexpr uint32_t radius_pixels = 1u << 4;       // RADIUS_PIXELS: per-pixel radius from radius_pixels
 constexpr uint32_t frame_noise = 1u << 5;         // FRAME_NOISE: rotation and jitter move with frame_index
 constexpr uint32_t blur_weights = 1u << 6;        // BLUR_WEIGHTS: the blur writes its accepted weight share
-constexpr int kBits = 7;
+constexpr uint32_t upsample_nearest = 1u << 7;    // UPSAMPLE_NEAREST: the upsample takes the pixel's own grid texel,
+                                                  // no depth weights (debug views RAW_AO and BLUR_WEIGHTS)
+constexpr int kBits = 8;
 }  // namespace variant
 
 // Formats of the textures the plan renders into.

@@ -3,6 +3,15 @@
 // from the centre's by more than the tolerance get no weight, so occlusion is
 // not carried across silhouettes; sky taps never count). The view depth comes
 // with the AO from the previous pass; the depth texture is not read.
+//
+// Variant BLUR_WEIGHTS (debug view SSAO_DEBUG_VIEW_BLUR_WEIGHTS) writes, in
+// place of the blurred AO, the share of the pass's gaussian (box: uniform)
+// weight that the depth test let through: sum(w * depth weight) / sum(w) over
+// the taps the blur uses. Sky taps and taps beyond the border take no part in
+// either sum (every blur skips them, depth test or not), so a blur that
+// ignores depth gives exactly 1. The vertical pass of a separable blur reads
+// the horizontal pass's share at its centre and multiplies it in: the view is
+// the product of both passes' shares at the pixel.
 
 uniform sampler2D u_ao_tex;     // RG32F (ao, view z), viewport- (or grid-) sized, texel (0,0) = viewport pixel (0,0)
 uniform ivec2 u_blur_dir;       // (1,0) or (0,1); unused by the box
@@ -31,6 +40,9 @@ void main() {
         // Depth-aware below full resolution: taps weighted as the
         // depth-aware gaussian weighs them (the centre always counts).
         float sum = 0.0, count = 0.0;
+#ifdef SSAO_BLUR_WEIGHTS
+        float taps = 0.0;
+#endif
         for (int y = -2; y < 2; ++y)
             for (int x = -2; x < 2; ++x) {
                 vec2 tap = texelFetch(u_ao_tex, clamp(vpx + ivec2(x, y), ivec2(0), size - 1), 0).rg;
@@ -38,13 +50,23 @@ void main() {
                 float w = u_depth_aware ? clamp(1.0 - abs(tap.g - z0) / tolerance, 0.0, 1.0) : 1.0;
                 sum += tap.r * w;
                 count += w;
+#ifdef SSAO_BLUR_WEIGHTS
+                taps += 1.0;
+#endif
             }
+#ifdef SSAO_BLUR_WEIGHTS
+        o_ao = result(count / taps, z0);
+#else
         o_ao = result(sum / count, z0);
+#endif
         return;
     }
     bool aware = kind == SSAO_SHADER_BLUR_DEPTH_AWARE || u_depth_aware;
     float inv2s2 = 0.5 / (u_ao2.y * u_ao2.y);
     float sum = centre, weight = 1.0;
+#ifdef SSAO_BLUR_WEIGHTS
+    float gaussian = 1.0;  // the centre's weight, never rejected
+#endif
     for (int k = -u_counts.z; k <= u_counts.z; ++k) {
         if (k == 0) continue;
         ivec2 t = vpx + u_blur_dir * k;
@@ -52,9 +74,18 @@ void main() {
         float w = exp(-float(k * k) * inv2s2);
         vec2 tap = texelFetch(u_ao_tex, t, 0).rg;
         if (tap.g == SKY_Z) continue;
+#ifdef SSAO_BLUR_WEIGHTS
+        gaussian += w;
+#endif
         if (aware) w *= clamp(1.0 - abs(tap.g - z0) / tolerance, 0.0, 1.0);
         sum += tap.r * w;
         weight += w;
     }
+#ifdef SSAO_BLUR_WEIGHTS
+    // Same taps summed in the same order: exactly 1 when nothing was rejected.
+    float before = u_blur_dir.y != 0 ? centre : 1.0;  // the horizontal pass's share
+    o_ao = result(weight / gaussian * before, z0);
+#else
     o_ao = result(sum / weight, z0);
+#endif
 }

@@ -6,20 +6,17 @@
 // gets no weight, so AO is never carried across a silhouette. When no tap is
 // within the tolerance (a feature thinner than a block), the tap nearest in
 // depth is taken. Sky pixels are exactly 1.
+//
+// Variant UPSAMPLE_NEAREST (debug views RAW_AO and BLUR_WEIGHTS): a pixel
+// takes the value of its own block's grid texel, no depth weights, so the
+// view shows what the grid holds.
 
 uniform sampler2D u_ao_tex;  // the grid's RG32F (ao, view z), sky = SKY_Z
 
 out vec4 o_ao;
 
-void main() {
-    ivec2 p = ivec2(gl_FragCoord.xy) - u_target_origin;
-    float d = input_depth(p);
-    vec3 P = view_position_at(vec2(p) + 0.5, d).xyz;
-    if (is_sky(d) || !(all(lessThan(abs(P), vec3(3.0e38))) && !any(isnan(P)))) {
-        o_ao = vec4(1.0);
-        return;
-    }
-    float z0 = P.z;
+// The depth- and distance-weighted AO of the 3x3 grid texels around pixel p at view z z0.
+float depth_weighted(ivec2 p, float z0) {
     // Floored as in the blur: an orthographic surface may sit at view z = 0.
     float tolerance = max(u_ao2.z * abs(z0), 1e-30);
     float sigma = 0.5 * float(u_scale);
@@ -44,6 +41,21 @@ void main() {
             sum += tap.r * w;
             weight += w;
         }
-    float ao = weight > 0.0 ? sum / weight : nearest;
+    return weight > 0.0 ? sum / weight : nearest;
+}
+
+void main() {
+    ivec2 p = ivec2(gl_FragCoord.xy) - u_target_origin;
+    float d = input_depth(p);
+    vec3 P = view_position_at(vec2(p) + 0.5, d).xyz;
+    if (is_sky(d) || !(all(lessThan(abs(P), vec3(3.0e38))) && !any(isnan(P)))) {
+        o_ao = vec4(1.0);
+        return;
+    }
+#ifdef SSAO_UPSAMPLE_NEAREST
+    float ao = texelFetch(u_ao_tex, p / u_scale, 0).r;
+#else
+    float ao = depth_weighted(p, P.z);
+#endif
     o_ao = vec4(ao, ao, ao, 1.0);
 }

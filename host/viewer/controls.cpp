@@ -1,5 +1,6 @@
 #include "controls.h"
 
+#include "debug_view_text.h"
 #include "modes.h"
 #include "run_setup.h"
 
@@ -38,7 +39,9 @@ void Controls::choose_preset(std::optional<ssao_preset> p) {
     cli::Options o = base_;
     o.preset = p;
     std::string radius_note;
+    const ssao_debug_view debug_view = state_.settings.debug_view;  // X's choice outlives a preset key
     state_.settings = run_setup::build_settings(api_, o, scene_, radius_note);
+    state_.settings.debug_view = debug_view;
     state_.preset = p;
     state_.ssao = true;
     state_.mode = 0;
@@ -73,6 +76,11 @@ void Controls::key(int k, int action) {
             state_.settings.blur = (at == end || at + 1 == end) ? kBlurCycle[0] : at[1];
             break;
         }
+        case GLFW_KEY_X:
+            // The debug views in debug_view_text's order: none -> normals ->
+            // reconstructed normals -> raw AO -> blur weights -> none.
+            state_.settings.debug_view = debug_view_text::next(state_.settings.debug_view);
+            break;
         case GLFW_KEY_V: state_.view = state_.view == View::Lit ? View::AoOnly : View::Lit; break;
         case GLFW_KEY_O: state_.overlay = !state_.overlay; break;
         case GLFW_KEY_F12: screenshot_ = true; break;

@@ -1,6 +1,7 @@
 // controls.h - what the viewer's keys do: the fly camera (WASD QZ, IJKL), the
 // reference demo's modes (E R T Y U), presets (1..4, 0), blur (B), the view
-// (V), the overlay (O), screenshots (F12) and quitting (Esc). No GL here, so
+// (V), the debug views (X: settings.debug_view, shown instead of the picture),
+// the overlay (O), screenshots (F12) and quitting (Esc). No GL here, so
 // it can be tested without a window.
 #pragma once
 
@@ -30,6 +31,9 @@ struct State {
     bool overlay = true;
     std::string notice;                 // one line for the overlay (e.g. a key this plugin cannot serve)
 };
+
+// Whether the frame shows the plugin's debug view (X) instead of the lit or AO picture.
+inline bool debug_view_shown(const State& s) { return s.ssao && s.settings.debug_view != SSAO_DEBUG_VIEW_NONE; }
 
 class Controls {
 public:

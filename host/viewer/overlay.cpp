@@ -1,6 +1,7 @@
 #include "overlay.h"
 
 #include "cli.h"
+#include "debug_view_text.h"
 #include "gl_util.h"
 #include "modes.h"
 
@@ -106,9 +107,13 @@ std::string gpu_line(const ssao_timings& t) {
 std::vector<std::string> overlay_lines(const State& s, const ssao_timings& t, int width, int height) {
     std::vector<std::string> lines;
     const modes::Mode* mode = s.mode ? modes::find(s.mode) : nullptr;
+    // A debug view (X) replaces the picture whichever of V's views is chosen.
+    const std::string view = debug_view_shown(s) ? std::string("debug ") + debug_view_text::name(s.settings.debug_view)
+                             : s.view == View::Lit ? "lit"
+                                                   : "AO only";
     lines.push_back(printf_string("ssao-viewer %dx%d  mode %s  preset %s  view %s", width, height,
                                   mode ? (std::string(1, mode->letter) + " " + mode->name).c_str() : "-",
-                                  preset_name(s.preset), s.view == View::Lit ? "lit" : "AO only"));
+                                  preset_name(s.preset), view.c_str()));
     const ssao_settings& c = s.settings;
     if (!s.ssao) {
         lines.push_back("SSAO off (lit without AO)");
@@ -138,7 +143,7 @@ std::vector<std::string> overlay_lines(const State& s, const ssao_timings& t, in
     }
     if (!s.notice.empty()) lines.push_back(s.notice);
     lines.push_back("WASD QZ move  IJKL turn  ERTYU modes  1-4 presets  0 defaults");
-    lines.push_back("B blur  M estimator  H resolution  V view  O overlay  F12 screenshot  Esc quit");
+    lines.push_back("B blur  M estimator  H resolution  V view  X debug view  O overlay  F12 screenshot  Esc quit");
     return lines;
 }
 

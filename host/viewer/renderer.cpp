@@ -1,5 +1,6 @@
 #include "renderer.h"
 
+#include "debug_view_text.h"
 #include "gl_util.h"
 
 #include <glm/gtc/type_ptr.hpp>
@@ -21,15 +22,17 @@ void main() {
 }
 )glsl";
 
-// The AO texture as grey, pixel for pixel (white without one: mode E).
+// The AO texture as grey, pixel for pixel (white without one: mode E), or a
+// normal debug view's RGB.
 const char* kAoFragment = R"glsl(#version 330 core
 uniform sampler2D u_ao;
 uniform int u_use_ao;
+uniform int u_rgb;
 uniform ivec2 u_ao_origin;
 out vec4 o_color;
 void main() {
-    float ao = u_use_ao == 1 ? texelFetch(u_ao, ivec2(gl_FragCoord.xy) + u_ao_origin, 0).r : 1.0;
-    o_color = vec4(vec3(ao), 1.0);
+    vec3 c = u_use_ao == 1 ? texelFetch(u_ao, ivec2(gl_FragCoord.xy) + u_ao_origin, 0).rgb : vec3(1.0);
+    o_color = vec4(u_rgb == 1 ? c : vec3(c.r), 1.0);
 }
 )glsl";
 
@@ -124,7 +127,7 @@ void Renderer::render(const camera::Camera& camera, const State& state) {
     }
 
     auto& gl = gl_;
-    if (state.view == View::Lit) {
+    if (state.view == View::Lit && !debug_view_shown(state)) {
         const composite::Lighting lighting = composite::default_lighting(scene_.bounds_min, scene_.bounds_max, view);
         compositor_->draw(*gbuffer_, view, projection, ao_texture, ao_origin, lighting);
         gl.BindFramebuffer(GL_READ_FRAMEBUFFER, compositor_->framebuffer());
@@ -142,6 +145,8 @@ void Renderer::render(const camera::Camera& camera, const State& state) {
         gl.BindSampler(0, sampler_);
         gl.Uniform1i(gl.GetUniformLocation(ao_program_, "u_ao"), 0);
         gl.Uniform1i(gl.GetUniformLocation(ao_program_, "u_use_ao"), ao_texture != 0 ? 1 : 0);
+        const bool rgb = debug_view_shown(state) && debug_view_text::is_rgb(state.settings.debug_view);
+        gl.Uniform1i(gl.GetUniformLocation(ao_program_, "u_rgb"), rgb ? 1 : 0);
         gl.Uniform2i(gl.GetUniformLocation(ao_program_, "u_ao_origin"), ao_origin.x, ao_origin.y);
         gl.BindVertexArray(vao_);
         gl.DrawArrays(GL_TRIANGLES, 0, 3);
