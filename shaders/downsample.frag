@@ -19,33 +19,42 @@ bool surface_at(ivec2 q, out float d, out vec3 P) {
 }
 
 // The surface's tangent at p (depth d0, position P0) along axis a, one pixel
-// long, from the side whose pixels continue p's surface best. A plane's
-// stored depth is affine in window coordinates in every convention
-// (perspective: affine in 1/z; orthographic: in z), so the line through a
-// side's two pixels, extrapolated to p, hits d0 exactly when they lie on p's
-// plane: that side's error is the smaller of this miss and the plain depth
-// difference (the latter alone decides a side with one pixel in the
+// long. A plane's stored depth is affine in window coordinates in every
+// convention (perspective: affine in 1/z; orthographic: in z), so the line
+// through a side's two pixels, extrapolated to p, hits d0 exactly when they
+// lie on p's plane: a side's error is the smaller of this miss and the plain
+// depth difference (the latter alone decides a side with one pixel in the
 // viewport, and saves a thin strip whose second pixel is background). The
 // side of the smaller error wins: across a silhouette the miss is the depth
 // jump, at a crease it grows with the other plane's bend, so neither smears
-// into p and a flat surface is never faceted. False: no usable side.
+// into p, and a flat surface is never faceted. When the two sides' errors are
+// within a factor 2 of each other (a smooth surface: both misses are its
+// curvature) the two are averaged, a central difference, whose error on a
+// curved surface is second order instead of first. False: no usable side.
 bool side_tangent(ivec2 p, float d0, vec3 P0, ivec2 a, out vec3 T) {
     T = vec3(0.0);
-    bool found = false;
-    float best = 0.0;
-    for (int s = -1; s <= 1; s += 2) {
+    vec3 t[2];
+    float err[2];
+    bool ok[2];
+    for (int i = 0; i < 2; ++i) {
+        int s = 2 * i - 1;
         float d1, d2;
         vec3 P1, P2;
-        if (!surface_at(p + a * s, d1, P1)) continue;
-        float err = abs(d1 - d0);
-        if (surface_at(p + a * (2 * s), d2, P2)) err = min(err, abs(2.0 * d1 - d2 - d0));
-        if (!found || err < best) {
-            best = err;
-            T = (P1 - P0) * float(s);
-            found = true;
-        }
+        t[i] = vec3(0.0);
+        err[i] = 0.0;
+        ok[i] = surface_at(p + a * s, d1, P1);
+        if (!ok[i]) continue;
+        err[i] = abs(d1 - d0);
+        if (surface_at(p + a * (2 * s), d2, P2)) err[i] = min(err[i], abs(2.0 * d1 - d2 - d0));
+        t[i] = (P1 - P0) * float(s);
     }
-    return found;
+    if (ok[0] && ok[1]) {
+        float lo = min(err[0], err[1]), hi = max(err[0], err[1]);
+        T = hi <= 2.0 * lo ? 0.5 * (t[0] + t[1]) : (err[0] < err[1] ? t[0] : t[1]);
+        return true;
+    }
+    T = ok[0] ? t[0] : t[1];
+    return ok[0] || ok[1];
 }
 
 // The unit view-space normal at viewport pixel p (a surface at P0), turned
