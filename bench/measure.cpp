@@ -180,7 +180,7 @@ void measure_scene(const std::string& path, const Options& o, int scale, const s
     ssao_inputs in{};
     in.size = sizeof in;
     in.depth_texture = gbuf.depth_texture();
-    in.normal_texture = gbuf.normal_texture();
+    in.normal_texture = o.normals_from_depth ? 0u : gbuf.normal_texture();
     in.normal_space = SSAO_NORMAL_SPACE_VIEW;
     in.normal_packing = SSAO_NORMAL_PACKING_SIGNED;
     for (int c = 0; c < 4; ++c)

@@ -23,6 +23,8 @@ std::string help_text() {
            "  --out DIR              where results go (default bench-out)\n"
            "  --quick                fewer frames, rays and directions, base size only\n"
            "  --plugin PATH          libssao.so to load (default: as ssao-host finds it)\n"
+           "  --normals gbuffer|depth  the plugin's normals: the G-buffer's, or depth: normal_texture = 0, the\n"
+           "                         plugin rebuilds them from depth (default gbuffer)\n"
            "  --help, -h / --version this text / the version\n"
            "Scenes default to the bundled spot and teapot models and scenes/corner.gltf.\n";
 }
@@ -68,6 +70,10 @@ Parse parse(int argc, char** argv, Options& o, std::string& error) {
         {"--plugin", [&](const std::string& f, const std::string& v) {
              if (v.empty()) flags::fail(f + " expects a path to libssao.so");
              o.plugin = v;
+         }},
+        {"--normals", [&](const std::string& f, const std::string& v) {
+             if (v != "gbuffer" && v != "depth") flags::fail(f + " expects one of gbuffer|depth, got " + flags::quoted(v));
+             o.normals_from_depth = v == "depth";
          }},
     };
     const flags::Switches switches = {

@@ -15,6 +15,7 @@ struct Options {
     int limit_directions = 0;                // 0: depth_limit's default
     std::string out = "bench-out";
     std::string plugin;                      // empty: plugin::Library::search_order()
+    bool normals_from_depth = false;         // --normals depth: every configuration gets normal_texture = 0
 };
 
 enum class Parse { Run, Help, Version, Error };

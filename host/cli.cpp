@@ -121,7 +121,12 @@ ParseResult parse(int argc, const char* const* argv, Options& o, std::string& er
          }},
         {"--depth", [&](const std::string& f, const std::string& v) { o.depth_format = parse_choice(f, v, kDepths); }},
         {"--normals", [&](const std::string& f, const std::string& v) {
-             o.normal_space = parse_choice<NormalSpace>(f, v, {{"view", NormalSpace::View}, {"world", NormalSpace::World}});
+             // depth: the plugin gets no normal texture and rebuilds normals
+             // from depth; the G-buffer still stores view-space normals for
+             // the lighting and normals.png.
+             const int c = parse_choice<int>(f, v, {{"view", 0}, {"world", 1}, {"depth", 2}});
+             o.normal_space = c == 1 ? NormalSpace::World : NormalSpace::View;
+             o.normals_from_depth = c == 2;
          }},
         {"--normal-format", [&](const std::string& f, const std::string& v) {
              o.normal_format = parse_choice<NormalFormat>(f, v, {{"rgba16f", NormalFormat::RGBA16F}, {"rgba8", NormalFormat::RGBA8}});
@@ -246,7 +251,8 @@ std::string help_text(const ssao_settings* d, const std::string& default_scene, 
          "  --depth d16|d24|d32f    depth buffer format (default d32f)\n"
          "\n"
          "G-buffer\n"
-         "  --normals view|world    space of the stored normals (default view)\n"
+         "  --normals view|world|depth  space of the stored normals handed to the plugin, or depth: no normal\n"
+         "                          texture, the plugin rebuilds normals from depth (default view)\n"
          "  --normal-format rgba16f|rgba8   rgba16f stores signed normals, rgba8 n*0.5+0.5 (default rgba16f)\n"
          "\n"
          "SSAO settings (precedence: flags > scene hints (glTF extras \"ssao\") > --preset > plugin defaults)\n"

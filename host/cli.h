@@ -36,6 +36,7 @@ struct Options {
     // G-buffer.
     NormalSpace normal_space = NormalSpace::View;
     NormalFormat normal_format = NormalFormat::RGBA16F;
+    bool normals_from_depth = false;  // --normals depth: the plugin gets normal_texture = 0
 
     // Which outputs.
     bool only_ao = false;

@@ -258,7 +258,7 @@ int run(const cli::Options& o) {
         ssao_inputs inputs{};
         inputs.size = sizeof inputs;
         inputs.depth_texture = gbuf.depth_texture();
-        inputs.normal_texture = gbuf.normal_texture();
+        inputs.normal_texture = o.normals_from_depth ? 0u : gbuf.normal_texture();
         inputs.normal_space = o.normal_space == cli::NormalSpace::World ? SSAO_NORMAL_SPACE_WORLD : SSAO_NORMAL_SPACE_VIEW;
         inputs.normal_packing = o.normal_format == cli::NormalFormat::RGBA8 ? SSAO_NORMAL_PACKING_UNORM : SSAO_NORMAL_PACKING_SIGNED;
         std::copy_n(glm::value_ptr(projection), 16, inputs.projection);
@@ -401,7 +401,8 @@ int run(const cli::Options& o) {
                 fmt(sc.bounds_min).c_str(), fmt(sc.bounds_max).c_str());
     std::printf("  render: %dx%d, GL %d.%d core%s on %s, depth %s, normals %s %s\n", W, H, context->major(),
                 context->minor(), o.gl33 ? " (asked for 3.3 core)" : "", renderer ? renderer : "?",
-                depth_names[static_cast<int>(depth_format)], o.normal_space == cli::NormalSpace::World ? "world" : "view",
+                depth_names[static_cast<int>(depth_format)], o.normals_from_depth ? "rebuilt from depth, G-buffer view"
+                : o.normal_space == cli::NormalSpace::World ? "world" : "view",
                 o.normal_format == cli::NormalFormat::RGBA8 ? "rgba8" : "rgba16f");
     std::printf("  camera: %s, %s, eye %s, target %s, near %s, far %s%s\n",
                 (std::string(camera_from_scene ? "the scene's" : "framed from the bounds") +

@@ -55,13 +55,39 @@ void level0_size(const GladGLContext& gl, int& w, int& h) {
     gl.GetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_HEIGHT, &h);
 }
 
+// The host's normal texture: a GL_TEXTURE_2D of the depth texture's size
+// (dw x dh) with three non-integer colour channels.
+ssao_status inspect_normal_texture(ssao_context& ctx, GLuint name, int dw, int dh) {
+    const GladGLContext& gl = ctx.gl;
+    if (!bind_2d(gl, SSAO_UNIT_NORMAL, name))
+        return ctx.fail(SSAO_ERROR_INVALID_TEXTURE, "inputs.normal_texture is not a GL_TEXTURE_2D (it did not bind)");
+    int nw = 0, nh = 0;
+    level0_size(gl, nw, nh);
+    GLint red_bits = 0, blue_bits = 0;
+    gl.GetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_RED_SIZE, &red_bits);
+    gl.GetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_BLUE_SIZE, &blue_bits);
+    if (nw != dw || nh != dh)
+        return ctx.fail(SSAO_ERROR_INVALID_TEXTURE, "inputs.normal_texture is " + std::to_string(nw) + "x" +
+                                                        std::to_string(nh) + " but the depth texture is " +
+                                                        std::to_string(dw) + "x" + std::to_string(dh));
+    if (red_bits <= 0 || blue_bits <= 0)
+        return ctx.fail(SSAO_ERROR_UNSUPPORTED_FORMAT, "inputs.normal_texture needs three colour channels (x, y, z)");
+    if (has_integer_format(gl))
+        return ctx.fail(SSAO_ERROR_UNSUPPORTED_FORMAT,
+                        "inputs.normal_texture has an integer format; a float, unorm or snorm one is needed");
+    return SSAO_OK;
+}
+
 }  // namespace
 
 ssao_status check_inputs(ssao_context& ctx, const ssao_inputs& in, AnalysedInputs& out) {
+    // (1.2) No normal texture: normals are rebuilt from depth, and what
+    // describes the normal texture (space, packing, view matrix) is ignored.
+    const bool from_depth = in.normal_texture == 0;
     // Raw bits first (raw_enum.h): a caller may store any 32-bit value.
-    if (!raw_enum_at_most(in.normal_space, SSAO_NORMAL_SPACE_WORLD))
+    if (!from_depth && !raw_enum_at_most(in.normal_space, SSAO_NORMAL_SPACE_WORLD))
         return ctx.fail(SSAO_ERROR_INVALID_ENUM, "inputs.normal_space is not an ssao_normal_space");
-    if (!raw_enum_at_most(in.normal_packing, SSAO_NORMAL_PACKING_SIGNED))
+    if (!from_depth && !raw_enum_at_most(in.normal_packing, SSAO_NORMAL_PACKING_SIGNED))
         return ctx.fail(SSAO_ERROR_INVALID_ENUM, "inputs.normal_packing is not an ssao_normal_packing");
     if (!raw_enum_at_most(in.clip_range, SSAO_CLIP_ZERO_TO_ONE))
         return ctx.fail(SSAO_ERROR_INVALID_ENUM, "inputs.clip_range is not an ssao_clip_range");
@@ -70,7 +96,7 @@ ssao_status check_inputs(ssao_context& ctx, const ssao_inputs& in, AnalysedInput
     if (in.output_mode == SSAO_OUTPUT_MODE_MULTIPLY && in.output_texture == 0)
         return ctx.fail(SSAO_ERROR_INVALID_VALUE,
                         "inputs.output_mode is MULTIPLY but output_texture is 0 (multiply needs the host's lit image)");
-    const bool world_normals = in.normal_space == SSAO_NORMAL_SPACE_WORLD;
+    const bool world_normals = !from_depth && in.normal_space == SSAO_NORMAL_SPACE_WORLD;
     if (world_normals) {
         for (float v : in.view_matrix)
             if (!std::isfinite(v)) return ctx.fail(SSAO_ERROR_INVALID_VALUE, "inputs.view_matrix is not finite");
@@ -80,10 +106,9 @@ ssao_status check_inputs(ssao_context& ctx, const ssao_inputs& in, AnalysedInput
     const ssao_status pst = analyse_projection(in.projection, in.clip_range, proj, why);
     if (pst != SSAO_OK) return ctx.fail(pst, "inputs.projection: " + why);
     if (in.depth_texture == 0) return ctx.fail(SSAO_ERROR_INVALID_TEXTURE, "inputs.depth_texture is 0");
-    if (in.normal_texture == 0) return ctx.fail(SSAO_ERROR_INVALID_TEXTURE, "inputs.normal_texture is 0");
     if (!is_texture_2d(ctx, in.depth_texture))
         return ctx.fail(SSAO_ERROR_INVALID_TEXTURE, "inputs.depth_texture is not the name of a GL_TEXTURE_2D");
-    if (!is_texture_2d(ctx, in.normal_texture))
+    if (!from_depth && !is_texture_2d(ctx, in.normal_texture))
         return ctx.fail(SSAO_ERROR_INVALID_TEXTURE, "inputs.normal_texture is not the name of a GL_TEXTURE_2D");
     if (in.output_texture != 0 && !is_texture_2d(ctx, in.output_texture))
         return ctx.fail(SSAO_ERROR_INVALID_TEXTURE, "inputs.output_texture is not the name of a GL_TEXTURE_2D");
@@ -97,7 +122,8 @@ ssao_status check_inputs(ssao_context& ctx, const ssao_inputs& in, AnalysedInput
         for (int c = 0; c < 3; ++c)
             for (int r = 0; r < 3; ++r) out.normal_to_view[c][r] = in.view_matrix[c * 4 + r];
     }
-    out.signed_normals = in.normal_packing == SSAO_NORMAL_PACKING_SIGNED;
+    out.signed_normals = !from_depth && in.normal_packing == SSAO_NORMAL_PACKING_SIGNED;
+    out.normals_from_depth = from_depth;
     out.frame_index = in.frame_index;  // any value is valid
     return SSAO_OK;
 }
@@ -127,22 +153,10 @@ ssao_status inspect_textures(ssao_context& ctx, const ssao_inputs& in, GlStateGu
         if (ctx.caps.depth_stencil_mode)
             gl.TexParameteri(GL_TEXTURE_2D, GL_DEPTH_STENCIL_TEXTURE_MODE, GL_DEPTH_COMPONENT);
     }
-    if (!bind_2d(gl, SSAO_UNIT_NORMAL, in.normal_texture))
-        return ctx.fail(SSAO_ERROR_INVALID_TEXTURE, "inputs.normal_texture is not a GL_TEXTURE_2D (it did not bind)");
-    int nw = 0, nh = 0;
-    level0_size(gl, nw, nh);
-    GLint red_bits = 0, blue_bits = 0;
-    gl.GetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_RED_SIZE, &red_bits);
-    gl.GetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_BLUE_SIZE, &blue_bits);
-    if (nw != dw || nh != dh)
-        return ctx.fail(SSAO_ERROR_INVALID_TEXTURE, "inputs.normal_texture is " + std::to_string(nw) + "x" +
-                                                        std::to_string(nh) + " but the depth texture is " +
-                                                        std::to_string(dw) + "x" + std::to_string(dh));
-    if (red_bits <= 0 || blue_bits <= 0)
-        return ctx.fail(SSAO_ERROR_UNSUPPORTED_FORMAT, "inputs.normal_texture needs three colour channels (x, y, z)");
-    if (has_integer_format(gl))
-        return ctx.fail(SSAO_ERROR_UNSUPPORTED_FORMAT,
-                        "inputs.normal_texture has an integer format; a float, unorm or snorm one is needed");
+    if (in.normal_texture != 0) {
+        const ssao_status nst = inspect_normal_texture(ctx, in.normal_texture, dw, dh);
+        if (nst != SSAO_OK) return nst;
+    }
 
     int vx = in.viewport[0], vy = in.viewport[1], vw = in.viewport[2], vh = in.viewport[3];
     if (vx == 0 && vy == 0 && vw == 0 && vh == 0) { vw = dw; vh = dh; }

@@ -10,7 +10,12 @@ namespace {
 
 using Source = TexRef::Source;
 
+bool is_normals_view(const ssao_settings& s) {
+    return s.debug_view == SSAO_DEBUG_VIEW_NORMALS || s.debug_view == SSAO_DEBUG_VIEW_RECONSTRUCTED_NORMALS;
+}
+
 TexFormat output_format_of(const ssao_settings& s) {
+    if (is_normals_view(s)) return TexFormat::rgba8;  // ssao.h: the normal views' own output is RGBA8
     return s.output_format == SSAO_OUTPUT_R16F ? TexFormat::r16f : TexFormat::r8;
 }
 
@@ -161,6 +166,24 @@ bool plan_ao_debug_view(Builder& b, const ssao_settings& s, const AnalysedInputs
     return true;
 }
 
+// The debug views NORMALS and RECONSTRUCTED_NORMALS: the grid pass at full
+// resolution (RECONSTRUCTED: rebuilding normals from depth whatever the
+// inputs), then one pass writing the grid's normal packed into RGB. The view
+// pass stands where the AO pass would (PassKind::ao: passes_run reads
+// DOWNSAMPLE | AO). False, planning nothing, for every other view.
+bool plan_normals_view(Builder& b, const ssao_settings& s, const AnalysedInputs& in, const TexRef& output,
+                       const Rect& final_rect) {
+    if (!is_normals_view(s)) return false;
+    AnalysedInputs grid_in = in;
+    if (s.debug_view == SSAO_DEBUG_VIEW_RECONSTRUCTED_NORMALS) grid_in.normals_from_depth = true;
+    const TexRef grid = add_grid_pass(b, grid_in, 1, Rect{0, 0, in.viewport[2], in.viewport[3]});
+    Pass& view = b.add(PassKind::ao, ProgramId::normals_view, output, final_rect);
+    view.inputs[SSAO_UNIT_DEPTH] = grid;
+    view.inputs[SSAO_UNIT_NORMAL] = grid;
+    view.variant = variant::grid_input;
+    return true;
+}
+
 }  // namespace
 
 uint32_t FramePlan::passes_run() const {
@@ -184,6 +207,7 @@ FramePlan plan_frame(const ssao_settings& s, const AnalysedInputs& in) {
     const Rect final_rect{plan.output_origin[0], plan.output_origin[1], vw, vh};
 
     Builder b(plan);
+    if (plan_normals_view(b, s, in, output, final_rect)) return plan;
     if (s.strength == SSAO_STRENGTH_OFF) {
         // Strength 0: no sampling at all, the output is exactly 1.
         b.add(PassKind::clear, ProgramId::none, output, final_rect);

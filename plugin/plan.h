@@ -55,7 +55,18 @@ enum class PassKind : uint32_t {
 // The compiled programs (programs.cpp has one row per id). A clear draws nothing.
 // ao and visibility are the two estimators (ssao_settings.method) of the ao pass.
 // downsample and upsample run only below full resolution (ssao_settings.resolution).
-enum class ProgramId : int { none = -1, ao = 0, visibility = 1, blur = 2, downsample = 3, upsample = 4, count = 5 };
+// normals_view writes the grid's normals packed into RGB (the debug views
+// NORMALS and RECONSTRUCTED_NORMALS).
+enum class ProgramId : int {
+    none = -1,
+    ao = 0,
+    visibility = 1,
+    blur = 2,
+    downsample = 3,
+    upsample = 4,
+    normals_view = 5,
+    count = 6
+};
 
 // Compile-time variants of a program. Each bit is a feature that is off by
 // default and free when off: its shader code sits behind `#ifdef SSAO_<NAME>`
@@ -84,6 +95,7 @@ enum class TexFormat : uint8_t {
     rgba32f,  // intermediate: the downsample's (depth as stored, view-space normal) per block
     r8,     // owned output, SSAO_OUTPUT_R8
     r16f,   // owned output, SSAO_OUTPUT_R16F
+    rgba8,  // owned output of the normal debug views: n * 0.5 + 0.5 in RGB, alpha 1
 };
 
 // A texture a pass samples or renders into.

@@ -24,7 +24,8 @@ struct CompiledProgram {
     PassUniforms uniforms;
 };
 
-// create_context: variant 0 of every program. SHADER (last_error holds the
+// create_context: variant 0 of every program but the debug views' (compiled
+// on first use, like the variants). SHADER (last_error holds the
 // driver's log) when one fails.
 ssao_status compile_base_programs(ssao_context& ctx);
 

@@ -14,6 +14,8 @@ const ProgramInfo kPrograms[] = {
     {ProgramId::downsample, k_downsample_frag, SharedCode::common_and_sampling, "downsample.frag",
      "ssao: downsample program"},
     {ProgramId::upsample, k_upsample_frag, SharedCode::common, "upsample.frag", "ssao: upsample program"},
+    {ProgramId::normals_view, k_normals_view_frag, SharedCode::common_and_sampling, "normals_view.frag",
+     "ssao: normals view program"},
 };
 static_assert(sizeof kPrograms / sizeof kPrograms[0] == static_cast<size_t>(ProgramId::count),
               "one row per ProgramId");

@@ -1,9 +1,83 @@
-// The downsample (below full resolution): for each block of u_scale x u_scale
-// viewport pixels, one real pixel of it (grid_pixel, common.glsl) - its depth
+// The grid pass: for each block of u_scale x u_scale viewport pixels (scale
+// 1: every pixel), one real pixel of it (grid_pixel, common.glsl) - its depth
 // copied bit for bit, never an average, so no depth floats in the gap of a
-// silhouette and the sky keeps its exact clear value - and its normal decoded
-// into view space (unit length; zero when broken).
+// silhouette and the sky keeps its exact clear value - and its normal in view
+// space: the host's decoded (unit length; zero when broken) or, variant
+// NORMALS_FROM_DEPTH, rebuilt from the host's depth around the picked pixel.
 // Output RGBA32F: (depth as stored, normal xyz).
+
+#ifdef SSAO_NORMALS_FROM_DEPTH
+// Viewport pixel q's depth, when q lies inside the viewport and holds a
+// surface (not sky, a finite position): a neighbour the reconstruction may use.
+bool surface_at(ivec2 q, out float d, out vec3 P) {
+    d = 0.0;
+    P = vec3(0.0);
+    if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, u_viewport.zw))) return false;
+    d = input_depth(q);
+    P = view_position_at(vec2(q) + 0.5, d).xyz;
+    return !is_sky(d) && finite3(P);
+}
+
+// The surface's tangent at p (depth d0, position P0) along axis a, one pixel
+// long. A plane's stored depth is affine in window coordinates in every
+// convention (perspective: affine in 1/z; orthographic: in z), so the line
+// through a side's two pixels, extrapolated to p, hits d0 exactly when they
+// lie on p's plane: a side's error is the smaller of this miss and the plain
+// depth difference (the latter alone decides a side with one pixel in the
+// viewport, and saves a thin strip whose second pixel is background). The
+// side of the smaller error wins: across a silhouette the miss is the depth
+// jump, at a crease it grows with the other plane's bend, so neither smears
+// into p, and a flat surface is never faceted. When the two sides' errors are
+// within a factor 2 of each other (a smooth surface: both misses are its
+// curvature) the two are averaged, a central difference, whose error on a
+// curved surface is second order instead of first. False: no usable side.
+bool side_tangent(ivec2 p, float d0, vec3 P0, ivec2 a, out vec3 T) {
+    T = vec3(0.0);
+    vec3 t[2];
+    float err[2];
+    bool ok[2];
+    for (int i = 0; i < 2; ++i) {
+        int s = 2 * i - 1;
+        float d1, d2;
+        vec3 P1, P2;
+        t[i] = vec3(0.0);
+        err[i] = 0.0;
+        ok[i] = surface_at(p + a * s, d1, P1);
+        if (!ok[i]) continue;
+        err[i] = abs(d1 - d0);
+        if (surface_at(p + a * (2 * s), d2, P2)) err[i] = min(err[i], abs(2.0 * d1 - d2 - d0));
+        t[i] = (P1 - P0) * float(s);
+    }
+    if (ok[0] && ok[1]) {
+        float lo = min(err[0], err[1]), hi = max(err[0], err[1]);
+        T = hi <= 2.0 * lo ? 0.5 * (t[0] + t[1]) : (err[0] < err[1] ? t[0] : t[1]);
+        return true;
+    }
+    T = ok[0] ? t[0] : t[1];
+    return ok[0] || ok[1];
+}
+
+// The unit view-space normal at viewport pixel p (a surface at P0), turned
+// towards the camera (to_eye). With one usable axis: the direction closest to
+// the camera's that is perpendicular to it; with none: towards the camera.
+vec3 normal_from_depth(ivec2 p, float d0, vec3 P0, vec3 to_eye) {
+    vec3 tx, ty;
+    bool hx = side_tangent(p, d0, P0, ivec2(1, 0), tx);
+    bool hy = side_tangent(p, d0, P0, ivec2(0, 1), ty);
+    vec3 n = to_eye;
+    if (hx && hy) {
+        n = cross(tx, ty);
+    } else if (hx || hy) {
+        vec3 t = hx ? tx : ty;
+        float tt = dot(t, t);
+        if (tt > 0.0) n = to_eye - t * (dot(to_eye, t) / tt);
+    }
+    float nn = dot(n, n);
+    if (!(nn > 0.0) || !finite3(n)) return to_eye;  // degenerate (parallel tangents, underflow)
+    n *= inversesqrt(nn);
+    return dot(n, to_eye) < 0.0 ? -n : n;
+}
+#endif
 
 void main() {
     ivec2 t = ivec2(gl_FragCoord.xy) - u_target_origin;
@@ -12,10 +86,16 @@ void main() {
     vec3 P = view_position_at(vec2(p) + 0.5, d).xyz;
     vec3 n = vec3(0.0, 0.0, 1.0);  // sky and unusable depths: never read as a surface
     if (!is_sky(d) && finite3(P)) {
+#ifdef SSAO_NORMALS_FROM_DEPTH
+        // Rebuilt from the full-resolution neighbours of the picked pixel,
+        // already unit length and facing the camera.
+        n = normal_from_depth(p, d, P, u_depth.w > 0.5 ? vec3(0.0, 0.0, 1.0) : normalize(-P));
+#else
         // Unit length but not yet turned towards the camera (raw_normal,
         // sampling.glsl): the visibility pass must see which normals face
         // away; zero marks a broken one.
         n = decode_raw_normal(texelFetch(u_normal_tex, p + u_viewport.xy, 0).xyz, n) ? normalize(n) : vec3(0.0);
+#endif
     }
     o_ao = vec4(d, n);
 }

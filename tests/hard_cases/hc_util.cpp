@@ -37,6 +37,7 @@ Out run(testgl::Fixture& fx, const analytic::GBuffer& g, const glm::dmat4& proj,
     in.normal_space = o.normal_space;
     in.normal_packing = o.normal_format == GL_RGBA8 ? SSAO_NORMAL_PACKING_UNORM : SSAO_NORMAL_PACKING_SIGNED;
     if (o.normal_space == SSAO_NORMAL_SPACE_WORLD) analytic::to_floats(o.view_matrix, in.view_matrix);
+    if (o.depth_only) in.normal_texture = 0;
     if (W != g.width || H != g.height) {
         in.viewport[0] = o.pad_x;
         in.viewport[1] = o.pad_y;

@@ -27,6 +27,7 @@ struct RunOptions {
     const std::vector<glm::vec3>* normals = nullptr;  // overrides the G-buffer's normals
     int pad_x = 0, pad_y = 0;                     // embed the G-buffer at this offset in a larger texture
     int pad_right = 0, pad_top = 0;               // extra texels right of / above the viewport
+    bool depth_only = false;                      // normal_texture = 0: the plugin rebuilds normals from depth
 };
 
 struct Out {

@@ -252,9 +252,8 @@ TEST_CASE("abi: execute rejects missing or foreign or wrong-target textures") {
 
     in.depth_texture = 0;
     expect_execute_fails(f, in, SSAO_ERROR_INVALID_TEXTURE, "depth_texture");
-    in = scene.inputs;
-    in.normal_texture = 0;
-    expect_execute_fails(f, in, SSAO_ERROR_INVALID_TEXTURE, "normal_texture");
+    // (1.2) normal_texture = 0 is no longer refused: it asks for normals
+    // rebuilt from depth (tests/hard_cases/test_hc_normals_view.cpp).
     in = scene.inputs;
     in.depth_texture = 12345;  // not a texture name
     expect_execute_fails(f, in, SSAO_ERROR_INVALID_TEXTURE, "depth_texture");

@@ -1,0 +1,14 @@
+// The debug views NORMALS and RECONSTRUCTED_NORMALS (ssao_settings.debug_view):
+// the normal of every viewport pixel as the sampling passes see it (read from
+// the full-resolution grid, variant GRID_INPUT: unit length, turned towards
+// the camera, a broken one replaced by the direction to the camera), packed
+// as n * 0.5 + 0.5 into RGB, alpha 1. Sky has no normal: (0.5, 0.5, 0.5).
+
+void main() {
+    ivec2 t = ivec2(gl_FragCoord.xy) - u_target_origin;
+    float d = fetch_depth(t);
+    vec3 P = view_position_w(t, d).xyz;
+    vec3 n = vec3(0.0);
+    if (!is_sky(d) && finite3(P)) n = load_normal(t, u_depth.w > 0.5 ? vec3(0.0, 0.0, 1.0) : normalize(-P));
+    o_ao = vec4(n * 0.5 + 0.5, 1.0);
+}
