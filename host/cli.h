@@ -56,6 +56,11 @@ struct Options {
     std::optional<ssao_method> method;
     std::optional<float> thickness;  // visibility: view units
     std::optional<int> steps;        // visibility: steps per direction
+
+    // (issue 12) MSAA inputs and the multiply output mode.
+    int msaa = 0;                    // > 1: the plugin reads a G-buffer rendered with this many samples
+    uint32_t sample_index = 0;       // the sample it reads, < msaa
+    bool output_multiply = false;    // lit_ao.png: the plugin multiplies AO into the lit image
 };
 
 enum class ParseResult { Run, Help, Version, Error };

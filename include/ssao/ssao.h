@@ -48,13 +48,15 @@
  * GL state
  * - execute saves and restores, in one guard, every piece of GL state it
  *   changes: draw and read framebuffer bindings, current program, vertex array
- *   binding, active texture unit and the 2D texture and sampler bindings of
- *   every unit it uses (units 0..SSAO_TEXTURE_UNITS_USED-1), array, uniform and
+ *   binding, active texture unit and the 2D texture, (1.2) 2D multisample
+ *   texture and sampler bindings of every unit it uses (units
+ *   0..SSAO_TEXTURE_UNITS_USED-1), array, uniform and
  *   pixel-unpack buffer bindings (and the indexed uniform bindings 0 and 1),
  *   viewport and scissor box (every index of a GL 4.1 viewport array), enables
  *   (scissor, depth, stencil, blend per draw buffer, cull face, rasterizer
  *   discard, polygon offset, colour logic op, sample mask, dither, framebuffer
- *   sRGB, multisample, alpha-to-coverage, clip distances 0-7), polygon mode,
+ *   sRGB, multisample, alpha-to-coverage, clip distances 0-7), (1.2) the blend
+ *   function and equation of draw buffer 0 (all buffers' below GL 4.0), polygon mode,
  *   colour/depth/stencil write masks, clip control (where supported), the
  *   depth-stencil texture mode of a D24S8/D32FS8 input (GL 4.3+) and the
  *   unpack pixel-store parameters.
