@@ -356,7 +356,10 @@ typedef enum ssao_output_mode {
     SSAO_OUTPUT_MODE_DEFAULT = 0,     /* = SSAO_OUTPUT_MODE_OVERWRITE */
     SSAO_OUTPUT_MODE_OVERWRITE = 1,   /* the viewport rectangle's channels are overwritten: rgb = AO, a = 1 */
     SSAO_OUTPUT_MODE_MULTIPLY = 2,    /* the host's lit image: its RGB at the viewport rectangle is multiplied
-                                         by AO through blending (alpha untouched); needs output_texture */
+                                         by AO through blending (alpha untouched); needs output_texture.
+                                         An sRGB texture is multiplied in linear space. With strength
+                                         SSAO_STRENGTH_OFF no pass runs (passes_run 0) and the texture is
+                                         untouched; ssao_output still names it at the viewport's origin */
     SSAO_OUTPUT_MODE_MAX_ENUM = 0x7fffffff  /* not a value: keeps the enum 32 bits wide */
 } ssao_output_mode;
 
