@@ -7,6 +7,7 @@
 #include "camera_flags.h"
 #include "flags.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -183,6 +184,15 @@ ParseResult parse(int argc, const char* const* argv, Options& o, std::string& er
              if (!view) fail(f + " expects one of " + debug_view_text::choices() + ", got " + quoted(v));
              o.debug_view = *view;
          }},
+        {"--msaa", [&](const std::string& f, const std::string& v) {
+             o.msaa = static_cast<int>(flags::integer(f, v, 1, 32));
+         }},
+        {"--sample-index", [&](const std::string& f, const std::string& v) {
+             o.sample_index = static_cast<uint32_t>(flags::integer(f, v, 0, 31));
+         }},
+        {"--output", [&](const std::string& f, const std::string& v) {
+             o.output_multiply = parse_choice<bool>(f, v, {{"overwrite", false}, {"multiply", true}});
+         }},
     };
     // Flags without a value.
     const flags::Switches switches = {
@@ -197,6 +207,9 @@ ParseResult parse(int argc, const char* const* argv, Options& o, std::string& er
         if (outcome == flags::Outcome::Help) return ParseResult::Help;
         if (outcome == flags::Outcome::Version) return ParseResult::Version;
         flags::check_camera(o.cam);
+        if (o.sample_index > 0 && static_cast<int>(o.sample_index) >= std::max(o.msaa, 1))
+            throw flags::Error{"--sample-index " + std::to_string(o.sample_index) + " needs --msaa N with N > " +
+                               std::to_string(o.sample_index) + " (a pixel has samples 0..N-1)"};
     } catch (const flags::Error& f) {
         error = f.message;
         return ParseResult::Error;
@@ -302,6 +315,13 @@ std::string help_text(const ssao_settings* d, const std::string& default_scene, 
          "  --debug-view " << debug_view_text::choices() << "\n"
          "                          one more execute with this debug view, written to debug_view.png (normal\n"
          "                          views: RGB, n*0.5+0.5; raw-ao, blur-weights: grey) (default none)\n"
+         }},
+         "  --msaa N                the plugin reads a G-buffer rendered with N samples per pixel, 1..32\n"
+         "                          (GL_TEXTURE_2D_MULTISAMPLE; default 1 = single-sample); the lighting uses\n"
+         "                          the single-sample G-buffer\n"
+         "  --sample-index I        with --msaa N: the sample the plugin reads, 0..N-1 (default 0)\n"
+         "  --output overwrite|multiply  lit_ao.png: overwrite = the host lights with AO on the ambient term;\n"
+         "                          multiply = the plugin multiplies AO into the host's lit image (default overwrite)\n"
          "\n"
          "Files written to the output directory (all or none: written to temporary names, renamed at the end)\n"
          "  ao.png ao.exr           ambient occlusion (EXR: one float channel Y, 1 = unoccluded)\n"

@@ -67,6 +67,11 @@ struct Options {
     // --debug-view: what the extra execute writes into debug_view.png (none:
     // no extra execute, no file). Names: debug_view_text.h.
     ssao_debug_view debug_view = SSAO_DEBUG_VIEW_NONE;
+
+    // (issue 12) MSAA inputs and the multiply output mode.
+    int msaa = 0;                    // > 1: the plugin reads a G-buffer rendered with this many samples
+    uint32_t sample_index = 0;       // the sample it reads, < msaa
+    bool output_multiply = false;    // lit_ao.png: the plugin multiplies AO into the lit image
 };
 
 enum class ParseResult { Run, Help, Version, Error };

@@ -152,6 +152,10 @@ std::vector<uint8_t> Compositor::render(const gbuffer::GBuffer& g, const glm::ma
                                         const glm::mat4& projection, GLuint ao_texture, glm::ivec2 ao_origin,
                                         const Lighting& l) {
     draw(g, view, projection, ao_texture, ao_origin, l);
+    return read();
+}
+
+std::vector<uint8_t> Compositor::read() const {
     const std::vector<float> rgba = gl_util::read_texture(gl_, target_, 0, 0, width_, height_, 4);
     return to_rgb8_top_down(rgba, width_, height_);
 }

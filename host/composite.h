@@ -46,6 +46,10 @@ public:
     void draw(const gbuffer::GBuffer& g, const glm::mat4& view, const glm::mat4& projection,
               GLuint ao_texture, glm::ivec2 ao_origin, const Lighting& lighting);
     GLuint framebuffer() const { return fbo_; }
+    // The texture behind framebuffer() (RGBA8), e.g. for the plugin's
+    // multiply output mode, and its pixels as render() returns them.
+    GLuint texture() const { return target_; }
+    std::vector<uint8_t> read() const;
 
 private:
     void release();

@@ -49,19 +49,37 @@ GLenum depth_internal_format(cli::DepthFormat f) {
     return GL_DEPTH_COMPONENT32F;
 }
 
+// A multisampled texture of `samples` samples (fixed sample locations).
+GLuint make_multisample_texture(GladGLContext& gl, GLenum internal_format, int samples, int width, int height) {
+    GLuint t = 0;
+    gl.GenTextures(1, &t);
+    gl.BindTexture(GL_TEXTURE_2D_MULTISAMPLE, t);
+    gl.TexImage2DMultisample(GL_TEXTURE_2D_MULTISAMPLE, samples, internal_format, width, height, GL_TRUE);
+    gl.BindTexture(GL_TEXTURE_2D_MULTISAMPLE, 0);
+    return t;
+}
+
 }  // namespace
 
 GBuffer::GBuffer(GladGLContext& gl, const Desc& desc, const scene::Mesh& mesh) : gl_(gl), desc_(desc) {
     if (mesh.indices.size() > static_cast<size_t>(std::numeric_limits<GLsizei>::max()))
         throw gl_util::Error("the scene has too many triangles for one draw call");
     try {
-        depth_ = gl_util::make_texture(gl, depth_internal_format(desc.depth), desc.width, desc.height);
-        normal_ = gl_util::make_texture(gl, desc.format == cli::NormalFormat::RGBA8 ? GL_RGBA8 : GL_RGBA16F,
-                                        desc.width, desc.height);
+        const GLenum depth_format = depth_internal_format(desc.depth);
+        const GLenum normal_format = desc.format == cli::NormalFormat::RGBA8 ? GL_RGBA8 : GL_RGBA16F;
+        const bool ms = desc.samples > 1;
+        if (ms) {
+            depth_ = make_multisample_texture(gl, depth_format, desc.samples, desc.width, desc.height);
+            normal_ = make_multisample_texture(gl, normal_format, desc.samples, desc.width, desc.height);
+        } else {
+            depth_ = gl_util::make_texture(gl, depth_format, desc.width, desc.height);
+            normal_ = gl_util::make_texture(gl, normal_format, desc.width, desc.height);
+        }
+        const GLenum target = ms ? GL_TEXTURE_2D_MULTISAMPLE : GL_TEXTURE_2D;
         gl.GenFramebuffers(1, &fbo_);
         gl.BindFramebuffer(GL_FRAMEBUFFER, fbo_);
-        gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, depth_, 0);
-        gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, normal_, 0);
+        gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, target, depth_, 0);
+        gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, target, normal_, 0);
         const GLenum draw_buffer = GL_COLOR_ATTACHMENT0;
         gl.DrawBuffers(1, &draw_buffer);
         gl_util::check_framebuffer(gl, "G-buffer");

@@ -18,6 +18,7 @@ struct Desc {
     cli::NormalFormat format = cli::NormalFormat::RGBA16F;
     bool reverse_z = false;     // clear depth 0, GL_GREATER
     bool zero_to_one = false;   // glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE) while drawing
+    int samples = 0;            // > 1: GL_TEXTURE_2D_MULTISAMPLE textures of that many samples (--msaa)
 };
 
 class GBuffer {
@@ -34,6 +35,7 @@ public:
     // facing the viewer on back faces.
     void render(const glm::mat4& view, const glm::mat4& projection);
 
+    // GL_TEXTURE_2D, or GL_TEXTURE_2D_MULTISAMPLE when desc.samples > 1.
     GLuint depth_texture() const { return depth_; }
     GLuint normal_texture() const { return normal_; }
     const Desc& desc() const { return desc_; }

@@ -27,6 +27,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <limits>
+#include <memory>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -239,6 +240,23 @@ int run(const cli::Options& o) {
         gdesc.zero_to_one = cam.zero_to_one;
         gbuffer::GBuffer gbuf(gl, gdesc, sc.mesh);
         gbuf.render(view, projection);
+        // --msaa N: the plugin reads a second G-buffer of N samples per
+        // pixel; the lighting and the depth/normal pictures use the first.
+        std::unique_ptr<gbuffer::GBuffer> ms_gbuf;
+        if (o.msaa > 1) {
+            GLint max_depth = 0, max_color = 0;
+            gl.GetIntegerv(GL_MAX_DEPTH_TEXTURE_SAMPLES, &max_depth);
+            gl.GetIntegerv(GL_MAX_COLOR_TEXTURE_SAMPLES, &max_color);
+            const int max_samples = std::min(max_depth, max_color);
+            if (o.msaa > max_samples)
+                throw RunError("--msaa " + std::to_string(o.msaa) + ": this GL allows at most " +
+                               std::to_string(max_samples) + " samples in a multisampled texture");
+            gbuffer::Desc ms_desc = gdesc;
+            ms_desc.samples = o.msaa;
+            ms_gbuf = std::make_unique<gbuffer::GBuffer>(gl, ms_desc, sc.mesh);
+            ms_gbuf->render(view, projection);
+        }
+        const gbuffer::GBuffer& plugin_gbuf = ms_gbuf ? *ms_gbuf : gbuf;
 
         std::string plugin_message;
         ssao_context_desc desc{};
@@ -257,8 +275,9 @@ int run(const cli::Options& o) {
 
         ssao_inputs inputs{};
         inputs.size = sizeof inputs;
-        inputs.depth_texture = gbuf.depth_texture();
-        inputs.normal_texture = o.normals_from_depth ? 0u : gbuf.normal_texture();
+        inputs.depth_texture = plugin_gbuf.depth_texture();
+        inputs.normal_texture = o.normals_from_depth ? 0u : plugin_gbuf.normal_texture();
+        inputs.sample_index = o.sample_index;
         inputs.normal_space = o.normal_space == cli::NormalSpace::World ? SSAO_NORMAL_SPACE_WORLD : SSAO_NORMAL_SPACE_VIEW;
         inputs.normal_packing = o.normal_format == cli::NormalFormat::RGBA8 ? SSAO_NORMAL_PACKING_UNORM : SSAO_NORMAL_PACKING_SIGNED;
         std::copy_n(glm::value_ptr(projection), 16, inputs.projection);
@@ -283,8 +302,19 @@ int run(const cli::Options& o) {
             composite::Compositor compositor(gl, W, H);
             const composite::Lighting lighting = composite::default_lighting(sc.bounds_min, sc.bounds_max, view);
             const glm::ivec2 origin(output.origin[0], output.origin[1]);
-            if (full) lit_ao = compositor.render(gbuf, view, projection, output.texture, origin, lighting);
+            if (full && !o.output_multiply)
+                lit_ao = compositor.render(gbuf, view, projection, output.texture, origin, lighting);
             std::vector<uint8_t> no_ao = compositor.render(gbuf, view, projection, 0, origin, lighting);
+            if (full && o.output_multiply) {
+                // --output multiply: the lit image without AO is still in the
+                // compositor's texture; the plugin multiplies AO into it.
+                ssao_inputs multiply = inputs;
+                multiply.output_texture = compositor.texture();
+                multiply.output_mode = SSAO_OUTPUT_MODE_MULTIPLY;
+                st = api.execute(plugin.ctx, &multiply, nullptr);
+                if (st != SSAO_OK) throw RunError("the SSAO plugin failed to multiply: " + plugin.error(st));
+                lit_ao = compositor.read();
+            }
             if (sheet) {
                 // Panels left to right: E R T Y U, each lit with its own AO.
                 const size_t row_bytes = static_cast<size_t>(W) * 3;

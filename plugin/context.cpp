@@ -39,6 +39,7 @@ bool all_required_loaded(const GladGLContext& gl, std::string& missing) {
     SSAO_REQUIRE_GL(ActiveTexture) SSAO_REQUIRE_GL(AttachShader) SSAO_REQUIRE_GL(BindBuffer)
     SSAO_REQUIRE_GL(BindBufferBase) SSAO_REQUIRE_GL(BindBufferRange) SSAO_REQUIRE_GL(BindFramebuffer)
     SSAO_REQUIRE_GL(BindSampler) SSAO_REQUIRE_GL(BindTexture) SSAO_REQUIRE_GL(BindVertexArray)
+    SSAO_REQUIRE_GL(BlendEquationSeparate) SSAO_REQUIRE_GL(BlendFuncSeparate)
     SSAO_REQUIRE_GL(BufferData) SSAO_REQUIRE_GL(CheckFramebufferStatus) SSAO_REQUIRE_GL(ClearBufferfv)
     SSAO_REQUIRE_GL(ColorMaski) SSAO_REQUIRE_GL(CompileShader) SSAO_REQUIRE_GL(CreateProgram)
     SSAO_REQUIRE_GL(CreateShader) SSAO_REQUIRE_GL(DeleteBuffers) SSAO_REQUIRE_GL(DeleteFramebuffers)
@@ -102,6 +103,7 @@ ssao_status initialise(ssao_context& ctx, const ssao_context_desc& desc) {
     ctx.caps.clip_control = gl.ClipControl != nullptr && (v >= 45 || has_gl_extension(gl, "GL_ARB_clip_control"));
     ctx.caps.depth_stencil_mode = v >= 43;
     ctx.caps.texture_target_query = v >= 45 && gl.GetTextureParameteriv != nullptr;
+    ctx.caps.indexed_blend = v >= 40 && gl.BlendFuncSeparatei != nullptr && gl.BlendEquationSeparatei != nullptr;
     if (v >= 41 && gl.GetFloati_v && gl.ViewportIndexedfv && gl.ScissorIndexedv) {
         gl.GetIntegerv(GL_MAX_VIEWPORTS, &ctx.caps.viewports);
         ctx.caps.viewports = std::max(1, std::min(ctx.caps.viewports, 16));

@@ -32,6 +32,11 @@ struct ssao_context {
     SsaoFrame last_frame{};     // the frame block last uploaded
     bool frame_uploaded = false;
     bool kernel_dirty = true;   // kernel / noise need uploading
+    // (1.2) The target the last execute's inputs had (GL_TEXTURE_2D or
+    // GL_TEXTURE_2D_MULTISAMPLE). Below GL 4.5 inputs are told apart by
+    // binding them, and that target is tried first: a host that keeps
+    // multisampled inputs raises no failed-bind GL error frame after frame.
+    GLenum last_input_target = GL_TEXTURE_2D;
 
     // The compiled programs (program_cache.cpp): variant 0 of every
     // ProgramId first, then each variant a plan has used.

@@ -34,6 +34,7 @@ GlStateGuard::GlStateGuard(const GladGLContext& gl, const GlCaps& caps, GLuint u
     for (int u = 0; u < kUnits; ++u) {
         gl.ActiveTexture(GL_TEXTURE0 + u);
         gl.GetIntegerv(GL_TEXTURE_BINDING_2D, &texture_2d_[u]);
+        gl.GetIntegerv(GL_TEXTURE_BINDING_2D_MULTISAMPLE, &texture_2d_ms_[u]);
         gl.GetIntegerv(GL_SAMPLER_BINDING, &sampler_[u]);
     }
     gl.ActiveTexture(static_cast<GLenum>(active_texture_));
@@ -74,6 +75,21 @@ GlStateGuard::GlStateGuard(const GladGLContext& gl, const GlCaps& caps, GLuint u
         blend_[i] = gl.IsEnabledi(GL_BLEND, static_cast<GLuint>(i));
         gl.GetBooleani_v(GL_COLOR_WRITEMASK, static_cast<GLuint>(i), color_mask_[i]);
     }
+    if (caps.indexed_blend) {
+        gl.GetIntegeri_v(GL_BLEND_SRC_RGB, 0, &blend_src_rgb_);
+        gl.GetIntegeri_v(GL_BLEND_DST_RGB, 0, &blend_dst_rgb_);
+        gl.GetIntegeri_v(GL_BLEND_SRC_ALPHA, 0, &blend_src_alpha_);
+        gl.GetIntegeri_v(GL_BLEND_DST_ALPHA, 0, &blend_dst_alpha_);
+        gl.GetIntegeri_v(GL_BLEND_EQUATION_RGB, 0, &blend_equation_rgb_);
+        gl.GetIntegeri_v(GL_BLEND_EQUATION_ALPHA, 0, &blend_equation_alpha_);
+    } else {
+        gl.GetIntegerv(GL_BLEND_SRC_RGB, &blend_src_rgb_);
+        gl.GetIntegerv(GL_BLEND_DST_RGB, &blend_dst_rgb_);
+        gl.GetIntegerv(GL_BLEND_SRC_ALPHA, &blend_src_alpha_);
+        gl.GetIntegerv(GL_BLEND_DST_ALPHA, &blend_dst_alpha_);
+        gl.GetIntegerv(GL_BLEND_EQUATION_RGB, &blend_equation_rgb_);
+        gl.GetIntegerv(GL_BLEND_EQUATION_ALPHA, &blend_equation_alpha_);
+    }
     for (int i = 0; i < std::min(caps.max_clip_distances, 8); ++i)
         clip_distance_[i] = gl.IsEnabled(GL_CLIP_DISTANCE0 + static_cast<GLenum>(i));
     gl.GetIntegerv(GL_POLYGON_MODE, polygon_mode_);
@@ -93,23 +109,25 @@ void GlStateGuard::save_unpack_state() {
     for (int i = 0; i < 8; ++i) gl_.GetIntegerv(kUnpackParams[i], &unpack_[i]);
 }
 
-void GlStateGuard::save_depth_stencil_mode(GLuint texture, GLuint unit) {
+void GlStateGuard::save_depth_stencil_mode(GLuint texture, GLuint unit, GLenum target) {
     if (!caps_.depth_stencil_mode) return;
     ds_texture_ = texture;
     ds_unit_ = unit;
-    gl_.GetTexParameteriv(GL_TEXTURE_2D, GL_DEPTH_STENCIL_TEXTURE_MODE, &ds_mode_);
+    ds_target_ = target;
+    gl_.GetTexParameteriv(target, GL_DEPTH_STENCIL_TEXTURE_MODE, &ds_mode_);
 }
 
 GlStateGuard::~GlStateGuard() {
     const GladGLContext& gl = gl_;
     if (ds_texture_ != 0) {
         gl.ActiveTexture(GL_TEXTURE0 + ds_unit_);
-        gl.BindTexture(GL_TEXTURE_2D, ds_texture_);
-        gl.TexParameteri(GL_TEXTURE_2D, GL_DEPTH_STENCIL_TEXTURE_MODE, ds_mode_);
+        gl.BindTexture(ds_target_, ds_texture_);
+        gl.TexParameteri(ds_target_, GL_DEPTH_STENCIL_TEXTURE_MODE, ds_mode_);
     }
     for (int u = 0; u < kUnits; ++u) {
         gl.ActiveTexture(GL_TEXTURE0 + u);
         gl.BindTexture(GL_TEXTURE_2D, static_cast<GLuint>(texture_2d_[u]));
+        gl.BindTexture(GL_TEXTURE_2D_MULTISAMPLE, static_cast<GLuint>(texture_2d_ms_[u]));
         gl.BindSampler(static_cast<GLuint>(u), static_cast<GLuint>(sampler_[u]));
     }
     gl.ActiveTexture(static_cast<GLenum>(active_texture_));
@@ -161,6 +179,14 @@ GlStateGuard::~GlStateGuard() {
         if (blend_[i]) gl.Enablei(GL_BLEND, b); else gl.Disablei(GL_BLEND, b);
         gl.ColorMaski(b, color_mask_[i][0], color_mask_[i][1], color_mask_[i][2], color_mask_[i][3]);
     }
+    const auto e = [](GLint v) { return static_cast<GLenum>(v); };
+    if (caps_.indexed_blend) {
+        gl.BlendFuncSeparatei(0, e(blend_src_rgb_), e(blend_dst_rgb_), e(blend_src_alpha_), e(blend_dst_alpha_));
+        gl.BlendEquationSeparatei(0, e(blend_equation_rgb_), e(blend_equation_alpha_));
+    } else {
+        gl.BlendFuncSeparate(e(blend_src_rgb_), e(blend_dst_rgb_), e(blend_src_alpha_), e(blend_dst_alpha_));
+        gl.BlendEquationSeparate(e(blend_equation_rgb_), e(blend_equation_alpha_));
+    }
     for (int i = 0; i < std::min(caps_.max_clip_distances, 8); ++i)
         set_enabled(gl, GL_CLIP_DISTANCE0 + static_cast<GLenum>(i), clip_distance_[i]);
     // Core profile: front and back are always equal and only GL_FRONT_AND_BACK
@@ -195,6 +221,29 @@ void set_pass_state(const GladGLContext& gl, const GlCaps& caps) {
     gl.ColorMaski(0, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     gl.PolygonMode(GL_FRONT_AND_BACK, GL_FILL);
     if (caps.clip_control) gl.ClipControl(GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE);
+}
+
+void begin_multiply_blend(const GladGLContext& gl, const GlCaps& caps) {
+    // rgb = src * 0 + dst * src.rgb; alpha = src * 0 + dst * 1 (kept). Only
+    // draw buffer 0 where blend state is per buffer (GL 4.0): the library's
+    // framebuffer has one colour attachment, and a host's per-buffer
+    // functions for the others are left alone.
+    if (caps.indexed_blend) {
+        gl.BlendFuncSeparatei(0, GL_ZERO, GL_SRC_COLOR, GL_ZERO, GL_ONE);
+        gl.BlendEquationSeparatei(0, GL_FUNC_ADD, GL_FUNC_ADD);
+    } else {
+        gl.BlendFuncSeparate(GL_ZERO, GL_SRC_COLOR, GL_ZERO, GL_ONE);
+        gl.BlendEquationSeparate(GL_FUNC_ADD, GL_FUNC_ADD);
+    }
+    gl.Enablei(GL_BLEND, 0);
+    // An sRGB lit image is multiplied in linear space (decoded, multiplied,
+    // encoded); for any other format this enable changes nothing.
+    gl.Enable(GL_FRAMEBUFFER_SRGB);
+}
+
+void end_multiply_blend(const GladGLContext& gl) {
+    gl.Disablei(GL_BLEND, 0);
+    gl.Disable(GL_FRAMEBUFFER_SRGB);
 }
 
 }  // namespace ssao_impl

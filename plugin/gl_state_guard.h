@@ -12,6 +12,7 @@ struct GlCaps {
     bool clip_control = false;        // GL 4.5 or ARB_clip_control
     bool depth_stencil_mode = false;  // GL 4.3: GL_DEPTH_STENCIL_TEXTURE_MODE
     bool texture_target_query = false;// GL 4.5: GL_TEXTURE_TARGET
+    bool indexed_blend = false;       // GL 4.0: glBlendFuncSeparatei / glBlendEquationSeparatei
     int viewports = 1;                // GL 4.1 viewport arrays: how many indices to save (<= 16)
     int max_draw_buffers = 8;
     int max_clip_distances = 8;
@@ -25,8 +26,9 @@ public:
     GlStateGuard& operator=(const GlStateGuard&) = delete;
 
     // Remember and later restore the depth-stencil texture mode of `texture`,
-    // bound to GL_TEXTURE_2D on texture unit `unit` (the active one) when called.
-    void save_depth_stencil_mode(GLuint texture, GLuint unit);
+    // bound to `target` (GL_TEXTURE_2D or GL_TEXTURE_2D_MULTISAMPLE) on
+    // texture unit `unit` (the active one) when called.
+    void save_depth_stencil_mode(GLuint texture, GLuint unit, GLenum target);
 
     // Save the pixel-unpack buffer binding and unpack pixel store, before an
     // upload or (re)allocation changes them: frames that upload nothing do
@@ -40,7 +42,7 @@ private:
     const GladGLContext& gl_;
     const GlCaps& caps_;
     GLint draw_fbo_ = 0, read_fbo_ = 0, program_ = 0, vao_ = 0, active_texture_ = 0;
-    GLint texture_2d_[kUnits] = {}, sampler_[kUnits] = {};
+    GLint texture_2d_[kUnits] = {}, texture_2d_ms_[kUnits] = {}, sampler_[kUnits] = {};
     GLint array_buffer_ = 0, uniform_buffer_ = 0, unpack_buffer_ = 0;
     GLuint ubo_index_[2] = {};
     GLint ubo_binding_[2] = {};
@@ -55,6 +57,10 @@ private:
               polygon_offset_fill_ = 0, color_logic_op_ = 0, sample_mask_ = 0, dither_ = 0, framebuffer_srgb_ = 0,
               multisample_ = 0, sample_alpha_to_coverage_ = 0;
     GLboolean blend_[kMaxBuffers] = {};
+    // Blend function and equation of draw buffer 0 (the multiply output mode
+    // sets them there; below GL 4.0 they are global).
+    GLint blend_src_rgb_ = 0, blend_dst_rgb_ = 0, blend_src_alpha_ = 0, blend_dst_alpha_ = 0;
+    GLint blend_equation_rgb_ = 0, blend_equation_alpha_ = 0;
     GLboolean color_mask_[kMaxBuffers][4] = {};
     GLboolean clip_distance_[8] = {};
     GLint polygon_mode_[2] = {};  // front, back (they differ only in a compatibility profile)
@@ -64,10 +70,17 @@ private:
     GLint unpack_[8] = {};
     bool unpack_saved_ = false;
     GLuint ds_texture_ = 0, ds_unit_ = 0;
+    GLenum ds_target_ = GL_TEXTURE_2D;
     GLint ds_mode_ = 0;
 };
 
 // Puts the pipeline into the state the passes assume (after the guard saved it).
 void set_pass_state(const GladGLContext& gl, const GlCaps& caps);
+
+// (1.2) Output mode MULTIPLY: blending on draw buffer 0 that multiplies the
+// target's rgb by the fragment's rgb and keeps its alpha, and (for an sRGB
+// target) in linear space; end_multiply_blend puts back set_pass_state's.
+void begin_multiply_blend(const GladGLContext& gl, const GlCaps& caps);
+void end_multiply_blend(const GladGLContext& gl);
 
 }  // namespace ssao_impl

@@ -13,66 +13,116 @@ namespace ssao_impl {
 
 namespace {
 
-// Is `name` a GL_TEXTURE_2D? Without GL 4.5's GL_TEXTURE_TARGET query only
-// "is a texture" can be checked without raising a GL error.
-bool is_texture_2d(ssao_context& ctx, GLuint name) {
-    if (name == 0 || !ctx.gl.IsTexture(name)) return false;
-    if (ctx.caps.texture_target_query) {
-        // A buffer texture has no GL_TEXTURE_TARGET to query (asking raises
-        // GL_INVALID_OPERATION) but answers its level-0 buffer query: it has
-        // a data store, which a GL_TEXTURE_2D never has.
-        GLint store = 0;
-        ctx.gl.GetTextureLevelParameteriv(name, 0, GL_TEXTURE_BUFFER_DATA_STORE_BINDING, &store);
-        if (store != 0) return false;
-        GLint target = 0;
-        ctx.gl.GetTextureParameteriv(name, GL_TEXTURE_TARGET, &target);
-        return target == GL_TEXTURE_2D;
-    }
-    return true;
+// What a texture name is, as far as can be told without binding it.
+enum class TexKind {
+    not_texture,  // 0 or no texture object
+    tex_2d,       // GL_TEXTURE_2D
+    tex_2d_ms,    // GL_TEXTURE_2D_MULTISAMPLE
+    other,        // another target (GL 4.5 query)
+    unknown,      // a texture; below GL 4.5 its target is found by binding it
+};
+
+// Without GL 4.5's GL_TEXTURE_TARGET query only "is a texture" can be checked
+// without raising a GL error.
+TexKind texture_kind(ssao_context& ctx, GLuint name) {
+    if (name == 0 || !ctx.gl.IsTexture(name)) return TexKind::not_texture;
+    if (!ctx.caps.texture_target_query) return TexKind::unknown;
+    // A buffer texture has no GL_TEXTURE_TARGET to query (asking raises
+    // GL_INVALID_OPERATION) but answers its level-0 buffer query: it has a
+    // data store, which a GL_TEXTURE_2D(_MULTISAMPLE) never has.
+    GLint store = 0;
+    ctx.gl.GetTextureLevelParameteriv(name, 0, GL_TEXTURE_BUFFER_DATA_STORE_BINDING, &store);
+    if (store != 0) return TexKind::other;
+    GLint target = 0;
+    ctx.gl.GetTextureParameteriv(name, GL_TEXTURE_TARGET, &target);
+    if (target == GL_TEXTURE_2D) return TexKind::tex_2d;
+    if (target == GL_TEXTURE_2D_MULTISAMPLE) return TexKind::tex_2d_ms;
+    return TexKind::other;
 }
 
-// Binds `name` to GL_TEXTURE_2D on `unit` and says whether it took: below GL
-// 4.5 a name of another target cannot be recognised beforehand, the bind then
+// Binds `name` to `target` on `unit` and says whether it took: below GL 4.5
+// a name of another target cannot be recognised beforehand, the bind then
 // fails (raising GL_INVALID_OPERATION) and leaves the previous binding.
-bool bind_2d(const GladGLContext& gl, GLuint unit, GLuint name) {
+bool bind_on(const GladGLContext& gl, GLuint unit, GLenum target, GLuint name) {
     gl.ActiveTexture(GL_TEXTURE0 + unit);
-    gl.BindTexture(GL_TEXTURE_2D, name);
+    gl.BindTexture(target, name);
     GLint bound = 0;
-    gl.GetIntegerv(GL_TEXTURE_BINDING_2D, &bound);
+    gl.GetIntegerv(target == GL_TEXTURE_2D ? GL_TEXTURE_BINDING_2D : GL_TEXTURE_BINDING_2D_MULTISAMPLE, &bound);
     return static_cast<GLuint>(bound) == name;
 }
 
-// Is level 0 of the texture bound to GL_TEXTURE_2D (on the active unit) of
-// an integer format (GL_INT or GL_UNSIGNED_INT components)?
-bool has_integer_format(const GladGLContext& gl) {
+bool bind_2d(const GladGLContext& gl, GLuint unit, GLuint name) { return bind_on(gl, unit, GL_TEXTURE_2D, name); }
+
+// Binds an input (depth or normal) on its target: GL_TEXTURE_2D or (1.2)
+// GL_TEXTURE_2D_MULTISAMPLE. Returns the target, or 0 when it is neither.
+// With GL 4.5 the target is known; below, `likely` is tried first and each
+// failed try raises GL_INVALID_OPERATION.
+GLenum bind_input(ssao_context& ctx, GLuint unit, GLuint name, GLenum likely) {
+    const TexKind kind = texture_kind(ctx, name);
+    GLenum order[2] = {likely, likely == GL_TEXTURE_2D ? GLenum(GL_TEXTURE_2D_MULTISAMPLE) : GLenum(GL_TEXTURE_2D)};
+    if (kind == TexKind::tex_2d) order[0] = order[1] = GL_TEXTURE_2D;
+    if (kind == TexKind::tex_2d_ms) order[0] = order[1] = GL_TEXTURE_2D_MULTISAMPLE;
+    if (bind_on(ctx.gl, unit, order[0], name)) return order[0];
+    if (order[1] != order[0] && bind_on(ctx.gl, unit, order[1], name)) return order[1];
+    return 0;
+}
+
+const char* target_name(GLenum target) {
+    return target == GL_TEXTURE_2D_MULTISAMPLE ? "GL_TEXTURE_2D_MULTISAMPLE" : "GL_TEXTURE_2D";
+}
+
+// Is level 0 of the texture bound to `target` (on the active unit) of an
+// integer format (GL_INT or GL_UNSIGNED_INT components)?
+bool has_integer_format(const GladGLContext& gl, GLenum target = GL_TEXTURE_2D) {
     GLint red_type = 0;
-    gl.GetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_RED_TYPE, &red_type);
+    gl.GetTexLevelParameteriv(target, 0, GL_TEXTURE_RED_TYPE, &red_type);
     return red_type == GL_INT || red_type == GL_UNSIGNED_INT;
 }
 
-void level0_size(const GladGLContext& gl, int& w, int& h) {
-    gl.GetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_WIDTH, &w);
-    gl.GetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_HEIGHT, &h);
+void level0_size(const GladGLContext& gl, int& w, int& h, GLenum target = GL_TEXTURE_2D) {
+    gl.GetTexLevelParameteriv(target, 0, GL_TEXTURE_WIDTH, &w);
+    gl.GetTexLevelParameteriv(target, 0, GL_TEXTURE_HEIGHT, &h);
 }
 
-// The host's normal texture: a GL_TEXTURE_2D of the depth texture's size
-// (dw x dh) with three non-integer colour channels.
-ssao_status inspect_normal_texture(ssao_context& ctx, GLuint name, int dw, int dh) {
+// Sample count of the texture bound to `target` (0 for a single-sample one).
+int sample_count(const GladGLContext& gl, GLenum target) {
+    if (target != GL_TEXTURE_2D_MULTISAMPLE) return 0;
+    GLint samples = 0;
+    gl.GetTexLevelParameteriv(target, 0, GL_TEXTURE_SAMPLES, &samples);
+    return samples;
+}
+
+// Every check of the normal texture, in one place: bound on SSAO_UNIT_NORMAL
+// on the depth texture's target, with the depth texture's size and sample
+// count, three non-integer channels.
+ssao_status inspect_normal(ssao_context& ctx, GLuint name, GLenum depth_target, int dw, int dh, int depth_samples) {
     const GladGLContext& gl = ctx.gl;
-    if (!bind_2d(gl, SSAO_UNIT_NORMAL, name))
-        return ctx.fail(SSAO_ERROR_INVALID_TEXTURE, "inputs.normal_texture is not a GL_TEXTURE_2D (it did not bind)");
+    const GLenum target = bind_input(ctx, SSAO_UNIT_NORMAL, name, depth_target);
+    if (target == 0)
+        return ctx.fail(SSAO_ERROR_INVALID_TEXTURE,
+                        "inputs.normal_texture is not a GL_TEXTURE_2D or GL_TEXTURE_2D_MULTISAMPLE (it did not bind)");
+    if (target != depth_target)
+        return ctx.fail(SSAO_ERROR_INVALID_TEXTURE,
+                        std::string("inputs.depth_texture is a ") + target_name(depth_target) +
+                            " but inputs.normal_texture is a " + target_name(target) +
+                            ": both must be multisampled (with the same sample count) or both single-sample");
+    const int samples = sample_count(gl, target);
+    if (samples != depth_samples)
+        return ctx.fail(SSAO_ERROR_INVALID_TEXTURE, "inputs.normal_texture has " + std::to_string(samples) +
+                                                        " samples but the depth texture has " +
+                                                        std::to_string(depth_samples) + "; they must match");
     int nw = 0, nh = 0;
-    level0_size(gl, nw, nh);
+    level0_size(gl, nw, nh, target);
     GLint red_bits = 0, blue_bits = 0;
-    gl.GetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_RED_SIZE, &red_bits);
-    gl.GetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_BLUE_SIZE, &blue_bits);
+    gl.GetTexLevelParameteriv(target, 0, GL_TEXTURE_RED_SIZE, &red_bits);
+    gl.GetTexLevelParameteriv(target, 0, GL_TEXTURE_BLUE_SIZE, &blue_bits);
     if (nw != dw || nh != dh)
         return ctx.fail(SSAO_ERROR_INVALID_TEXTURE, "inputs.normal_texture is " + std::to_string(nw) + "x" +
                                                         std::to_string(nh) + " but the depth texture is " +
                                                         std::to_string(dw) + "x" + std::to_string(dh));
     if (red_bits <= 0 || blue_bits <= 0)
         return ctx.fail(SSAO_ERROR_UNSUPPORTED_FORMAT, "inputs.normal_texture needs three colour channels (x, y, z)");
-    if (has_integer_format(gl))
+    if (has_integer_format(gl, target))
         return ctx.fail(SSAO_ERROR_UNSUPPORTED_FORMAT,
                         "inputs.normal_texture has an integer format; a float, unorm or snorm one is needed");
     return SSAO_OK;
@@ -106,12 +156,26 @@ ssao_status check_inputs(ssao_context& ctx, const ssao_inputs& in, AnalysedInput
     const ssao_status pst = analyse_projection(in.projection, in.clip_range, proj, why);
     if (pst != SSAO_OK) return ctx.fail(pst, "inputs.projection: " + why);
     if (in.depth_texture == 0) return ctx.fail(SSAO_ERROR_INVALID_TEXTURE, "inputs.depth_texture is 0");
-    if (!is_texture_2d(ctx, in.depth_texture))
-        return ctx.fail(SSAO_ERROR_INVALID_TEXTURE, "inputs.depth_texture is not the name of a GL_TEXTURE_2D");
-    if (!from_depth && !is_texture_2d(ctx, in.normal_texture))
-        return ctx.fail(SSAO_ERROR_INVALID_TEXTURE, "inputs.normal_texture is not the name of a GL_TEXTURE_2D");
-    if (in.output_texture != 0 && !is_texture_2d(ctx, in.output_texture))
-        return ctx.fail(SSAO_ERROR_INVALID_TEXTURE, "inputs.output_texture is not the name of a GL_TEXTURE_2D");
+    // Inputs: GL_TEXTURE_2D or (1.2) GL_TEXTURE_2D_MULTISAMPLE; below GL 4.5
+    // the target is found by binding (inspect_textures), which also checks
+    // that depth and normal agree.
+    const auto is_input_kind = [](TexKind k) {
+        return k == TexKind::tex_2d || k == TexKind::tex_2d_ms || k == TexKind::unknown;
+    };
+    if (!is_input_kind(texture_kind(ctx, in.depth_texture)))
+        return ctx.fail(SSAO_ERROR_INVALID_TEXTURE,
+                        "inputs.depth_texture is not the name of a GL_TEXTURE_2D or GL_TEXTURE_2D_MULTISAMPLE");
+    if (!from_depth && !is_input_kind(texture_kind(ctx, in.normal_texture)))
+        return ctx.fail(SSAO_ERROR_INVALID_TEXTURE,
+                        "inputs.normal_texture is not the name of a GL_TEXTURE_2D or GL_TEXTURE_2D_MULTISAMPLE");
+    if (in.output_texture != 0) {
+        const TexKind out_kind = texture_kind(ctx, in.output_texture);
+        if (out_kind == TexKind::tex_2d_ms)
+            return ctx.fail(SSAO_ERROR_INVALID_TEXTURE,
+                            "inputs.output_texture is a GL_TEXTURE_2D_MULTISAMPLE; the output must be a GL_TEXTURE_2D");
+        if (out_kind != TexKind::tex_2d && out_kind != TexKind::unknown)
+            return ctx.fail(SSAO_ERROR_INVALID_TEXTURE, "inputs.output_texture is not the name of a GL_TEXTURE_2D");
+    }
     if (in.output_texture != 0 && (in.output_texture == in.depth_texture || in.output_texture == in.normal_texture))
         return ctx.fail(SSAO_ERROR_INVALID_TEXTURE, "inputs.output_texture is also an input (a feedback loop)");
 
@@ -125,20 +189,25 @@ ssao_status check_inputs(ssao_context& ctx, const ssao_inputs& in, AnalysedInput
     out.signed_normals = !from_depth && in.normal_packing == SSAO_NORMAL_PACKING_SIGNED;
     out.normals_from_depth = from_depth;
     out.frame_index = in.frame_index;  // any value is valid
+    out.multiply_output = in.output_mode == SSAO_OUTPUT_MODE_MULTIPLY;
     return SSAO_OK;
 }
 
 ssao_status inspect_textures(ssao_context& ctx, const ssao_inputs& in, GlStateGuard& guard, AnalysedInputs& out) {
     const GladGLContext& gl = ctx.gl;
-    if (!bind_2d(gl, SSAO_UNIT_DEPTH, in.depth_texture))
-        return ctx.fail(SSAO_ERROR_INVALID_TEXTURE, "inputs.depth_texture is not a GL_TEXTURE_2D (it did not bind)");
+    const GLenum target = bind_input(ctx, SSAO_UNIT_DEPTH, in.depth_texture, ctx.last_input_target);
+    if (target != 0) ctx.last_input_target = target;
+    if (target == 0)
+        return ctx.fail(SSAO_ERROR_INVALID_TEXTURE,
+                        "inputs.depth_texture is not a GL_TEXTURE_2D or GL_TEXTURE_2D_MULTISAMPLE (it did not bind)");
     int dw = 0, dh = 0;
-    level0_size(gl, dw, dh);
+    level0_size(gl, dw, dh, target);
+    const int samples = sample_count(gl, target);
     DepthFormat fmt;
     GLint depth_bits = 0, depth_type = 0, stencil_bits = 0;
-    gl.GetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_DEPTH_SIZE, &depth_bits);
-    gl.GetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_DEPTH_TYPE, &depth_type);
-    gl.GetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_STENCIL_SIZE, &stencil_bits);
+    gl.GetTexLevelParameteriv(target, 0, GL_TEXTURE_DEPTH_SIZE, &depth_bits);
+    gl.GetTexLevelParameteriv(target, 0, GL_TEXTURE_DEPTH_TYPE, &depth_type);
+    gl.GetTexLevelParameteriv(target, 0, GL_TEXTURE_STENCIL_SIZE, &stencil_bits);
     fmt.bits = depth_bits;
     fmt.is_float = depth_type == GL_FLOAT;
     fmt.has_stencil = stencil_bits > 0;
@@ -149,13 +218,17 @@ ssao_status inspect_textures(ssao_context& ctx, const ssao_inputs& in, GlStateGu
                         "inputs.depth_texture has " + std::to_string(fmt.bits) + (fmt.is_float ? "-bit float" : "-bit") +
                             " depth; D16, D24, D24S8, D32F or D32FS8 is required");
     if (fmt.has_stencil) {
-        guard.save_depth_stencil_mode(in.depth_texture, SSAO_UNIT_DEPTH);
-        if (ctx.caps.depth_stencil_mode)
-            gl.TexParameteri(GL_TEXTURE_2D, GL_DEPTH_STENCIL_TEXTURE_MODE, GL_DEPTH_COMPONENT);
+        guard.save_depth_stencil_mode(in.depth_texture, SSAO_UNIT_DEPTH, target);
+        if (ctx.caps.depth_stencil_mode) gl.TexParameteri(target, GL_DEPTH_STENCIL_TEXTURE_MODE, GL_DEPTH_COMPONENT);
     }
+    // (1.2) Multisampled inputs: the sample read at every pixel must exist.
+    if (samples > 0 && in.sample_index >= static_cast<uint32_t>(samples))
+        return ctx.fail(SSAO_ERROR_INVALID_VALUE, "inputs.sample_index is " + std::to_string(in.sample_index) +
+                                                      " but the inputs have " + std::to_string(samples) +
+                                                      " samples (0.." + std::to_string(samples - 1) + ")");
     if (in.normal_texture != 0) {
-        const ssao_status nst = inspect_normal_texture(ctx, in.normal_texture, dw, dh);
-        if (nst != SSAO_OK) return nst;
+        const ssao_status normal_status = inspect_normal(ctx, in.normal_texture, target, dw, dh, samples);
+        if (normal_status != SSAO_OK) return normal_status;
     }
 
     int vx = in.viewport[0], vy = in.viewport[1], vw = in.viewport[2], vh = in.viewport[3];
@@ -198,6 +271,9 @@ ssao_status inspect_textures(ssao_context& ctx, const ssao_inputs& in, GlStateGu
     out.depth_texture = in.depth_texture;
     out.normal_texture = in.normal_texture;
     out.output_texture = in.output_texture;
+    out.multisample = samples > 0;
+    out.samples = samples;
+    out.sample_index = samples > 0 ? static_cast<int>(in.sample_index) : 0;
     return SSAO_OK;
 }
 

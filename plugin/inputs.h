@@ -39,6 +39,10 @@ struct AnalysedInputs {
     // grid pass reads sample `sample_index` of each pixel.
     bool multisample = false;
     int sample_index = 0;
+    int samples = 0;  // the inputs' sample count (0: single-sample GL_TEXTURE_2D)
+    // (1.2) output_mode MULTIPLY: the final pass multiplies AO into the host's
+    // output texture instead of overwriting it.
+    bool multiply_output = false;
     // (1.2) No normal texture: the grid pass rebuilds normals from depth.
     bool normals_from_depth = false;
     // (1.2) inputs.frame_index: 0 = the fixed noise pattern, else the

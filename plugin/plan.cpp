@@ -71,6 +71,7 @@ TexRef add_grid_pass(Builder& b, const AnalysedInputs& in, int scale, const Rect
     if (!in.normals_from_depth) down.inputs[SSAO_UNIT_NORMAL] = TexRef::of(Source::normal);
     down.scale = scale;
     down.variant = host_input_variant(in) | (in.normals_from_depth ? variant::normals_from_depth : 0u);
+    down.sample_index = in.sample_index;
     return grid;
 }
 
@@ -135,6 +136,7 @@ void plan_sampling(Builder& b, const ssao_settings& s, const AnalysedInputs& in,
     up.inputs[SSAO_UNIT_AO] = low_ao;
     up.scale = scale;
     up.variant = host_input_variant(in);
+    up.sample_index = in.sample_index;
 }
 
 // Debug views RAW_AO and BLUR_WEIGHTS (settings.debug_view): the same passes
@@ -209,12 +211,19 @@ FramePlan plan_frame(const ssao_settings& s, const AnalysedInputs& in) {
     Builder b(plan);
     if (plan_normals_view(b, s, in, output, final_rect)) return plan;
     if (s.strength == SSAO_STRENGTH_OFF) {
+        // Multiplying the host's image by 1 changes nothing: no pass at all
+        // (passes_run 0, the host's texture untouched).
+        if (in.multiply_output) return plan;
         // Strength 0: no sampling at all, the output is exactly 1.
         b.add(PassKind::clear, ProgramId::none, output, final_rect);
         return plan;
     }
     if (plan_ao_debug_view(b, s, in, output, final_rect, plan)) return plan;
     plan_sampling(b, s, in, output, final_rect);
+    // Multiply mode: the one pass that writes the output blends into it.
+    if (in.multiply_output)
+        for (int i = 0; i < plan.pass_count; ++i)
+            if (plan.passes[i].target == output) plan.passes[i].multiply = true;
     return plan;
 }
 

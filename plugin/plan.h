@@ -142,6 +142,13 @@ struct Pass {
     // spans several pixels and the upsample could not undo a leak.
     bool depth_aware = false;
     uint32_t variant = 0;  // bits of `variant::`: which compiled variant of `program` runs
+    // (1.2) Variant MULTISAMPLE: the sample of the host's multisampled depth
+    // and normal this pass reads at every pixel (u_sample_index).
+    int sample_index = 0;
+    // (1.2) Output mode MULTIPLY: the pass writes the host's lit image through
+    // blending, rgb = dst.rgb * src.rgb, alpha kept (the runner sets the blend;
+    // the shader writes AO to rgb as in overwrite mode).
+    bool multiply = false;
 };
 
 // A texture the plan renders into and a later pass samples.

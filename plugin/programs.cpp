@@ -12,6 +12,7 @@ PassUniforms find_pass_uniforms(const GladGLContext& gl, GLuint program) {
     u.pass_size = gl.GetUniformLocation(program, "u_pass_size");
     u.scale = gl.GetUniformLocation(program, "u_scale");
     u.depth_aware = gl.GetUniformLocation(program, "u_depth_aware");
+    u.sample_index = gl.GetUniformLocation(program, "u_sample_index");
     return u;
 }
 
@@ -22,6 +23,7 @@ void set_pass_uniforms(const GladGLContext& gl, const PassUniforms& u, const Pas
     gl.Uniform2i(u.pass_size, pass.rect.width, pass.rect.height);
     gl.Uniform1i(u.scale, pass.scale);
     gl.Uniform1i(u.depth_aware, pass.depth_aware ? 1 : 0);
+    gl.Uniform1i(u.sample_index, pass.sample_index);
 }
 
 }  // namespace ssao_impl

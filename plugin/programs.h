@@ -19,6 +19,7 @@ struct PassUniforms {
     GLint pass_size = -1;      // u_pass_size: Pass::rect's size (the grid a blur walks)
     GLint scale = -1;          // u_scale: Pass::scale
     GLint depth_aware = -1;    // u_depth_aware: Pass::depth_aware
+    GLint sample_index = -1;   // u_sample_index: Pass::sample_index (variant MULTISAMPLE)
 };
 
 PassUniforms find_pass_uniforms(const GladGLContext& gl, GLuint program);

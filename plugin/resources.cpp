@@ -70,6 +70,11 @@ GLuint PlanTextures::resolve(const TexRef& ref) const {
     return 0;
 }
 
+GLenum PlanTextures::target_of(const TexRef& ref) const {
+    const bool host_input = ref.source == TexRef::Source::depth || ref.source == TexRef::Source::normal;
+    return host_input ? input_target : GLenum(GL_TEXTURE_2D);
+}
+
 bool resources_stale(const ssao_context& ctx, const FramePlan& plan) {
     for (int i = 0; i < plan.intermediate_count; ++i)
         if (intermediate_stale(ctx, plan, i)) return true;
@@ -95,6 +100,7 @@ ssao_status update_resources(ssao_context& ctx, const FramePlan& plan, const Ana
 
     out.depth = in.depth_texture;
     out.normal = in.normal_texture;
+    out.input_target = in.multisample ? GLenum(GL_TEXTURE_2D_MULTISAMPLE) : GLenum(GL_TEXTURE_2D);
     out.noise = ctx.noise_texture;
     out.output = plan.owned_output ? ctx.output : in.output_texture;
     for (int i = 0; i < kMaxIntermediates; ++i) out.intermediates[i] = ctx.intermediates[i];

@@ -16,7 +16,11 @@ namespace ssao_impl {
 struct PlanTextures {
     GLuint depth = 0, normal = 0, noise = 0, output = 0;
     GLuint intermediates[kMaxIntermediates] = {};
+    // (1.2) The target of the host's depth and normal: GL_TEXTURE_2D or
+    // GL_TEXTURE_2D_MULTISAMPLE. Everything of the library's is GL_TEXTURE_2D.
+    GLenum input_target = GL_TEXTURE_2D;
     GLuint resolve(const TexRef& ref) const;
+    GLenum target_of(const TexRef& ref) const;
 };
 
 // Whether update_resources will (re)allocate anything for `plan`.

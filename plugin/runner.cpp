@@ -10,43 +10,53 @@ namespace ssao_impl {
 
 namespace {
 
-// What each of the library's texture units holds, so a pass binds only what
-// changes. Unknown: whatever the host or an upload left there.
+// What each of the library's texture units holds on its two targets
+// (GL_TEXTURE_2D and, for multisampled inputs, GL_TEXTURE_2D_MULTISAMPLE), so
+// a pass binds only what changes. Unknown: whatever the host or an upload
+// left there. A program samples a unit through one sampler type, so a
+// texture left on the unit's other target is never read.
 class UnitBindings {
 public:
     UnitBindings(const GladGLContext& gl, const PlanTextures& t) : gl_(gl) {
         // inspect_textures left the host's depth and normal textures bound.
-        set_known(SSAO_UNIT_DEPTH, t.depth);
-        set_known(SSAO_UNIT_NORMAL, t.normal);
+        const int k = slot(t.input_target);
+        set_known(SSAO_UNIT_DEPTH, k, t.depth);
+        set_known(SSAO_UNIT_NORMAL, k, t.normal);
     }
 
-    // Binds the pass's inputs; a unit it does not sample keeps its texture
-    // unless that is unknown or the pass's target (never sample what we
-    // render into), which is unbound.
+    // Binds the pass's inputs, each on its target; a unit whose 2D target it
+    // does not sample keeps its texture there unless that is unknown or the
+    // pass's own target (never sample what we render into), which is
+    // unbound. The multisample target only ever holds the host's inputs,
+    // which are never rendered into, so it is left as it is when unused.
     void bind_for(const Pass& pass, const PlanTextures& t) {
         const GLuint target = t.resolve(pass.target);
         for (GLuint u = 0; u < SSAO_UNITS_USED; ++u) {
             const bool sampled = pass.inputs[u].source != TexRef::Source::none;
-            const GLuint want = sampled ? t.resolve(pass.inputs[u]) : 0;
-            if (sampled || !known_[u] || texture_[u] == target) bind(u, want);
+            const bool sampled_2d = sampled && t.target_of(pass.inputs[u]) == GL_TEXTURE_2D;
+            if (sampled && !sampled_2d) bind(u, kMs, t.resolve(pass.inputs[u]));
+            const GLuint want = sampled_2d ? t.resolve(pass.inputs[u]) : 0;
+            if (sampled_2d || !known_[u][k2d] || texture_[u][k2d] == target) bind(u, k2d, want);
         }
     }
 
 private:
-    void set_known(GLuint unit, GLuint texture) {
-        known_[unit] = true;
-        texture_[unit] = texture;
+    static constexpr int k2d = 0, kMs = 1;
+    static int slot(GLenum target) { return target == GL_TEXTURE_2D_MULTISAMPLE ? kMs : k2d; }
+    void set_known(GLuint unit, int k, GLuint texture) {
+        known_[unit][k] = true;
+        texture_[unit][k] = texture;
     }
-    void bind(GLuint unit, GLuint texture) {
-        if (known_[unit] && texture_[unit] == texture) return;
+    void bind(GLuint unit, int k, GLuint texture) {
+        if (known_[unit][k] && texture_[unit][k] == texture) return;
         gl_.ActiveTexture(GL_TEXTURE0 + unit);
-        gl_.BindTexture(GL_TEXTURE_2D, texture);
-        set_known(unit, texture);
+        gl_.BindTexture(k == kMs ? GLenum(GL_TEXTURE_2D_MULTISAMPLE) : GLenum(GL_TEXTURE_2D), texture);
+        set_known(unit, k, texture);
     }
 
     const GladGLContext& gl_;
-    bool known_[SSAO_UNITS_USED] = {};
-    GLuint texture_[SSAO_UNITS_USED] = {};
+    bool known_[SSAO_UNITS_USED][2] = {};
+    GLuint texture_[SSAO_UNITS_USED][2] = {};
 };
 
 // Strength 0: the pass's rectangle of its target cleared to 1 (scissored:
@@ -97,7 +107,9 @@ void run_plan(ssao_context& ctx, const FramePlan& plan, const PlanTextures& text
                 clear_to_one(gl, pass);
             } else {
                 units.bind_for(pass, textures);
+                if (pass.multiply) begin_multiply_blend(gl, ctx.caps);
                 draw(ctx, pass);
+                if (pass.multiply) end_multiply_blend(gl);
             }
         }
         stamp_pass(ctx, slot, i);

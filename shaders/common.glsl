@@ -2,7 +2,15 @@
 // reconstruction with the inverse projection, and the depth step used for the
 // format-aware bias.
 
+#ifdef SSAO_MULTISAMPLE
+// (1.2) The host's depth is a GL_TEXTURE_2D_MULTISAMPLE: every pixel reads
+// sample u_sample_index (Pass::sample_index). Only the passes that read the
+// host's textures (the grid pass, the upsample) have this variant.
+uniform sampler2DMS u_depth_tex;
+uniform int u_sample_index;
+#else
 uniform sampler2D u_depth_tex;
+#endif
 
 // Where viewport pixel (0,0) (or grid texel (0,0)) lands in the pass's render target.
 uniform ivec2 u_target_origin;
@@ -12,7 +20,11 @@ uniform ivec2 u_target_origin;
 uniform int u_scale;
 
 // The host's depth at viewport pixel vpx.
+#ifdef SSAO_MULTISAMPLE
+float input_depth(ivec2 vpx) { return texelFetch(u_depth_tex, vpx + u_viewport.xy, u_sample_index).r; }
+#else
 float input_depth(ivec2 vpx) { return texelFetch(u_depth_tex, vpx + u_viewport.xy, 0).r; }
+#endif
 
 // The grid: ceil(viewport / scale) texels, so an odd size's last block is
 // partial and still has its texel.

@@ -94,7 +94,7 @@ void main() {
         // Unit length but not yet turned towards the camera (raw_normal,
         // sampling.glsl): the visibility pass must see which normals face
         // away; zero marks a broken one.
-        n = decode_raw_normal(texelFetch(u_normal_tex, p + u_viewport.xy, 0).xyz, n) ? normalize(n) : vec3(0.0);
+        n = decode_raw_normal(input_normal(p), n) ? normalize(n) : vec3(0.0);
 #endif
     }
     o_ao = vec4(d, n);

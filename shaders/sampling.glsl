@@ -2,13 +2,24 @@
 // ray-marched visibility): the output packing, the normal as the pass sees it,
 // the tangent basis, and the per-pixel rotation and step jitter.
 
+#ifdef SSAO_MULTISAMPLE
+uniform sampler2DMS u_normal_tex;  // (1.2) multisampled: sample u_sample_index (common.glsl)
+#else
 uniform sampler2D u_normal_tex;
+#endif
 uniform sampler2D u_noise_tex;
 uniform bool u_pack_depth;  // writing the blur's RG32F input: (ao, view z)
 
 out vec4 o_ao;
 
 vec4 result(float ao, float z) { return u_pack_depth ? vec4(ao, z, 0.0, 1.0) : vec4(ao, ao, ao, 1.0); }
+
+// The host's stored normal at viewport pixel vpx.
+#ifdef SSAO_MULTISAMPLE
+vec3 input_normal(ivec2 vpx) { return texelFetch(u_normal_tex, vpx + u_viewport.xy, u_sample_index).xyz; }
+#else
+vec3 input_normal(ivec2 vpx) { return texelFetch(u_normal_tex, vpx + u_viewport.xy, 0).xyz; }
+#endif
 
 bool finite3(vec3 v) { return all(lessThan(abs(v), vec3(3.0e38))) && !any(isnan(v)); }
 
@@ -58,7 +69,7 @@ bool raw_normal(ivec2 t, out vec3 n) {
     n = texelFetch(u_normal_tex, t, 0).yzw;
     return dot(n, n) > 0.5;
 #else
-    return decode_raw_normal(texelFetch(u_normal_tex, t + u_viewport.xy, 0).xyz, n);
+    return decode_raw_normal(input_normal(t), n);
 #endif
 }
 

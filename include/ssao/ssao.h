@@ -48,13 +48,15 @@
  * GL state
  * - execute saves and restores, in one guard, every piece of GL state it
  *   changes: draw and read framebuffer bindings, current program, vertex array
- *   binding, active texture unit and the 2D texture and sampler bindings of
- *   every unit it uses (units 0..SSAO_TEXTURE_UNITS_USED-1), array, uniform and
+ *   binding, active texture unit and the 2D texture, (1.2) 2D multisample
+ *   texture and sampler bindings of every unit it uses (units
+ *   0..SSAO_TEXTURE_UNITS_USED-1), array, uniform and
  *   pixel-unpack buffer bindings (and the indexed uniform bindings 0 and 1),
  *   viewport and scissor box (every index of a GL 4.1 viewport array), enables
  *   (scissor, depth, stencil, blend per draw buffer, cull face, rasterizer
  *   discard, polygon offset, colour logic op, sample mask, dither, framebuffer
- *   sRGB, multisample, alpha-to-coverage, clip distances 0-7), polygon mode,
+ *   sRGB, multisample, alpha-to-coverage, clip distances 0-7), (1.2) the blend
+ *   function and equation of draw buffer 0 (all buffers' below GL 4.0), polygon mode,
  *   colour/depth/stencil write masks, clip control (where supported), the
  *   depth-stencil texture mode of a D24S8/D32FS8 input (GL 4.3+) and the
  *   unpack pixel-store parameters.
@@ -71,7 +73,10 @@
  * - Below GL 4.5 a texture name of another target (a 2D array, say) cannot be
  *   told from a 2D texture without binding it: the failed bind raises
  *   GL_INVALID_OPERATION, which the host's debug output will see, and execute
- *   returns SSAO_ERROR_INVALID_TEXTURE.
+ *   returns SSAO_ERROR_INVALID_TEXTURE. (1.2) An input is tried as
+ *   GL_TEXTURE_2D and as GL_TEXTURE_2D_MULTISAMPLE, the target the previous
+ *   execute's inputs had first: a name of neither raises two errors, and a
+ *   host whose inputs change between the two targets one per change.
  * - Requirements: a GL 3.3 core context or newer. Clip control (4.5 or
  *   ARB_clip_control), timer queries and GL_TEXTURE_TARGET queries (4.5) are
  *   used when present.
@@ -351,7 +356,10 @@ typedef enum ssao_output_mode {
     SSAO_OUTPUT_MODE_DEFAULT = 0,     /* = SSAO_OUTPUT_MODE_OVERWRITE */
     SSAO_OUTPUT_MODE_OVERWRITE = 1,   /* the viewport rectangle's channels are overwritten: rgb = AO, a = 1 */
     SSAO_OUTPUT_MODE_MULTIPLY = 2,    /* the host's lit image: its RGB at the viewport rectangle is multiplied
-                                         by AO through blending (alpha untouched); needs output_texture */
+                                         by AO through blending (alpha untouched); needs output_texture.
+                                         An sRGB texture is multiplied in linear space. With strength
+                                         SSAO_STRENGTH_OFF no pass runs (passes_run 0) and the texture is
+                                         untouched; ssao_output still names it at the viewport's origin */
     SSAO_OUTPUT_MODE_MAX_ENUM = 0x7fffffff  /* not a value: keeps the enum 32 bits wide */
 } ssao_output_mode;
 

@@ -43,10 +43,12 @@ inline Snapshot snapshot(GladGLContext& gl, int units = 4) {
     gl.GetIntegerv(GL_ACTIVE_TEXTURE, &active);
     for (int u = 0; u < units; ++u) {
         gl.ActiveTexture(GL_TEXTURE0 + u);
-        GLint t = 0, smp = 0;
+        GLint t = 0, smp = 0, ms = 0;
         gl.GetIntegerv(GL_TEXTURE_BINDING_2D, &t);
         gl.GetIntegerv(GL_SAMPLER_BINDING, &smp);
+        gl.GetIntegerv(GL_TEXTURE_BINDING_2D_MULTISAMPLE, &ms);  // (1.2) MSAA inputs
         s["unit" + std::to_string(u) + ".texture_2d"] = t;
+        s["unit" + std::to_string(u) + ".texture_2d_multisample"] = ms;
         s["unit" + std::to_string(u) + ".sampler"] = smp;
     }
     gl.ActiveTexture(static_cast<GLenum>(active));

@@ -91,8 +91,12 @@ TEST_CASE("below GL 4.5 a texture of another target is refused (INVALID_TEXTURE)
     GLint bound = 0;
     gl.GetIntegerv(GL_TEXTURE_BINDING_2D, &bound);
     CHECK(static_cast<GLuint>(bound) == depth);
-    // GL itself reports the failed bind (documented): exactly that one error.
-    CHECK(fx.gl_errors().size() == 1);
+    // GL itself reports the failed binds (documented): exactly those two
+    // errors, GL_TEXTURE_2D then (1.2) GL_TEXTURE_2D_MULTISAMPLE.
+    CHECK(fx.gl_errors().size() == 2);
+    GLint bound_ms = 0;
+    gl.GetIntegerv(GL_TEXTURE_BINDING_2D_MULTISAMPLE, &bound_ms);
+    CHECK(bound_ms == 0);
     gl.DeleteTextures(1, &array);
 }
 

@@ -1,0 +1,118 @@
+// MSAA inputs on a genuine GL 3.3 core context (issue 12, feature 2): no
+// GL_TEXTURE_TARGET query there, so the library tells a multisampled input
+// from a 2D one by binding it (see test_plugin_gl33.cpp for how the context
+// is made). The first execute tries the previous frame's target (2D at
+// first): that failed bind raises one GL_INVALID_OPERATION, documented in
+// ssao.h; a host that keeps multisampled inputs raises none after that.
+#define DOCTEST_CONFIG_IMPLEMENT
+#include <doctest/doctest.h>
+
+#include "gl_fixture.h"
+#include "msaa_copy.h"
+#include "test_scenes.h"
+
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+using analytic::GBuffer;
+using testscenes::crease_scene;
+using testscenes::kFov;
+
+namespace {
+
+// The bindings the MSAA path touches (gl_state_snapshot.h reads GL 4.x state a
+// 3.3 context does not have): both texture targets of units 0..3, the active
+// unit, the blend function and equation.
+std::vector<GLint> bindings(GladGLContext& gl) {
+    std::vector<GLint> v;
+    GLint active = 0;
+    gl.GetIntegerv(GL_ACTIVE_TEXTURE, &active);
+    v.push_back(active);
+    for (GLenum u = 0; u < 4; ++u) {
+        gl.ActiveTexture(GL_TEXTURE0 + u);
+        GLint t = 0, ms = 0;
+        gl.GetIntegerv(GL_TEXTURE_BINDING_2D, &t);
+        gl.GetIntegerv(GL_TEXTURE_BINDING_2D_MULTISAMPLE, &ms);
+        v.push_back(t);
+        v.push_back(ms);
+    }
+    gl.ActiveTexture(static_cast<GLenum>(active));
+    for (GLenum e : {GL_BLEND_SRC_RGB, GL_BLEND_DST_RGB, GL_BLEND_SRC_ALPHA, GL_BLEND_DST_ALPHA, GL_BLEND_EQUATION_RGB,
+                     GL_BLEND_EQUATION_ALPHA, GL_DRAW_FRAMEBUFFER_BINDING, GL_CURRENT_PROGRAM}) {
+        GLint x = 0;
+        gl.GetIntegerv(e, &x);
+        v.push_back(x);
+    }
+    return v;
+}
+
+}  // namespace
+
+TEST_CASE("GL 3.3: MSAA inputs give the single-sample AO and errors are refused and bindings are restored") {
+    setenv("MESA_GL_VERSION_OVERRIDE", "3.3", 1);
+    testgl::Fixture fx(3, 3);
+    auto& gl = fx.gl();
+    const std::string version = reinterpret_cast<const char*>(gl.GetString(GL_VERSION));
+    REQUIRE(version.rfind("3.3", 0) == 0);
+    const int w = 32, h = 24;
+    const auto proj = analytic::perspective(kFov, double(w) / h, 0.1, 100.0);
+    const GBuffer g = analytic::render(crease_scene(), proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, w, h);
+    const msaa::Textures single{fx.make_depth(GL_DEPTH_COMPONENT32F, w, h, g.depth),
+                                fx.make_normals(GL_RGBA8, w, h, g.normal)};
+    const msaa::Textures ms = msaa::make(gl, {single}, w, h, 4, GL_DEPTH_COMPONENT32F, GL_RGBA8);
+    ssao_settings s = testscenes::make(16, SSAO_BLUR_DEPTH_AWARE);
+    s.output_format = SSAO_OUTPUT_R16F;
+    s.radius = 1.5f;
+    for (ssao_method method : {SSAO_METHOD_KERNEL, SSAO_METHOD_VISIBILITY}) {
+        CAPTURE(method);
+        s.method = method;
+        fx.settings(s);
+        ssao_inputs in = fx.inputs(single.depth, single.normal, proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE);
+        in.normal_packing = SSAO_NORMAL_PACKING_UNORM;
+        ssao_output out{};
+        out.size = sizeof out;
+        REQUIRE(fx.api().execute(fx.ctx(), &in, &out) == SSAO_OK);
+        const auto want = fx.read_red(out.texture, w, h);
+        in.depth_texture = ms.depth;
+        in.normal_texture = ms.normal;
+        in.sample_index = 2;
+        const size_t errors_before = fx.gl_errors().size();
+        // The host's own textures on both targets of units 0..3, and its blending.
+        GLuint host[8] = {};
+        gl.GenTextures(8, host);
+        for (GLenum u = 0; u < 4; ++u) {
+            gl.ActiveTexture(GL_TEXTURE0 + u);
+            gl.BindTexture(GL_TEXTURE_2D, host[u]);
+            gl.BindTexture(GL_TEXTURE_2D_MULTISAMPLE, host[4 + u]);
+        }
+        gl.ActiveTexture(GL_TEXTURE1);
+        gl.BlendFuncSeparate(GL_SRC_ALPHA, GL_ONE, GL_DST_COLOR, GL_ZERO);
+        gl.BlendEquationSeparate(GL_FUNC_SUBTRACT, GL_MAX);
+        const std::vector<GLint> before = bindings(gl);
+        REQUIRE(fx.api().execute(fx.ctx(), &in, &out) == SSAO_OK);
+        // At most the one failed 2D bind of the first multisampled frame.
+        CHECK(fx.gl_errors().size() - errors_before <= 1);
+        const size_t errors_after_first = fx.gl_errors().size();
+        REQUIRE(fx.api().execute(fx.ctx(), &in, &out) == SSAO_OK);
+        CHECK(fx.gl_errors().size() == errors_after_first);  // a steady MSAA host: no failed bind
+        CHECK(bindings(gl) == before);
+        CHECK(fx.read_red(out.texture, w, h) == want);
+    }
+    // Refusals found by binding: mixed targets and a sample index out of range.
+    ssao_inputs in = fx.inputs(ms.depth, single.normal, proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE);
+    ssao_output out{};
+    out.size = sizeof out;
+    CHECK(fx.api().execute(fx.ctx(), &in, &out) == SSAO_ERROR_INVALID_TEXTURE);
+    CHECK(std::string(fx.api().last_error(fx.ctx())).find("both must be multisampled") != std::string::npos);
+    in.normal_texture = ms.normal;
+    in.sample_index = 4;
+    CHECK(fx.api().execute(fx.ctx(), &in, &out) == SSAO_ERROR_INVALID_VALUE);
+    CHECK(std::string(fx.api().last_error(fx.ctx())).find("sample_index") != std::string::npos);
+}
+
+int main(int argc, char** argv) {
+    doctest::Context context;
+    context.applyCommandLine(argc, argv);
+    return context.run();
+}
