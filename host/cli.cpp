@@ -315,7 +315,6 @@ std::string help_text(const ssao_settings* d, const std::string& default_scene, 
          "  --debug-view " << debug_view_text::choices() << "\n"
          "                          one more execute with this debug view, written to debug_view.png (normal\n"
          "                          views: RGB, n*0.5+0.5; raw-ao, blur-weights: grey) (default none)\n"
-         }},
          "  --msaa N                the plugin reads a G-buffer rendered with N samples per pixel, 1..32\n"
          "                          (GL_TEXTURE_2D_MULTISAMPLE; default 1 = single-sample); the lighting uses\n"
          "                          the single-sample G-buffer\n"
