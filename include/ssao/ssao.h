@@ -239,7 +239,10 @@ typedef enum ssao_output_format {
  * the anchors' debug modes, for looking at what the pass sees. The normal views
  * write the view-space normal packed as n * 0.5 + 0.5 into red, green and blue;
  * the library's own output is then RGBA8 (output_format is ignored). A host
- * texture needs three channels for them. */
+ * texture needs three channels for them. A view overwrites the output
+ * rectangle whatever inputs.output_mode says: in MULTIPLY mode it replaces
+ * the host's lit image there (RGB = the view, alpha = 1), so the view is what
+ * the host shows. */
 typedef enum ssao_debug_view {
     SSAO_DEBUG_VIEW_NONE = 0,         /* the AO (default) */
     SSAO_DEBUG_VIEW_NORMALS = 1,      /* the normals the sampling pass reads (the G-buffer's, rotated and

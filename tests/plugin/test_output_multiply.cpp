@@ -302,3 +302,51 @@ TEST_CASE("MULTIPLY restores the blend state it changes and strength off runs no
     CHECK(fx.api().execute(fx.ctx(), &in, &out) == SSAO_ERROR_UNSUPPORTED_FORMAT);
     CHECK(fx.gl_errors().empty());
 }
+
+TEST_CASE("a debug view overwrites the output rectangle in MULTIPLY mode too: the view is what the host sees") {
+    // ssao.h (ssao_debug_view): a view replaces the AO whatever output_mode
+    // says; multiplying a lit image by packed normals or blur weights would
+    // show neither. BLUR_WEIGHTS without a blur is the clear pass: it must
+    // write 1 there, not clear the host's image.
+    testgl::Fixture fx;
+    auto& gl = fx.gl();
+    const Frame f = make_frame(fx);
+    const std::vector<uint8_t> lit = lit_pixels();
+    const struct {
+        ssao_debug_view view;
+        ssao_blur blur;
+    } cases[] = {{SSAO_DEBUG_VIEW_RAW_AO, SSAO_BLUR_DEPTH_AWARE},
+                 {SSAO_DEBUG_VIEW_BLUR_WEIGHTS, SSAO_BLUR_DEPTH_AWARE},
+                 {SSAO_DEBUG_VIEW_BLUR_WEIGHTS, SSAO_BLUR_NONE},
+                 {SSAO_DEBUG_VIEW_NORMALS, SSAO_BLUR_NONE},
+                 {SSAO_DEBUG_VIEW_RECONSTRUCTED_NORMALS, SSAO_BLUR_NONE}};
+    for (const auto& c : cases) {
+        CAPTURE(c.view);
+        CAPTURE(c.blur);
+        ssao_settings s = settings_for(SSAO_METHOD_VISIBILITY, SSAO_RESOLUTION_FULL, c.blur);
+        s.debug_view = c.view;
+        fx.settings(s);
+        // The view in overwrite mode, as RGBA8 like the lit image.
+        const GLuint reference = make_texture(gl, GL_RGBA8, GL_UNSIGNED_BYTE, lit.data());
+        ssao_inputs in = inputs_for(fx, f, reference, SSAO_OUTPUT_MODE_OVERWRITE);
+        REQUIRE(fx.api().execute(fx.ctx(), &in, nullptr) == SSAO_OK);
+        const auto want = read_rgba<uint8_t>(gl, reference, GL_UNSIGNED_BYTE);
+        gl.DeleteTextures(1, &reference);
+
+        const GLuint target = make_texture(gl, GL_RGBA8, GL_UNSIGNED_BYTE, lit.data());
+        in = inputs_for(fx, f, target, SSAO_OUTPUT_MODE_MULTIPLY);
+        ssao_output out{};
+        out.size = sizeof out;
+        REQUIRE(fx.api().execute(fx.ctx(), &in, &out) == SSAO_OK);
+        CHECK(out.passes_run != 0u);
+        const auto got = read_rgba<uint8_t>(gl, target, GL_UNSIGNED_BYTE);
+        gl.DeleteTextures(1, &target);
+        CHECK(got == want);
+        // Inside the viewport the view replaced the lit image (alpha = 1).
+        int alpha_one = 0;
+        for (int y = kVY; y < kVY + kVH; ++y)
+            for (int x = kVX; x < kVX + kVW; ++x) alpha_one += got[(size_t(y) * kTW + x) * 4 + 3] == 255;
+        CHECK(alpha_one == kVW * kVH);
+    }
+    CHECK(fx.gl_errors().empty());
+}
