@@ -108,6 +108,17 @@ World& world() {
         gl.BindTexture(GL_TEXTURE_2D_MULTISAMPLE, t);
         gl.TexStorage2DMultisample(GL_TEXTURE_2D_MULTISAMPLE, 4, GL_RGBA8, 16, 16, GL_TRUE);
         x->textures.push_back(t);
+        // (1.2) Multisampled inputs: depth and normals of matching and of
+        // mismatched sample counts.
+        const struct { GLenum format; int samples; } ms[] = {
+            {GL_DEPTH_COMPONENT32F, 4}, {GL_DEPTH24_STENCIL8, 2}, {GL_RGBA16F, 4}, {GL_RGBA16F, 2}};
+        for (const auto& m : ms) {
+            gl.GenTextures(1, &t);
+            gl.BindTexture(GL_TEXTURE_2D_MULTISAMPLE, t);
+            gl.TexStorage2DMultisample(GL_TEXTURE_2D_MULTISAMPLE, m.samples, m.format, 16, 16, GL_TRUE);
+            x->textures.push_back(t);
+        }
+        gl.BindTexture(GL_TEXTURE_2D_MULTISAMPLE, 0);
         GLuint buffer = 0;
         gl.GenBuffers(1, &buffer);
         gl.BindBuffer(GL_TEXTURE_BUFFER, buffer);
@@ -179,7 +190,8 @@ ssao_settings decode_settings(Reader& r) {
         if (mode < 30) s.size = sizeof s;
         return s;
     }
-    s.size = mode < 250 ? sizeof s : r.u32();
+    // Every published size (1.0, 1.1, 1.2), or any.
+    s.size = mode < 200 ? sizeof s : mode < 220 ? SSAO_SETTINGS_SIZE_1_1 : mode < 240 ? SSAO_SETTINGS_SIZE_1_0 : r.u32();
     s.sample_count = r.small_or_raw(70);
     const uint8_t floats = r.u8();
     if (floats & 1) s.radius = r.f32();
@@ -198,6 +210,17 @@ ssao_settings decode_settings(Reader& r) {
     std::memcpy(&s.output_format, &fmt, 4);
     s.seed = r.u8();
     s.blur_radius = r.small_or_raw(18);
+    // 1.1 and 1.2 fields.
+    const uint32_t method = r.small_or_raw(4), resolution = r.small_or_raw(5), view = r.small_or_raw(6);
+    std::memcpy(&s.method, &method, 4);
+    std::memcpy(&s.resolution, &resolution, 4);
+    std::memcpy(&s.debug_view, &view, 4);
+    s.step_count = r.small_or_raw(34);
+    const uint8_t more = r.u8();
+    if (more & 1) s.thickness = r.f32();
+    if (more & 2) s.fade_start = r.f32();
+    if (more & 4) s.fade_end = r.f32();
+    if (more & 8) s.radius_pixels = r.f32();
     return s;
 }
 
@@ -229,7 +252,7 @@ GLuint pick_texture(World& w, Reader& r) {
 ssao_inputs decode_inputs(World& w, Reader& r) {
     ssao_inputs in{};
     const uint8_t size_mode = r.u8();
-    in.size = size_mode < 250 ? sizeof in : r.u32();
+    in.size = size_mode < 230 ? sizeof in : size_mode < 250 ? SSAO_INPUTS_SIZE_1_1 : r.u32();
     in.depth_texture = pick_texture(w, r);
     in.normal_texture = pick_texture(w, r);
     in.output_texture = r.u8() < 160 ? 0 : pick_texture(w, r);
@@ -245,6 +268,11 @@ ssao_inputs decode_inputs(World& w, Reader& r) {
     if (vp >= 128) {
         for (int i = 0; i < 4; ++i) in.viewport[i] = vp >= 240 ? static_cast<int32_t>(r.u32()) : r.u8() % 20 - 2;
     }
+    // 1.2: the sample read, the output mode, the TAA frame index.
+    in.sample_index = r.small_or_raw(6);
+    const uint32_t mode = r.small_or_raw(4);
+    std::memcpy(&in.output_mode, &mode, 4);
+    in.frame_index = r.u8() < 128 ? 0u : r.u32();
     return in;
 }
 
