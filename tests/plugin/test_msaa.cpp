@@ -119,6 +119,46 @@ TEST_CASE("4x MSAA inputs whose samples equal the single-sample G-buffer give it
     CHECK(fx.gl_errors().empty());
 }
 
+TEST_CASE("4x MSAA depth without a normal texture: each sample_index gives its own scene's depth-only AO bit for bit") {
+    // Features 1 and 2 together: the grid pass rebuilds each normal from the
+    // chosen sample of its neighbours. Samples 0 and 2 hold the crease, 1 and
+    // 3 the floor, so a neighbour read from another sample would show.
+    testgl::Fixture fx;
+    auto& gl = fx.gl();
+    const auto proj = projection();
+    const GBuffer a = analytic::render(crease_scene(), proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, kW, kH);
+    const GBuffer b = analytic::render(floor_scene(), proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, kW, kH);
+    const msaa::Textures ta{fx.make_depth(GL_DEPTH_COMPONENT32F, kW, kH, a.depth),
+                            fx.make_normals(GL_RGBA16F, kW, kH, a.normal)};
+    const msaa::Textures tb{fx.make_depth(GL_DEPTH_COMPONENT32F, kW, kH, b.depth),
+                            fx.make_normals(GL_RGBA16F, kW, kH, b.normal)};
+    const msaa::Textures ms = msaa::make(gl, {ta, tb}, kW, kH, 4, GL_DEPTH_COMPONENT32F, GL_RGBA16F);
+    for (ssao_method method : {SSAO_METHOD_KERNEL, SSAO_METHOD_VISIBILITY})
+        for (ssao_resolution res : {SSAO_RESOLUTION_FULL, SSAO_RESOLUTION_HALF}) {
+            CAPTURE(method);
+            CAPTURE(res);
+            fx.settings(settings_for(method, res));
+            const Run ref_a = execute(fx, fx.inputs(ta.depth, 0, proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE));
+            const Run ref_b = execute(fx, fx.inputs(tb.depth, 0, proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE));
+            REQUIRE(ref_a.status == SSAO_OK);
+            REQUIRE(ref_b.status == SSAO_OK);
+            REQUIRE(ref_a.ao != ref_b.ao);
+            for (uint32_t sample = 0; sample < 4; ++sample) {
+                CAPTURE(sample);
+                ssao_inputs in = fx.inputs(ms.depth, 0, proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE);
+                in.sample_index = sample;
+                const Run got = execute(fx, in);
+                REQUIRE(got.status == SSAO_OK);
+                CHECK(got.ao == (sample % 2 == 0 ? ref_a.ao : ref_b.ao));
+            }
+        }
+    for (const msaa::Textures& t : {ms, ta, tb}) {
+        gl.DeleteTextures(1, &t.depth);
+        gl.DeleteTextures(1, &t.normal);
+    }
+    CHECK(fx.gl_errors().empty());
+}
+
 TEST_CASE("sample_index picks the sample: samples holding two different scenes give each scene's AO") {
     testgl::Fixture fx;
     auto& gl = fx.gl();
