@@ -212,8 +212,9 @@ FramePlan plan_frame(const ssao_settings& s, const AnalysedInputs& in) {
     if (plan_normals_view(b, s, in, output, final_rect)) return plan;
     if (s.strength == SSAO_STRENGTH_OFF) {
         // Multiplying the host's image by 1 changes nothing: no pass at all
-        // (passes_run 0, the host's texture untouched).
-        if (in.multiply_output) return plan;
+        // (passes_run 0, the host's texture untouched). A debug view
+        // overwrites whatever the output mode (ssao.h): its 1s are cleared.
+        if (in.multiply_output && s.debug_view == SSAO_DEBUG_VIEW_NONE) return plan;
         // Strength 0: no sampling at all, the output is exactly 1.
         b.add(PassKind::clear, ProgramId::none, output, final_rect);
         return plan;

@@ -103,9 +103,14 @@ ssao_status add_program(ssao_context& ctx, ProgramId id, uint32_t variant) {
     CompiledProgram compiled;
     compiled.id = id;
     compiled.variant = variant;
+    // Room first: a push_back that throws after linking would leak the program.
+    ctx.programs.reserve(ctx.programs.size() + 1);
     const ssao_status st = link(ctx, fragment_source(id, variant), name.c_str(), compiled.program);
     if (st != SSAO_OK) {
         if (compiled.program) ctx.gl.DeleteProgram(compiled.program);
+        compiled.program = 0;
+        compiled.failed = true;
+        ctx.programs.push_back(compiled);
         return st;
     }
     label_object(ctx, GL_PROGRAM, compiled.program, info.label);
@@ -136,7 +141,14 @@ ssao_status compile_base_programs(ssao_context& ctx) {
 ssao_status compile_plan_programs(ssao_context& ctx, const FramePlan& plan) {
     for (int i = 0; i < plan.pass_count; ++i) {
         const Pass& pass = plan.passes[i];
-        if (pass.program == ProgramId::none || find(ctx, pass.program, pass.variant)) continue;
+        if (pass.program == ProgramId::none) continue;
+        if (const CompiledProgram* known = find(ctx, pass.program, pass.variant)) {
+            if (known->failed)
+                return ctx.fail(SSAO_ERROR_SHADER, std::string("program ") + program_info(pass.program).file_name +
+                                                       " (variant " + std::to_string(pass.variant) +
+                                                       ") failed to compile on an earlier execute; it is not retried");
+            continue;
+        }
         const ssao_status st = add_program(ctx, pass.program, pass.variant);
         if (st != SSAO_OK) return st;
     }

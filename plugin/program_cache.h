@@ -22,6 +22,9 @@ struct CompiledProgram {
     uint32_t variant = 0;
     GLuint program = 0;
     PassUniforms uniforms;
+    // It failed to compile or link (program 0): kept so that later frames
+    // return SHADER at once instead of compiling it again every execute.
+    bool failed = false;
 };
 
 // create_context: variant 0 of every program but the debug views' (compiled
@@ -30,7 +33,8 @@ struct CompiledProgram {
 ssao_status compile_base_programs(ssao_context& ctx);
 
 // execute, after planning: every (program, variant) the plan runs. SHADER
-// when one fails to compile; OUT_OF_MEMORY is left to the caller's guard.
+// when one fails to compile (then, or on an earlier execute: a failed variant
+// is not compiled again); OUT_OF_MEMORY is left to the caller's guard.
 ssao_status compile_plan_programs(ssao_context& ctx, const FramePlan& plan);
 
 // The compiled program of a pass (compile_plan_programs ran for its plan).

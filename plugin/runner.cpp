@@ -18,10 +18,12 @@ namespace {
 class UnitBindings {
 public:
     UnitBindings(const GladGLContext& gl, const PlanTextures& t) : gl_(gl) {
-        // inspect_textures left the host's depth and normal textures bound.
+        // inspect_textures left the host's depth and normal textures bound;
+        // without a normal texture (depth-only input) it did not touch the
+        // normal unit, which then holds whatever the host left: unknown.
         const int k = slot(t.input_target);
         set_known(SSAO_UNIT_DEPTH, k, t.depth);
-        set_known(SSAO_UNIT_NORMAL, k, t.normal);
+        if (t.normal != 0) set_known(SSAO_UNIT_NORMAL, k, t.normal);
     }
 
     // Binds the pass's inputs, each on its target; a unit whose 2D target it

@@ -239,7 +239,8 @@ typedef enum ssao_output_format {
  * the anchors' debug modes, for looking at what the pass sees. The normal views
  * write the view-space normal packed as n * 0.5 + 0.5 into red, green and blue;
  * the library's own output is then RGBA8 (output_format is ignored). A host
- * texture needs three channels for them. A view overwrites the output
+ * texture needs three channels for them (else UNSUPPORTED_FORMAT); sky
+ * pixels have no normal and read (0.5, 0.5, 0.5). A view overwrites the output
  * rectangle whatever inputs.output_mode says: in MULTIPLY mode it replaces
  * the host's lit image there (RGB = the view, alpha = 1), so the view is what
  * the host shows. */
@@ -362,7 +363,8 @@ typedef enum ssao_output_mode {
                                          by AO through blending (alpha untouched); needs output_texture.
                                          An sRGB texture is multiplied in linear space. With strength
                                          SSAO_STRENGTH_OFF no pass runs (passes_run 0) and the texture is
-                                         untouched; ssao_output still names it at the viewport's origin */
+                                         untouched; ssao_output still names it at the viewport's origin.
+                                         A debug view is not multiplied: it overwrites (ssao_debug_view) */
     SSAO_OUTPUT_MODE_MAX_ENUM = 0x7fffffff  /* not a value: keeps the enum 32 bits wide */
 } ssao_output_mode;
 
@@ -399,7 +401,10 @@ typedef struct ssao_inputs {
     uint32_t frame_index;        /* 0: the fixed noise pattern of every earlier version. Otherwise the
                                     per-pixel rotation and step jitter move along a low-discrepancy sequence
                                     indexed by it, so a host's TAA averages the noise away: pass the frame
-                                    number (any uint32; a fixed index gives bit-identical output) */
+                                    number (any uint32; a fixed index gives bit-identical output). With
+                                    rotation NONE the whole kernel turns from frame to frame. The first
+                                    execute with a nonzero index compiles the variant that does this
+                                    (a one-time cost; SHADER if the driver cannot compile it) */
 } ssao_inputs;
 
 /* sizeof(ssao_inputs) as interfaces 1.0 and 1.1 defined it; the library accepts it. */
@@ -413,12 +418,15 @@ typedef struct ssao_output {
 } ssao_output;
 
 typedef enum ssao_pass {
-    SSAO_PASS_AO = 1,            /* the sampling pass */
+    SSAO_PASS_AO = 1,            /* the sampling pass (or, with a normals debug view, the pass writing it) */
     SSAO_PASS_BLUR_X = 2,        /* horizontal blur (or the box blur's single pass) */
     SSAO_PASS_BLUR_Y = 4,        /* vertical blur */
-    SSAO_PASS_CLEAR = 8,         /* strength 0: output cleared to 1, nothing sampled */
-    SSAO_PASS_DOWNSAMPLE = 16,   /* half/quarter resolution: depth and normal of one picked texel per
-                                    block into the reduced grid (counted in ssao_timings.ao_ms) */
+    SSAO_PASS_CLEAR = 8,         /* strength 0 (or BLUR_WEIGHTS without a blur): output cleared to 1,
+                                    nothing sampled */
+    SSAO_PASS_DOWNSAMPLE = 16,   /* the grid pass: depth and normal of one picked texel per block into
+                                    the grid the sampling pass reads (counted in ssao_timings.ao_ms). Runs
+                                    at half/quarter resolution, and (1.2) at full resolution for
+                                    multisampled inputs, depth-only input and the normals debug views */
     SSAO_PASS_UPSAMPLE = 32,     /* half/quarter resolution: depth-aware upsample of the reduced
                                     grid's AO to every viewport pixel (counted in blur_ms) */
     /* Where KHR_debug is present each pass runs inside a debug group named

@@ -84,7 +84,7 @@ TEST_CASE("frame noise: a fixed frame index gives bit-identical AO twice, index 
     CHECK(fx.gl_errors().empty());
 }
 
-TEST_CASE("frame noise: the mean of 16 consecutive frame indices is >= 2.5x closer (RMSE) to the converged AO than any single frame") {
+TEST_CASE("frame noise: the mean of 16 consecutive frame indices is >= 3.5x closer (RMSE) to the converged AO than any single frame (sqrt(16) = 4 expected)") {
     HC_EACH_METHOD(method);
     testgl::Fixture fx;
     const int W = 64, H = 48;
@@ -131,7 +131,7 @@ TEST_CASE("frame noise: the mean of 16 consecutive frame indices is >= 2.5x clos
                               << best_single / avg);
             MESSAGE("  against 64 samples x 16 steps: single frame " << rmse(fr.run(first), many_samples)
                                                                << ", mean of 16 " << rmse(mean16, many_samples));
-            CHECK(best_single / avg >= 2.5);
+            CHECK(best_single / avg >= 3.5);  // measured 4.0-4.7 (visibility), 7.1-8.2 (kernel)
         }
     }
     CHECK(fx.gl_errors().empty());

@@ -127,6 +127,37 @@ TEST_CASE("normals view: the library's own output is RGBA8 holding n * 0.5 + 0.5
     CHECK(fx.gl_errors().empty());
 }
 
+TEST_CASE("normals view: a host output texture without blue is refused (UNSUPPORTED_FORMAT), with RGB it is written") {
+    testgl::Fixture fx;
+    auto& gl = fx.gl();
+    const auto proj = analytic::perspective_zo(hc::kFov, double(kW) / kH, 0.1, 100.0);
+    const GBuffer g = crease_scene(proj, SSAO_CLIP_ZERO_TO_ONE);
+    const GLuint dt = fx.make_depth(GL_DEPTH_COMPONENT32F, kW, kH, g.depth);
+    for (ssao_debug_view view : {SSAO_DEBUG_VIEW_NORMALS, SSAO_DEBUG_VIEW_RECONSTRUCTED_NORMALS, SSAO_DEBUG_VIEW_NONE}) {
+        CAPTURE(view);
+        ssao_settings s{};
+        s.size = sizeof s;
+        s.debug_view = view;
+        fx.settings(s);
+        for (GLenum format : {GLenum(GL_R8), GLenum(GL_RG16F), GLenum(GL_RGBA8)}) {
+            CAPTURE(format);
+            GLuint t = 0;
+            gl.GenTextures(1, &t);
+            gl.BindTexture(GL_TEXTURE_2D, t);
+            gl.TexStorage2D(GL_TEXTURE_2D, 1, format, kW, kH);
+            gl.BindTexture(GL_TEXTURE_2D, 0);
+            ssao_inputs in = fx.inputs(dt, 0, proj, SSAO_CLIP_ZERO_TO_ONE);
+            in.output_texture = t;
+            const bool refused = view != SSAO_DEBUG_VIEW_NONE && format != GL_RGBA8;
+            const ssao_status st = fx.api().execute(fx.ctx(), &in, nullptr);
+            CHECK(st == (refused ? SSAO_ERROR_UNSUPPORTED_FORMAT : SSAO_OK));
+            if (refused) CHECK(std::string(fx.api().last_error(fx.ctx())).find("red, green and blue") != std::string::npos);
+            gl.DeleteTextures(1, &t);
+        }
+    }
+    CHECK(fx.gl_errors().empty());
+}
+
 TEST_CASE("depth-only input: normal_texture 0 ignores normal space, packing and view matrix; a bad depth texture is still refused") {
     testgl::Fixture fx;
     auto& gl = fx.gl();

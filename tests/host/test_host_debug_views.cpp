@@ -210,8 +210,6 @@ TEST_CASE("--debug-view none (the default) runs no extra execute and writes no d
     }
 }
 
-// The plugin side of these two views comes with depth-only input (issue 12
-// feature 1); until it is merged the views write the AO and this fails.
 TEST_CASE("--debug-view normals views: RGB pictures of the normals, n*0.5+0.5") {
     // The G-buffer's normals at full resolution: the host's own normals.png.
     {

@@ -350,3 +350,36 @@ TEST_CASE("a debug view overwrites the output rectangle in MULTIPLY mode too: th
     }
     CHECK(fx.gl_errors().empty());
 }
+
+TEST_CASE("strength off in MULTIPLY mode: no pass and the lit image untouched, but an AO debug view still writes its 1s") {
+    testgl::Fixture fx;
+    auto& gl = fx.gl();
+    const Frame f = make_frame(fx);
+    const std::vector<uint8_t> lit = lit_pixels();
+    for (ssao_debug_view view : {SSAO_DEBUG_VIEW_NONE, SSAO_DEBUG_VIEW_RAW_AO, SSAO_DEBUG_VIEW_BLUR_WEIGHTS}) {
+        CAPTURE(view);
+        ssao_settings s = settings_for(SSAO_METHOD_VISIBILITY, SSAO_RESOLUTION_FULL, SSAO_BLUR_DEPTH_AWARE);
+        s.strength = SSAO_STRENGTH_OFF;
+        s.debug_view = view;
+        fx.settings(s);
+        const GLuint target = make_texture(gl, GL_RGBA8, GL_UNSIGNED_BYTE, lit.data());
+        ssao_inputs in = inputs_for(fx, f, target, SSAO_OUTPUT_MODE_MULTIPLY);
+        ssao_output out{};
+        out.size = sizeof out;
+        REQUIRE(fx.api().execute(fx.ctx(), &in, &out) == SSAO_OK);
+        const auto got = read_rgba<uint8_t>(gl, target, GL_UNSIGNED_BYTE);
+        gl.DeleteTextures(1, &target);
+        const bool view_on = view != SSAO_DEBUG_VIEW_NONE;
+        CHECK(out.passes_run == (view_on ? uint32_t(SSAO_PASS_CLEAR) : 0u));
+        int wrong = 0;
+        for (int y = 0; y < kTH; ++y)
+            for (int x = 0; x < kTW; ++x)
+                for (int ch = 0; ch < 4; ++ch) {
+                    const size_t i = (size_t(y) * kTW + x) * 4 + ch;
+                    const int want = view_on && in_viewport(x, y) ? 255 : lit[i];
+                    wrong += got[i] != want;
+                }
+        CHECK(wrong == 0);
+    }
+    CHECK(fx.gl_errors().empty());
+}
