@@ -11,6 +11,8 @@
 #include "msaa_copy.h"
 #include "test_scenes.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <string>
 #include <vector>
@@ -109,6 +111,63 @@ TEST_CASE("GL 3.3: MSAA inputs give the single-sample AO and errors are refused 
     in.sample_index = 4;
     CHECK(fx.api().execute(fx.ctx(), &in, &out) == SSAO_ERROR_INVALID_VALUE);
     CHECK(std::string(fx.api().last_error(fx.ctx())).find("sample_index") != std::string::npos);
+}
+
+TEST_CASE("GL 3.3: MULTIPLY blends through the non-indexed blend state and restores it and the blend enable") {
+    setenv("MESA_GL_VERSION_OVERRIDE", "3.3", 1);
+    testgl::Fixture fx(3, 3);
+    auto& gl = fx.gl();
+    REQUIRE(std::string(reinterpret_cast<const char*>(gl.GetString(GL_VERSION))).rfind("3.3", 0) == 0);
+    const int w = 32, h = 24;
+    const auto proj = analytic::perspective(kFov, double(w) / h, 0.1, 100.0);
+    const GBuffer g = analytic::render(crease_scene(), proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, w, h);
+    const GLuint depth = fx.make_depth(GL_DEPTH_COMPONENT32F, w, h, g.depth);
+    const GLuint normal = fx.make_normals(GL_RGBA8, w, h, g.normal);
+    ssao_settings s = testscenes::make(16, SSAO_BLUR_DEPTH_AWARE);
+    s.output_format = SSAO_OUTPUT_R16F;
+    s.radius = 1.5f;
+    fx.settings(s);
+    ssao_inputs in = fx.inputs(depth, normal, proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE);
+    in.normal_packing = SSAO_NORMAL_PACKING_UNORM;
+    ssao_output out{};
+    out.size = sizeof out;
+    REQUIRE(fx.api().execute(fx.ctx(), &in, &out) == SSAO_OK);
+    const auto ao = fx.read_red(out.texture, w, h);
+    // A grey lit image (RGBA32F: the blender's product is exact).
+    std::vector<float> lit(size_t(w) * h * 4, 0.75f);
+    GLuint target = 0;
+    gl.GenTextures(1, &target);
+    gl.BindTexture(GL_TEXTURE_2D, target);
+    gl.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, w, h, 0, GL_RGBA, GL_FLOAT, lit.data());
+    gl.BindTexture(GL_TEXTURE_2D, 0);
+    for (bool host_blend : {false, true}) {
+        CAPTURE(host_blend);
+        if (host_blend) gl.Enable(GL_BLEND); else gl.Disable(GL_BLEND);
+        gl.BlendFuncSeparate(GL_SRC_ALPHA, GL_ONE, GL_DST_COLOR, GL_ZERO);
+        gl.BlendEquationSeparate(GL_FUNC_SUBTRACT, GL_MAX);
+        const std::vector<GLint> before = bindings(gl);
+        gl.BindTexture(GL_TEXTURE_2D, target);
+        gl.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, w, h, 0, GL_RGBA, GL_FLOAT, lit.data());
+        gl.BindTexture(GL_TEXTURE_2D, 0);
+        in.output_texture = target;
+        in.output_mode = SSAO_OUTPUT_MODE_MULTIPLY;
+        REQUIRE(fx.api().execute(fx.ctx(), &in, nullptr) == SSAO_OK);
+        CHECK(bindings(gl) == before);
+        CHECK(bool(gl.IsEnabled(GL_BLEND)) == host_blend);
+        std::vector<float> got(size_t(w) * h * 4);
+        gl.BindTexture(GL_TEXTURE_2D, target);
+        gl.GetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_FLOAT, got.data());
+        gl.BindTexture(GL_TEXTURE_2D, 0);
+        // The reference AO went through R16F; the multiplied one did not.
+        int wrong = 0;
+        for (size_t i = 0; i < ao.size(); ++i) {
+            for (int c = 0; c < 3; ++c) wrong += std::abs(got[i * 4 + c] - 0.75f * ao[i]) > 1e-3f;
+            wrong += got[i * 4 + 3] != 0.75f;  // alpha untouched
+        }
+        CHECK(wrong == 0);
+        CHECK(*std::min_element(ao.begin(), ao.end()) < 0.9f);  // there was occlusion to multiply
+    }
+    CHECK(fx.gl_errors().empty());
 }
 
 int main(int argc, char** argv) {
