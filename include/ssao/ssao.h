@@ -252,7 +252,9 @@ typedef enum ssao_debug_view {
     SSAO_DEBUG_VIEW_RAW_AO = 3,       /* the sampling pass's AO before any blur (upsampled without depth
                                          weights below full resolution) */
     SSAO_DEBUG_VIEW_BLUR_WEIGHTS = 4, /* the share of the blur's gaussian weight that passed the depth test
-                                         (1 = nothing rejected); 1 everywhere for blurs that ignore depth */
+                                         (1 = nothing rejected; separable blurs: the product of both
+                                         passes' shares); 1 everywhere for blurs that ignore depth and
+                                         without a blur */
     SSAO_DEBUG_VIEW_MAX_ENUM = 0x7fffffff  /* not a value: keeps the enum 32 bits wide */
 } ssao_debug_view;
 
