@@ -11,6 +11,7 @@
 #include <tinyexr.h>
 
 #include "debug_view_text.h"
+#include "run_program.h"
 
 #include <sys/wait.h>
 #include <unistd.h>
@@ -31,50 +32,14 @@ const std::string kHost = SSAO_HOST_EXE;
 const std::string kNested = SSAO_SOURCE_DIR "/tests/host/data/nested.gltf";
 const std::string kWork = SSAO_TEST_WORK_DIR;
 
-std::string read_file(const std::string& path) {
-    std::ifstream f(path, std::ios::binary);
-    std::ostringstream s;
-    s << f.rdbuf();
-    return s.str();
-}
+using testrun::Run;
+using testrun::read_file;
+using testrun::shell_quote;
 
-std::string fresh_dir(const std::string& name) {
-    const fs::path p = fs::path(kWork) / ("debug_views_" + name);
-    fs::remove_all(p);
-    fs::create_directories(p);
-    return p.string();
-}
-
-std::string shell_quote(const std::string& s) {
-    std::string q = "'";
-    for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return q + "'";
-}
-
-struct Run {
-    int exit_code = -1;  // -1: a signal or the timeout
-    std::string out, err;
-};
+std::string fresh_dir(const std::string& name) { return testrun::fresh_dir(kWork, name); }
 
 // ssao-host with `args` under a 60 s timeout.
-Run run_host(const std::vector<std::string>& args) {
-    static int counter = 0;
-    const fs::path logs = fs::path(kWork) / "logs";
-    fs::create_directories(logs);
-    const std::string tag = "dv_" + std::to_string(::getpid()) + "_" + std::to_string(counter++);
-    const std::string out_path = (logs / ("out_" + tag)).string(), err_path = (logs / ("err_" + tag)).string();
-    std::string cmd = "timeout -s KILL 60 " + shell_quote(kHost);
-    for (const auto& a : args) cmd += " " + shell_quote(a);
-    cmd += " >" + shell_quote(out_path) + " 2>" + shell_quote(err_path);
-    const int status = std::system(cmd.c_str());
-    Run r;
-    if (WIFEXITED(status) && WEXITSTATUS(status) < 128) r.exit_code = WEXITSTATUS(status);
-    r.out = read_file(out_path);
-    r.err = read_file(err_path);
-    fs::remove(out_path);
-    fs::remove(err_path);
-    return r;
-}
+Run run_host(const std::vector<std::string>& args) { return testrun::run(kHost, args, kWork + "/logs"); }
 
 struct Png {
     int w = 0, h = 0, channels = 0;

@@ -7,6 +7,8 @@
 #include <doctest/doctest.h>
 #include <tinyexr.h>
 
+#include "run_program.h"
+
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -26,49 +28,13 @@ const std::string kHost = SSAO_HOST_EXE;
 const std::string kData = SSAO_SOURCE_DIR "/tests/host/data";
 const std::string kWork = SSAO_TEST_WORK_DIR "/fade";
 
-std::string read_file(const std::string& path) {
-    std::ifstream f(path, std::ios::binary);
-    std::ostringstream s;
-    s << f.rdbuf();
-    return s.str();
-}
+using testrun::Run;
+using testrun::read_file;
 
-std::string fresh_dir(const std::string& name) {
-    const fs::path p = fs::path(kWork) / name;
-    fs::remove_all(p);
-    fs::create_directories(p);
-    return p.string();
-}
-
-std::string quote(const std::string& s) {
-    std::string q = "'";
-    for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return q + "'";
-}
-
-struct Run {
-    int exit_code = -1;
-    std::string out, err;
-};
+std::string fresh_dir(const std::string& name) { return testrun::fresh_dir(kWork, name); }
 
 // ssao-host with `args` under a 60 s timeout; stdout and stderr captured.
-Run run_host(const std::vector<std::string>& args) {
-    static int counter = 0;
-    fs::create_directories(kWork);
-    const std::string tag = std::to_string(::getpid()) + "_" + std::to_string(counter++);
-    const std::string out_path = kWork + "/out_" + tag, err_path = kWork + "/err_" + tag;
-    std::string cmd = "timeout -s KILL 60 " + quote(kHost);
-    for (const auto& a : args) cmd += " " + quote(a);
-    cmd += " >" + quote(out_path) + " 2>" + quote(err_path);
-    const int status = std::system(cmd.c_str());
-    Run r;
-    if (WIFEXITED(status) && WEXITSTATUS(status) < 128) r.exit_code = WEXITSTATUS(status);
-    r.out = read_file(out_path);
-    r.err = read_file(err_path);
-    fs::remove(out_path);
-    fs::remove(err_path);
-    return r;
-}
+Run run_host(const std::vector<std::string>& args) { return testrun::run(kHost, args, kWork); }
 
 std::vector<float> load_exr(const std::string& path) {
     float* rgba = nullptr;

@@ -8,6 +8,8 @@
 #define STB_IMAGE_IMPLEMENTATION
 #include <stb/stb_image.h>
 
+#include "run_program.h"
+
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -27,40 +29,11 @@ namespace {
 const std::string kHost = SSAO_HOST_EXE;
 const std::string kWork = SSAO_TEST_WORK_DIR;
 
-std::string fresh_dir(const std::string& name) {
-    const fs::path p = fs::path(kWork) / name;
-    fs::remove_all(p);
-    fs::create_directories(p);
-    return p.string();
-}
+using testrun::Run;
 
-std::string quote(const std::string& s) {
-    std::string q = "'";
-    for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return q + "'";
-}
+std::string fresh_dir(const std::string& name) { return testrun::fresh_dir(kWork, name); }
 
-struct Run {
-    int exit_code = -1;
-    std::string err;
-};
-
-Run run_host(const std::vector<std::string>& args) {
-    fs::create_directories(kWork);
-    const std::string err_path = (fs::path(kWork) / ("err_msaa_" + std::to_string(::getpid()))).string();
-    std::string cmd = "timeout -s KILL 60 " + quote(kHost);
-    for (const auto& a : args) cmd += " " + quote(a);
-    cmd += " >/dev/null 2>" + quote(err_path);
-    const int status = std::system(cmd.c_str());
-    Run r;
-    if (WIFEXITED(status)) r.exit_code = WEXITSTATUS(status);
-    std::ifstream f(err_path);
-    std::ostringstream s;
-    s << f.rdbuf();
-    r.err = s.str();
-    fs::remove(err_path);
-    return r;
-}
+Run run_host(const std::vector<std::string>& args) { return testrun::run(kHost, args, kWork + "/logs"); }
 
 std::vector<float> load_exr(const std::string& path, int& w, int& h) {
     float* rgba = nullptr;

@@ -14,6 +14,7 @@
 #include "debug_view_text.h"
 #include "overlay.h"
 #include "plugin_loader.h"
+#include "run_program.h"
 #include "scene.h"
 
 #include <GLFW/glfw3.h>
@@ -49,42 +50,16 @@ void tap(viewer::Controls& c, int key) {
     c.key(key, GLFW_RELEASE);
 }
 
-std::string read_file(const std::string& path) {
-    std::ifstream f(path, std::ios::binary);
-    std::ostringstream s;
-    s << f.rdbuf();
-    return s.str();
-}
+using testrun::Run;
+using testrun::read_file;
 
-std::string fresh_dir(const std::string& name) {
-    const fs::path p = fs::path(kWork) / ("debug_views_" + name);
-    fs::remove_all(p);
-    fs::create_directories(p);
-    return p.string();
-}
+std::string fresh_dir(const std::string& name) { return testrun::fresh_dir(kWork, name); }
+std::string quote(const std::string& s) { return testrun::shell_quote(s); }
 
-std::string quote(const std::string& s) {
-    std::string q = "'";
-    for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return q + "'";
-}
-
-struct Run {
-    int exit_code = -1;
-    std::string out, err;
-};
-
+// `program` under `prefix` (xvfb-run for the viewer), logs beside its output in `dir`.
 Run run(const std::string& prefix, const std::string& program, const std::vector<std::string>& args,
         const std::string& dir) {
-    std::string cmd = prefix + " timeout -s KILL 120 " + quote(program);
-    for (const auto& a : args) cmd += " " + quote(a);
-    cmd += " >" + quote(dir + "/stdout.txt") + " 2>" + quote(dir + "/stderr.txt");
-    const int status = std::system(cmd.c_str());
-    Run r;
-    if (WIFEXITED(status) && WEXITSTATUS(status) <= 128) r.exit_code = WEXITSTATUS(status);
-    r.out = read_file(dir + "/stdout.txt");
-    r.err = read_file(dir + "/stderr.txt");
-    return r;
+    return testrun::run(program, args, dir, 120, prefix);
 }
 
 struct Png {
