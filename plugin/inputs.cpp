@@ -255,12 +255,15 @@ ssao_status inspect_textures(ssao_context& ctx, const ssao_inputs& in, GlStateGu
             return ctx.fail(SSAO_ERROR_UNSUPPORTED_FORMAT,
                             "inputs.output_texture has an integer format; a float, unorm or snorm one is needed");
         // The normal debug views write x, y, z into red, green and blue (ssao.h).
+        // Queried only then: no extra GL query in a frame without a view.
         const uint32_t view = ctx.settings.debug_view;
-        GLint blue_bits = 0;
-        gl.GetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_BLUE_SIZE, &blue_bits);
-        if ((view == SSAO_DEBUG_VIEW_NORMALS || view == SSAO_DEBUG_VIEW_RECONSTRUCTED_NORMALS) && blue_bits <= 0)
-            return ctx.fail(SSAO_ERROR_UNSUPPORTED_FORMAT,
-                            "a normals debug view needs an output_texture with red, green and blue channels");
+        if (view == SSAO_DEBUG_VIEW_NORMALS || view == SSAO_DEBUG_VIEW_RECONSTRUCTED_NORMALS) {
+            GLint blue_bits = 0;
+            gl.GetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_BLUE_SIZE, &blue_bits);
+            if (blue_bits <= 0)
+                return ctx.fail(SSAO_ERROR_UNSUPPORTED_FORMAT,
+                                "a normals debug view needs an output_texture with red, green and blue channels");
+        }
         // Checked before anything of the library's changes: a refused call
         // leaves the library's own output as it was.
         gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, in.output_texture, 0);
