@@ -48,7 +48,14 @@ glm::vec3 vec3(const std::string& flag, const std::string& text) {
     if (parts.size() != 3 || (!text.empty() && text.back() == ','))
         fail(flag + " expects three comma-separated numbers x,y,z, got " + quoted(text));
     glm::vec3 v;
-    for (int i = 0; i < 3; ++i) v[i] = static_cast<float>(number(flag, parts[static_cast<size_t>(i)]));
+    for (int i = 0; i < 3; ++i) {
+        const double d = number(flag, parts[static_cast<size_t>(i)]);
+        // A finite double beyond float's range would become inf (and the
+        // conversion itself is undefined behaviour): refused like inf.
+        if (std::abs(d) > static_cast<double>(std::numeric_limits<float>::max()))
+            fail(flag + " expects numbers within +-3.4e38, got " + quoted(text));
+        v[i] = static_cast<float>(d);
+    }
     return v;
 }
 

@@ -48,6 +48,8 @@ for pair in "$host:--width:0" "$reference:--samples:x" "$error:--band:300" "$ben
     test "$ca" -eq 2 -a "$cb" -eq 2 -a "$a" = "$b" -a -n "$a"
 done
 check "a switch takes no value: ssao-reference --quiet=1 exits 2" expect_usage_error "$reference" --quiet --quiet=1
+check "a coordinate beyond float range: ssao-host --eye=1e57,2,3 exits 2 (not an inf camera)" expect_usage_error "$host" --eye --eye=1e57,2,3
+check "a coordinate beyond float range: ssao-reference --target 0,-4e38,0 exits 2" expect_usage_error "$reference" --target --target 0,-4e38,0
 
 # Same run, both spellings: identical files.
 check "ssao-host --width=48 --out=DIR and --width 48 --out DIR write identical ao.exr" bash -c '
