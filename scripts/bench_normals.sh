@@ -2,7 +2,7 @@
 # Depth-only input against the G-buffer's normals (issue 12, feature 1): two
 # quick ssao-bench runs over the same scenes, settings and references, one
 # with the G-buffer's normals and one with normal_texture = 0, into
-# DIR/gbuffer and DIR/depth (default docs/bench-normals); then the README's
+# DIR/gbuffer and DIR/depth (default docs/bench-normals); then the docs'
 # bench:normals block is written from them (scripts/normals_readme.py).
 # Needs a build (scripts/build.sh). Usage: scripts/bench_normals.sh [DIR]
 set -euo pipefail
@@ -13,4 +13,4 @@ for normals in gbuffer depth; do
     tail -n 20 "$out.$normals.log"; exit 1; }
   rm -f "$out.$normals.log"
 done
-/usr/bin/python3 scripts/normals_readme.py "$out" README.md
+/usr/bin/python3 scripts/normals_readme.py "$out"

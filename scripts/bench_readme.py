@@ -1,19 +1,21 @@
 #!/usr/bin/env python3
-"""bench_readme.py - writes the benchmark's figures into README.md.
+"""bench_readme.py - writes the benchmark's figures into the README and docs/.
 
 Reads a run of ssao-bench (bench.csv, presets.txt in DIR, default docs/bench)
-and rewrites the README blocks between <!-- bench:NAME --> and
+and rewrites the blocks (scripts/doc_blocks.py) between <!-- bench:NAME --> and
 <!-- /bench:NAME --> markers: the preset table rows, the summary, the
 targets of issues 8 and 9 (met or missed, as measured), the time-against-
 pixels table and the half/quarter-resolution ratios. Every number in those blocks comes from the run; nothing is
 typed by hand.
 
-usage: scripts/bench_readme.py [DIR] [README]
+usage: scripts/bench_readme.py [DIR] [DOC...]   (default: README.md docs/*.md)
 """
 import csv
 import os
 import re
 import sys
+
+from doc_blocks import DEFAULT_DOCS, write_blocks
 
 HOST = os.environ.get("SSAO_HOST", "build/host/ssao-host")
 
@@ -34,7 +36,7 @@ def load(path):
 
 def main():
     d = sys.argv[1] if len(sys.argv) > 1 else "docs/bench"
-    readme = sys.argv[2] if len(sys.argv) > 2 else "README.md"
+    docs = sys.argv[2:] or DEFAULT_DOCS
     rows = load(d + "/bench.csv")
     base_w = min(r["width"] for r in rows)
     widths = sorted({r["width"] for r in rows})
@@ -171,13 +173,7 @@ def main():
 
     blocks["resolution"] = resolution_table(rows, base_w, scenes, f, mean)
 
-    text = open(readme).read()
-    for name, body in blocks.items():
-        pat = re.compile(r"(<!-- bench:%s -->\n)(?:.*?\n)?(<!-- /bench:%s -->)" % (name, name), re.S)
-        if not pat.search(text):
-            sys.exit("bench_readme: README has no bench:%s block" % name)
-        text = pat.sub(lambda m: m.group(1) + body + "\n" + m.group(2), text)
-    open(readme, "w").write(text)
+    write_blocks(blocks, docs, "bench_readme")
     print("bench_readme: %d blocks written from %s" % (len(blocks), d))
 
 

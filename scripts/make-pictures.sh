@@ -60,7 +60,7 @@ if [ "$bench" -eq 1 ]; then
     [ -f "bench-out/$f" ] && cp "bench-out/$f" "docs/bench/$f"
   done
   # The README's preset table, per-scene summary, targets and time table.
-  /usr/bin/python3 scripts/bench_readme.py docs/bench README.md
-  echo "make-pictures: docs/bench/ from bench-out/, README's bench blocks rewritten (scripts/bench_readme.py)"
+  /usr/bin/python3 scripts/bench_readme.py docs/bench
+  echo "make-pictures: docs/bench/ from bench-out/, bench blocks of the README and docs/ rewritten (scripts/bench_readme.py)"
 fi
 ls -l docs/images/*.png docs/bench/error_vs_time.png | awk '{ printf "  %7d bytes  %s\n", $5, $9 }'

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""normals_readme.py - writes the README's bench:normals block.
+"""normals_readme.py - writes the bench:normals block (docs/api.md).
 
 Reads two ssao-bench runs (DIR/gbuffer/bench.csv and DIR/depth/bench.csv,
 made by scripts/bench_normals.sh: the same scenes, settings and references,
@@ -8,11 +8,12 @@ per preset and scene, the PSNR against V_R both ways, the difference and the
 GPU time, with issue 12's target (depth-only within 1 dB of the G-buffer's
 normals) stated as met or missed. Nothing is typed by hand.
 
-usage: scripts/normals_readme.py [DIR] [README]
+usage: scripts/normals_readme.py [DIR] [DOC...]   (default: README.md docs/*.md)
 """
 import csv
-import re
 import sys
+
+from doc_blocks import DEFAULT_DOCS, write_blocks
 
 PRESETS = [("LOW", "preset low"), ("DEFAULT (MEDIUM)", "preset medium (= default)"), ("HIGH", "preset high"),
            ("ULTRA", "preset ultra")]
@@ -27,7 +28,7 @@ def load(path):
 
 def main():
     d = sys.argv[1] if len(sys.argv) > 1 else "docs/bench-normals"
-    readme = sys.argv[2] if len(sys.argv) > 2 else "README.md"
+    docs = sys.argv[2:] or DEFAULT_DOCS
     g, n = load(d + "/gbuffer/bench.csv"), load(d + "/depth/bench.csv")
     scenes = []
     for (_, scene) in g:
@@ -48,12 +49,7 @@ def main():
         ms_g = sum(float(g[(config, s)]["median_ms"]) for s in scenes) / len(scenes)
         ms_n = sum(float(n[(config, s)]["median_ms"]) for s in scenes) / len(scenes)
         lines.append("| %s | %s | %.2f / %.2f | %s |" % (label, " | ".join(cells), ms_g, ms_n, "met" if ok else "missed"))
-    body = "\n".join(lines)
-    text = open(readme).read()
-    pat = re.compile(r"(<!-- bench:normals -->\n)(?:.*?\n)?(<!-- /bench:normals -->)", re.S)
-    if not pat.search(text):
-        sys.exit("normals_readme: README has no bench:normals block")
-    open(readme, "w").write(pat.sub(lambda m: m.group(1) + body + "\n" + m.group(2), text))
+    write_blocks({"normals": "\n".join(lines)}, docs, "normals_readme")
     print("normals_readme: bench:normals written from %s" % d)
 
 
