@@ -21,6 +21,7 @@ rest=(
   libglfw3-dev xvfb xauth                # ssao-viewer and its tests in a virtual X server
   python3-pil fonts-dejavu-core          # scripts/make-pictures.sh
   clang-14 libclang-rt-14-dev            # scripts/run-sanitizers.sh: ASan/UBSan/TSan and libFuzzer
+  ccache                                 # the test and sanitizer builds reuse unchanged objects
 )
 case $group in
   demo) packages=("${demo[@]}") ;;

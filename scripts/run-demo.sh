@@ -6,7 +6,8 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh demo
+. scripts/ccache-env.sh
 cmake -S . -B build-demo -DCMAKE_BUILD_TYPE=Release -DBUILD_TESTING=OFF -DSSAO_BUILD_REFERENCE=OFF \
-  -DSSAO_INSTALL=OFF >/dev/null
+  -DSSAO_INSTALL=OFF "${ssao_cmake_launcher[@]}" >/dev/null
 cmake --build build-demo -j"$(nproc)" --target ssao ssao-host
 build-demo/host/ssao-host "$@"

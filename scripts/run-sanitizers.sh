@@ -18,6 +18,7 @@ jobs=$(nproc)
 : "${SSAO_FUZZ_RUNS:=20000}"
 
 export CC=clang-14 CXX=clang++-14
+. scripts/ccache-env.sh
 # -O1 and line tables only: full stack traces with file:line, and a build
 # several minutes shorter than with full debug info.
 common=(-DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -gline-tables-only"
@@ -25,7 +26,7 @@ common=(-DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 
         # The viewer (GLFW, tests under xvfb) is not built: its tests are not
         # in SSAO_TEST_AREAS below and no other test runs it; the plugin code
         # it drives is what the other tests drive.
-        -DCMAKE_DISABLE_FIND_PACKAGE_glfw3=ON)
+        -DCMAKE_DISABLE_FIND_PACKAGE_glfw3=ON "${ssao_cmake_launcher[@]}")
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:halt_on_error=1:strict_init_order=1:detect_odr_violation=2
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 export LSAN_OPTIONS=suppressions=$root/tests/sanitizers/lsan.supp:print_suppressions=0
