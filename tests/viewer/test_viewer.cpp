@@ -320,3 +320,80 @@ TEST_CASE("resizing reallocates without leaking") {
     // A G-buffer and lighting target left behind per resize would be ~1.5 MiB each: 75 MiB.
     CHECK(kib[1] - kib[0] < 8 * 1024);
 }
+
+TEST_CASE("C brings the start view back: the same picture as before flying and turning") {
+    const std::string dir = fresh_dir("reset");
+    const std::string script = write_script(dir,
+                                            "0 O\n1 F12\n"          // the start view, no overlay
+                                            "2 hold W 20\n"         // fly forward
+                                            "22 hold L 10\n"        // and turn
+                                            "33 F12\n"
+                                            "34 C\n35 F12\n");
+    const Run r = run_viewer({"--width", "160", "--height", "120", "--script", script, "--frames", "36",
+                              "--screenshot-dir", dir},
+                             dir);
+    INFO("stdout: " << r.out << "\nstderr: " << r.err);
+    REQUIRE(r.exit_code == 0);
+    const Png start = load_png(shot(dir, 1)), moved = load_png(shot(dir, 33)), reset = load_png(shot(dir, 35));
+    CHECK(differing(moved, start) > 160 * 120 / 10);
+    CHECK(differing(reset, start) == 0);
+    CHECK(r.out.find("frame 34: press C\n") != std::string::npos);
+}
+
+TEST_CASE("the shipped demo script runs every event and quits where it says") {
+    const std::string dir = fresh_dir("demo");
+    std::ifstream in(SSAO_DEMO_SCRIPT);
+    REQUIRE_MESSAGE(in.good(), "cannot read " << SSAO_DEMO_SCRIPT);
+    // The events the file holds, as the viewer logs them ("frame N: press K", a tap's release a frame later).
+    std::vector<std::string> want;
+    long quit_frame = -1;
+    for (std::string line; std::getline(in, line);) {
+        line = line.substr(0, line.find('#'));
+        std::istringstream words(line);
+        std::vector<std::string> w;
+        for (std::string x; words >> x;) w.push_back(x);
+        if (w.empty()) continue;
+        if (w[1] == "quit") {
+            quit_frame = std::stol(w[0]);
+        } else if (w[1] == "hold") {
+            want.push_back("frame " + w[0] + ": press " + w[2]);
+            want.push_back("frame " + std::to_string(std::stol(w[0]) + std::stol(w[3])) + ": release " + w[2]);
+        } else {
+            want.push_back("frame " + w[0] + ": press " + w[1]);
+            want.push_back("frame " + std::to_string(std::stol(w[0]) + 1) + ": release " + w[1]);
+        }
+    }
+    REQUIRE(quit_frame > 0);
+    REQUIRE(want.size() >= 20);
+    // Small and with a frame limit past its end, so only the script's quit ends it.
+    const Run r = run_viewer({"--width", "96", "--height", "72", "--script", SSAO_DEMO_SCRIPT, "--frames",
+                              std::to_string(quit_frame + 50)},
+                             dir);
+    INFO("stdout: " << r.out << "\nstderr: " << r.err);
+    REQUIRE(r.exit_code == 0);
+    CHECK(r.err.empty());
+    for (const auto& line : want) {
+        INFO(line);
+        CHECK(r.out.find(line + "\n") != std::string::npos);
+    }
+    CHECK(r.out.find("frame " + std::to_string(quit_frame) + ": quit\n") != std::string::npos);
+    // Its keys are the documented ones: modes, presets, blur, estimator, resolution, debug views, a flight and C.
+    for (const char* key : {"press U", "press 3", "press B", "press M", "press H", "press X", "press W", "press C"}) {
+        INFO(key);
+        CHECK(r.out.find(key) != std::string::npos);
+    }
+}
+
+TEST_CASE("--help is complete and names the demo script it ships") {
+    const std::string dir = fresh_dir("help");
+    const Run r = run("", kViewer, {"--help"}, dir);
+    REQUIRE(r.exit_code == 0);
+    for (const char* text : {"  X  ", "debug view", "  C  ", "start view", "viewer/demo.txt"}) {
+        INFO(text);
+        CHECK(r.out.find(text) != std::string::npos);
+    }
+    const size_t at = r.out.find("A tour of the keys: ");
+    REQUIRE(at != std::string::npos);
+    const std::string path = r.out.substr(at + 20, r.out.find('\n', at) - at - 20);
+    CHECK(fs::equivalent(path, SSAO_DEMO_SCRIPT));
+}
