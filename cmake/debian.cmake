@@ -11,7 +11,6 @@
 set(CPACK_PACKAGE_NAME ssao)
 set(CPACK_PACKAGE_VENDOR "the ssao authors")
 set(CPACK_PACKAGE_CONTACT "the ssao authors <ssao@localhost>")
-set(CPACK_PACKAGE_DESCRIPTION_SUMMARY "Drop-in screen-space ambient occlusion for OpenGL 3.3+")
 set(CPACK_PACKAGE_VERSION ${PROJECT_VERSION})
 set(CPACK_RESOURCE_FILE_LICENSE ${PROJECT_SOURCE_DIR}/LICENSE)
 set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
@@ -36,9 +35,23 @@ set(CPACK_DEBIAN_PYTHON_PACKAGE_ARCHITECTURE all)
 # viewer, GLX: name the driver packages the dynamic linker cannot see.
 set(CPACK_DEBIAN_TOOLS_PACKAGE_RECOMMENDS "libgl1-mesa-dri, libegl-mesa0")
 
+# First line: the summary apt shows; the rest: the long description
+# (CPACK_PACKAGE_DESCRIPTION_SUMMARY is left unset: CPack would put it first in every package).
+set(CPACK_DEBIAN_RUNTIME_DESCRIPTION "Drop-in screen-space ambient occlusion for OpenGL 3.3+ (library)
+libssao.so.1 with its C interface (include/ssao/ssao.h in libssao-dev). It
+loads every GL function through the host, so it links neither libGL nor libEGL.")
+set(CPACK_DEBIAN_DEV_DESCRIPTION "Drop-in screen-space ambient occlusion for OpenGL 3.3+ (development files)
+The header ssao/ssao.h, the CMake package (find_package(ssao ${PROJECT_VERSION_MAJOR}.${PROJECT_VERSION_MINOR}))
+and ssao.pc for pkg-config.")
+set(CPACK_DEBIAN_TOOLS_DESCRIPTION "Drop-in screen-space ambient occlusion for OpenGL 3.3+ (tools)
+ssao-host, ssao-reference, ssao-error, ssao-bench and ssao-viewer, with the
+bundled scenes and the viewer's demo script in /usr/share/ssao.")
+set(CPACK_DEBIAN_PYTHON_DESCRIPTION "Drop-in screen-space ambient occlusion for OpenGL 3.3+ (Python)
+import ssao: the library from Python through ctypes.")
+
 set(CPACK_COMPONENTS_ALL runtime dev tools python)
 include(CPack)
-cpack_add_component(runtime DISPLAY_NAME "libssao.so.1" DESCRIPTION "The SSAO library (C ABI; loads GL through the host)")
+cpack_add_component(runtime DISPLAY_NAME "libssao.so.1" DESCRIPTION "The SSAO library")
 cpack_add_component(dev DISPLAY_NAME "Development files" DEPENDS runtime
   DESCRIPTION "include/ssao/ssao.h, the CMake package (find_package(ssao)) and ssao.pc")
 cpack_add_component(tools DISPLAY_NAME "Tools" DEPENDS runtime

@@ -49,7 +49,11 @@ depends_on ssao-tools "libegl1"
 depends_on ssao-tools "libglfw3"
 depends_on python3-ssao "libssao1 (= $ssao_version)"
 depends_on python3-ssao "python3"
-dpkg-deb --info "${deb[libssao1]}" | grep -qF "Description: " || fail "libssao1 has no description"
+for name in "${!deb[@]}"; do
+  description=$(field "$name" Description)
+  [[ "${description%%$'\n'*}" == "Drop-in "*"("*")" ]] || fail "$name has no one-line summary: ${description%%$'\n'*}"
+  [[ "$description" == *$'\n'* ]] || fail "$name has no long description"
+done
 
 step "contents"
 # Package $1 holds path $2 (as dpkg-deb --contents lists it: ./usr/...).
