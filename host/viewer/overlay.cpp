@@ -188,8 +188,10 @@ int overlay_width(const std::string& line, int scale) {
 std::vector<std::string> overlay_lines(const State& s, const ssao_timings& t, int width, int height) {
     std::vector<std::string> lines = unwrapped_lines(s, t, width, height);
     std::vector<std::string> fitted;
+    // The band keeps a margin from the window's right edge as from its left.
+    const int scale = overlay_scale(width, height);
     for (const std::string& line : lines)
-        for (std::string& piece : wrap(line, width, overlay_scale(width, height))) fitted.push_back(std::move(piece));
+        for (std::string& piece : wrap(line, width - kMargin * scale, scale)) fitted.push_back(std::move(piece));
     return fitted;
 }
 

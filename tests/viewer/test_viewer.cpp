@@ -11,6 +11,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -78,10 +79,10 @@ Run run(const std::string& prefix, const std::string& program, const std::vector
     return r;
 }
 
-// The viewer in a fresh virtual X server of 320 x 240.
-Run run_viewer(const std::vector<std::string>& args, const std::string& dir) {
+// The viewer in a fresh virtual X server (320 x 240 unless asked for more).
+Run run_viewer(const std::vector<std::string>& args, const std::string& dir, const std::string& screen = "320x240") {
     REQUIRE_MESSAGE(!kXvfbRun.empty(), "xvfb-run is not installed: apt-get install xvfb xauth (scripts/install-deps.sh)");
-    return run(quote(kXvfbRun) + " -a -s '-screen 0 320x240x24'", kViewer, args, dir);
+    return run(quote(kXvfbRun) + " -a -s '-screen 0 " + screen + "x24'", kViewer, args, dir);
 }
 
 std::string write_script(const std::string& dir, const std::string& text) {
@@ -252,18 +253,39 @@ TEST_CASE("each mode key shows ssao-host's picture of that mode, U darkens conta
         CHECK(contact / contacts > 10.0 * (open / opens));
     }
 
-    // The overlay covers a band at the top left and nothing else.
-    const Png with_overlay = load_png(shot(dir, 0));
-    int inside = 0, outside = 0;
+    // The overlay changes the picture (it is checked for its extent at 480 px in its own test).
+    CHECK(differing(load_png(shot(dir, 0)), first) > 1000);
+}
+
+TEST_CASE("at 480 px the overlay, GPU line included, lies inside the window: a band at the top left") {
+    const int W = 480, H = 360;
+    const std::string dir = fresh_dir("overlay_480");
+    // The GPU line needs a finished timed frame: shoot on frame 12 with the overlay, 14 without. The AO
+    // view (V) is light everywhere, sky included, so the overlay's dark band changes every pixel it covers.
+    const Run r = run_viewer({"--width", std::to_string(W), "--height", std::to_string(H), "--script",
+                              write_script(dir, "0 H\n0 V\n12 F12\n13 O\n14 F12\n"), "--frames", "15", "--screenshot-dir", dir},
+                             dir, "640x480");
+    INFO("stdout: " << r.out << "\nstderr: " << r.err);
+    REQUIRE(r.exit_code == 0);
+    const Png on = load_png(shot(dir, 12)), off = load_png(shot(dir, 14));
+    REQUIRE((on.w == W && on.h == H));
+    int changed = 0, right = 0, bottom = 0, last_row = 0;
     for (int y = 0; y < H; ++y)
         for (int x = 0; x < W; ++x)
             for (int c = 0; c < 3; ++c)
-                if (with_overlay.at(x, y, c) != first.at(x, y, c)) {
-                    (y < 90 ? inside : outside) += 1;
+                if (on.at(x, y, c) != off.at(x, y, c)) {
+                    ++changed;
+                    right = std::max(right, x);
+                    last_row = std::max(last_row, y);
+                    if (y >= H / 2) ++bottom;
                     break;
                 }
-    CHECK(inside > 1000);
-    CHECK(outside == 0);
+    MESSAGE("the overlay's band: " << right + 1 << " x " << last_row + 1 << " px");
+    CHECK(changed > 5000);
+    // Its band ends before the right edge: no line runs off the window (before, the GPU line and the key help did,
+    // and the band reached the last column).
+    CHECK(right < W - 1);
+    CHECK(bottom == 0);
 }
 
 TEST_CASE("after a resize the AO matches a fresh start at that size") {
