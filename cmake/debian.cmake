@@ -49,7 +49,10 @@ bundled scenes and the viewer's demo script in /usr/share/ssao.")
 set(CPACK_DEBIAN_PYTHON_DESCRIPTION "Drop-in screen-space ambient occlusion for OpenGL 3.3+ (Python)
 import ssao: the library from Python through ctypes.")
 
-set(CPACK_COMPONENTS_ALL runtime dev tools python)
+set(CPACK_COMPONENTS_ALL runtime dev python)
+if(SSAO_BUILD_TOOLS)
+  list(APPEND CPACK_COMPONENTS_ALL tools)
+endif()
 include(CPack)
 cpack_add_component(runtime DISPLAY_NAME "libssao.so.1" DESCRIPTION "The SSAO library")
 cpack_add_component(dev DISPLAY_NAME "Development files" DEPENDS runtime

@@ -8,9 +8,10 @@
 # cmake --install: <prefix>/${SSAO_PYTHON_INSTALL_DIR}/ssao with _version.py
 # and _install_paths.py (the way from the package to <prefix>/lib, relative,
 # so a moved prefix still works). The default, lib/python3/dist-packages, is
-# where Debian's python3 looks under /usr; for another prefix put
+# where Debian's python3 looks under /usr (also when the libdir is multiarch,
+# lib/x86_64-linux-gnu); for another prefix put
 # <prefix>/lib/python3/dist-packages on PYTHONPATH.
-set(SSAO_PYTHON_INSTALL_DIR "${CMAKE_INSTALL_LIBDIR}/python3/dist-packages" CACHE STRING
+set(SSAO_PYTHON_INSTALL_DIR "lib/python3/dist-packages" CACHE STRING
     "Where cmake --install puts the ssao Python package, relative to the prefix")
 
 set(SSAO_PYTHON_BUILD_DIR ${PROJECT_BINARY_DIR}/python/ssao)
