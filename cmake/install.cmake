@@ -1,11 +1,14 @@
 # cmake --install build --prefix P installs:
-#   P/lib/libssao.so.1.0.0, libssao.so.1 (SONAME), libssao.so (dev link)
+#   P/lib/libssao.so.<version>, libssao.so.1 (SONAME), libssao.so (dev link)
 #   P/include/ssao/ssao.h
 #   P/lib/cmake/ssao/ssaoConfig.cmake, ssaoConfigVersion.cmake, ssaoTargets*.cmake
 #     (ssao::ssao links the library, ssao::headers is the header alone)
 #   P/lib/pkgconfig/ssao.pc
-#   P/bin/ssao-host, ssao-reference, ssao-error, ssao-bench (with SSAO_BUILD_TOOLS)
-#   P/share/ssao/models, scenes (the bundled data the tools find beside bin/)
+#   P/bin/ssao-host (with SSAO_BUILD_TOOLS), ssao-reference, ssao-error, ssao-bench
+#     (also SSAO_BUILD_REFERENCE), ssao-viewer (where GLFW was found)
+#   P/share/ssao/models, scenes (the bundled data the tools find beside bin/),
+#     viewer/demo.txt (ssao-viewer --script: a tour of its keys)
+#   P/lib/python3/dist-packages/ssao (the Python package; cmake/python.cmake)
 #   P/share/doc/ssao/README.md, LICENSE, assets-README.md
 # Every path inside is relative to P, so the tree may be moved after installing.
 include(CMakePackageConfigHelpers)
@@ -37,7 +40,13 @@ set(SSAO_DOC_DIR ${CMAKE_INSTALL_DATADIR}/doc/ssao)
 install(FILES ${PROJECT_SOURCE_DIR}/README.md ${PROJECT_SOURCE_DIR}/LICENSE DESTINATION ${SSAO_DOC_DIR} COMPONENT runtime)
 
 if(SSAO_BUILD_TOOLS)
-  install(TARGETS ssao-host ssao-reference ssao-error ssao-bench RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT tools)
+  # ssao-reference, -error and -bench only with SSAO_BUILD_REFERENCE; ssao-viewer only where GLFW was found.
+  foreach(tool ssao-host ssao-reference ssao-error ssao-bench ssao-viewer)
+    if(TARGET ${tool})
+      install(TARGETS ${tool} RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT tools)
+    endif()
+  endforeach()
+  install(FILES ${PROJECT_SOURCE_DIR}/assets/viewer/demo.txt DESTINATION ${CMAKE_INSTALL_DATADIR}/ssao/viewer COMPONENT tools)
   # The data the tools find at <bin>/../share/ssao (host/locate.cpp), with the
   # models' own licences (assets/models/README.md).
   install(FILES

@@ -5,14 +5,9 @@
 
 #include <climits>
 #include <cstdlib>
+#include <fstream>
 
-// Set by host/CMakeLists.txt.
-#ifndef SSAO_BUILD_DIR
-#define SSAO_BUILD_DIR ""
-#endif
-#ifndef SSAO_SOURCE_DATA_DIR
-#define SSAO_SOURCE_DATA_DIR ""
-#endif
+// Set by host/CMakeLists.txt: a relative path, the same in every install prefix.
 #ifndef SSAO_BIN_TO_DATA
 #define SSAO_BIN_TO_DATA "../share/ssao"
 #endif
@@ -49,11 +44,32 @@ std::string executable_dir() {
     return path.substr(0, path.find_last_of('/'));
 }
 
-bool in_build_tree() {
-    const std::string build = real(SSAO_BUILD_DIR);
-    const std::string exe = executable_dir();
-    if (build.empty() || exe.empty()) return false;
-    return exe == build || exe.rfind(build + "/", 0) == 0;
+namespace {
+
+// The build tree file in the executable's directory or the nearest one above, or "".
+std::string build_tree_file() {
+    std::string dir = executable_dir();
+    while (!dir.empty()) {
+        const std::string candidate = dir + "/" + kBuildTreeFile;
+        struct stat st;
+        if (stat(candidate.c_str(), &st) == 0 && S_ISREG(st.st_mode)) return candidate;
+        dir = dir.substr(0, dir.find_last_of('/'));
+    }
+    return {};
+}
+
+}  // namespace
+
+bool in_build_tree() { return !build_tree_file().empty(); }
+
+std::string build_tree_value(const std::string& key) {
+    const std::string file = build_tree_file();
+    if (file.empty()) return {};
+    std::ifstream in(file);
+    const std::string prefix = key + "=";
+    for (std::string line; std::getline(in, line);)
+        if (line.rfind(prefix, 0) == 0) return line.substr(prefix.size());
+    return {};
 }
 
 std::string data_dir() {
@@ -63,7 +79,7 @@ std::string data_dir() {
         const std::string installed = real(exe + "/" + SSAO_BIN_TO_DATA);
         if (holds_data(installed)) return installed;
     }
-    if (in_build_tree() && holds_data(SSAO_SOURCE_DATA_DIR)) return SSAO_SOURCE_DATA_DIR;
+    if (const std::string source = build_tree_value("data"); holds_data(source)) return source;
     return {};
 }
 

@@ -8,10 +8,7 @@
 #include <climits>
 #include <cstdlib>
 
-// Set by host/CMakeLists.txt.
-#ifndef SSAO_PLUGIN_BUILD_PATH
-#define SSAO_PLUGIN_BUILD_PATH ""
-#endif
+// Set by host/CMakeLists.txt: relative names, the same in every install prefix.
 #ifndef SSAO_PLUGIN_SONAME
 #define SSAO_PLUGIN_SONAME "libssao.so.1"
 #endif
@@ -74,7 +71,7 @@ std::vector<std::string> Library::search_order(const std::string& explicit_path)
     std::vector<std::string> order;
     const std::string exe = locate::executable_dir();
     if (!exe.empty()) order.push_back(exe + "/" + SSAO_BIN_TO_LIB + "/" + SSAO_PLUGIN_SONAME);
-    if (locate::in_build_tree() && *SSAO_PLUGIN_BUILD_PATH) order.push_back(SSAO_PLUGIN_BUILD_PATH);
+    if (const std::string built = locate::build_tree_value("plugin"); !built.empty()) order.push_back(built);
     order.push_back(SSAO_PLUGIN_SONAME);
     return order;
 }

@@ -22,6 +22,8 @@ rest=(
   python3-pil fonts-dejavu-core          # scripts/make-pictures.sh
   clang-14 libclang-rt-14-dev            # scripts/run-sanitizers.sh: ASan/UBSan/TSan and libFuzzer
   ccache                                 # the test and sanitizer builds reuse unchanged objects
+  python3-pip python3-setuptools python3-wheel   # pip install ./python (offline, --no-build-isolation)
+  dpkg-dev                               # cpack -G DEB: dpkg-shlibdeps finds the packages' dependencies
 )
 case $group in
   demo) packages=("${demo[@]}") ;;

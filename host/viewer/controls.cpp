@@ -81,6 +81,7 @@ void Controls::key(int k, int action) {
             // reconstructed normals -> raw AO -> blur weights -> none.
             state_.settings.debug_view = debug_view_text::next(state_.settings.debug_view);
             break;
+        case GLFW_KEY_C: reset_camera(); break;
         case GLFW_KEY_V: state_.view = state_.view == View::Lit ? View::AoOnly : View::Lit; break;
         case GLFW_KEY_O: state_.overlay = !state_.overlay; break;
         case GLFW_KEY_F12: screenshot_ = true; break;
@@ -147,6 +148,11 @@ void Controls::update_camera() {
     camera::Camera start = start_;
     start.up = glm::vec3(0.0f, 1.0f, 0.0f);
     camera_ = camera::apply(scene_, start, o);
+}
+
+void Controls::reset_camera() {
+    moved_ = false;
+    camera_ = start_;
 }
 
 void Controls::set_aspect(float aspect) {

@@ -1,6 +1,6 @@
 // controls.h - what the viewer's keys do: the fly camera (WASD QZ, IJKL), the
 // reference demo's modes (E R T Y U), presets (1..4, 0), blur (B), the view
-// (V), the debug views (X: settings.debug_view, shown instead of the picture),
+// (V), back to the start view (C), the debug views (X: settings.debug_view, shown instead of the picture),
 // the overlay (O), screenshots (F12) and quitting (Esc). No GL here, so
 // it can be tested without a window.
 #pragma once
@@ -58,6 +58,9 @@ public:
 
 private:
     void choose_preset(std::optional<ssao_preset> p);
+    // C: the starting camera again (as chosen for the current aspect); the
+    // next move flies from there.
+    void reset_camera();
     void update_camera();
 
     const ssao_api& api_;

@@ -3,6 +3,7 @@
 // (through dlopen and the C ABI) as ssao-host; see the README, "ssao-viewer".
 #include "controls.h"
 #include "image_io.h"
+#include "locate.h"
 #include "flags.h"
 #include "options.h"
 #include "overlay.h"
@@ -88,10 +89,18 @@ int run(const viewer::Options& o) {
         window->poll();
         for (; next_event < script.size() && script[next_event].frame <= frame; ++next_event) {
             const viewer::ScriptEvent& e = script[next_event];
+            // Each key and resize said as it happens, so a scripted run leaves a log to check.
             switch (e.kind) {
-                case viewer::ScriptEvent::Kind::Press: controls.key(e.key, GLFW_PRESS); break;
-                case viewer::ScriptEvent::Kind::Release: controls.key(e.key, GLFW_RELEASE); break;
+                case viewer::ScriptEvent::Kind::Press:
+                    std::printf("frame %ld: press %s\n", frame, viewer::key_name(e.key).c_str());
+                    controls.key(e.key, GLFW_PRESS);
+                    break;
+                case viewer::ScriptEvent::Kind::Release:
+                    std::printf("frame %ld: release %s\n", frame, viewer::key_name(e.key).c_str());
+                    controls.key(e.key, GLFW_RELEASE);
+                    break;
                 case viewer::ScriptEvent::Kind::Resize:
+                    std::printf("frame %ld: resize %d %d\n", frame, e.width, e.height);
                     window->request_size(e.width, e.height);
                     window->poll();
                     break;
@@ -99,9 +108,13 @@ int run(const viewer::Options& o) {
                     std::printf("frame %ld: %dx%d, resident %ld KiB\n", frame, width, height, resident_kib());
                     std::fflush(stdout);
                     break;
-                case viewer::ScriptEvent::Kind::Quit: return 0;
+                case viewer::ScriptEvent::Kind::Quit:
+                    std::printf("frame %ld: quit\n", frame);
+                    std::fflush(stdout);
+                    return 0;
             }
         }
+        std::fflush(stdout);
         if (window->should_close() || controls.quit()) break;
 
         const auto now = std::chrono::steady_clock::now();
@@ -126,7 +139,7 @@ int run(const viewer::Options& o) {
         renderer.render(controls.camera(), controls.state());
         if (controls.state().overlay)
             overlay.draw(viewer::overlay_lines(controls.state(), renderer.timings(), width, height), width, height,
-                         std::max(1, std::min(width, height) / 360));
+                         viewer::overlay_scale(width, height));
         if (controls.take_screenshot()) write_screenshot(*window, o.screenshot_dir, frame, width, height);
         window->swap();
     }
@@ -142,7 +155,7 @@ int main(int argc, char** argv) {
         case viewer::Parse::Error:
             std::fprintf(stderr, "ssao-viewer: %s\n", error.c_str());
             return 2;
-        case viewer::Parse::Help: std::fputs(viewer::help_text(run_setup::default_scene_path()).c_str(), stdout); return 0;
+        case viewer::Parse::Help: std::fputs(viewer::help_text(run_setup::default_scene_path(), locate::bundled(viewer::kDemoScript)).c_str(), stdout); return 0;
         case viewer::Parse::Version: std::printf("%s\n", flags::version_line("ssao-viewer").c_str()); return 0;
         case viewer::Parse::Run: break;
     }

@@ -51,7 +51,7 @@ Parse parse(int argc, const char* const* argv, Options& o, std::string& error) {
     return Parse::Run;
 }
 
-std::string help_text(const std::string& default_scene) {
+std::string help_text(const std::string& default_scene, const std::string& demo_script) {
     return "ssao-viewer - the SSAO plugin on a glTF scene in a window (GLFW), keys as the reference demo.\n"
            "\n"
            "usage: ssao-viewer [SCENE.gltf|SCENE.glb] [flags]\n"
@@ -61,7 +61,8 @@ std::string help_text(const std::string& default_scene) {
            "  --preset NAME        start from low|medium|high|ultra (default: the plugin's defaults, as ssao-host)\n"
            "  --plugin PATH        libssao.so to load (default: $SSAO_PLUGIN, then the same places as ssao-host)\n"
            "  --script FILE        timed key presses and resizes (lines 'FRAME KEY', 'FRAME hold KEY N',\n"
-           "                       'FRAME resize W H', 'FRAME memory', 'FRAME quit'; frames count from 0)\n"
+           "                       'FRAME resize W H', 'FRAME memory', 'FRAME quit'; frames count from 0);\n"
+           "                       each event is printed as it happens. A tour of the keys: " + demo_script + "\n"
            "  --frames N           exit after N frames\n"
            "  --screenshot-dir DIR where F12 writes frame-NNNNN.png (default: the current folder)\n"
            "  --help, -h           this text\n"
@@ -70,11 +71,13 @@ std::string help_text(const std::string& default_scene) {
            "keys:\n"
            "  W A S D              move forward, left, back, right      Q Z   move up, down\n"
            "  I J K L              turn up, left, down, right\n"
+           "  C                    camera back to the start view\n"
            "  E R T Y U            the reference demo's modes: E no SSAO, R no rotation, T random rotation,\n"
            "                       Y concentrated kernel, U hemisphere\n"
            "  1 2 3 4              presets low, medium, high, ultra     0   the plugin's defaults\n"
            "  B                    next blur: depth-aware, 4x4 box, gaussian, none\n"
            "  V                    view: lit, AO only                   O   overlay on/off\n"
+           "  X                    debug view: none, normals, reconstructed normals, raw AO, blur weights\n"
            "  M                    estimator: point kernel or ray-marched visibility (interface 1.1)\n"
            "  H                    resolution: full, half, quarter\n"
            "  F12                  screenshot                           Esc quit\n";

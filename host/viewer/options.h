@@ -23,6 +23,10 @@ enum class Parse { Run, Help, Version, Error };
 // "--flag value" and "--flag=value"; on Error `error` names the flag.
 Parse parse(int argc, const char* const* argv, Options& out, std::string& error);
 
-std::string help_text(const std::string& default_scene);
+// The --help text; `demo_script` is where the shipped tour of the keys is.
+std::string help_text(const std::string& default_scene, const std::string& demo_script);
+
+// The shipped --script tour of the keys, under the bundled data (locate.h).
+inline constexpr const char* kDemoScript = "viewer/demo.txt";
 
 }  // namespace viewer

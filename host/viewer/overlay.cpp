@@ -102,9 +102,37 @@ std::string gpu_line(const ssao_timings& t) {
     return line + printf_string(" %s %.3f  blur %.3f  total %.3f", pass_name(SSAO_PASS_AO), t.ao_ms, t.blur_ms, t.total_ms);
 }
 
-}  // namespace
+constexpr int kMargin = 2;   // font pixels around the text on its dark band
 
-std::vector<std::string> overlay_lines(const State& s, const ssao_timings& t, int width, int height) {
+// `line` broken at its double spaces into pieces no wider than `max_pixels`
+// (a group wider on its own stays whole); continuations start with two spaces.
+std::vector<std::string> wrap(const std::string& line, int max_pixels, int scale) {
+    std::vector<std::string> groups;
+    for (size_t at = 0;;) {
+        const size_t gap = line.find("  ", at);
+        groups.push_back(line.substr(at, gap == std::string::npos ? std::string::npos : gap - at));
+        if (gap == std::string::npos) break;
+        at = line.find_first_not_of(' ', gap);
+        if (at == std::string::npos) break;
+    }
+    std::vector<std::string> out;
+    std::string current;
+    for (const std::string& g : groups) {
+        if (current.empty()) {
+            current = out.empty() ? g : "  " + g;
+        } else if (overlay_width(current + "  " + g, scale) <= max_pixels) {
+            current += "  " + g;
+        } else {
+            out.push_back(current);
+            current = "  " + g;
+        }
+    }
+    out.push_back(current);
+    return out;
+}
+
+// The overlay's lines before they are fitted to the window.
+std::vector<std::string> unwrapped_lines(const State& s, const ssao_timings& t, int width, int height) {
     std::vector<std::string> lines;
     const modes::Mode* mode = s.mode ? modes::find(s.mode) : nullptr;
     // A debug view (X) replaces the picture whichever of V's views is chosen.
@@ -143,8 +171,28 @@ std::vector<std::string> overlay_lines(const State& s, const ssao_timings& t, in
     }
     if (!s.notice.empty()) lines.push_back(s.notice);
     lines.push_back("WASD QZ move  IJKL turn  ERTYU modes  1-4 presets  0 defaults");
-    lines.push_back("B blur  M estimator  H resolution  V view  X debug view  O overlay  F12 screenshot  Esc quit");
+    lines.push_back("B blur  M estimator  H resolution  V view  X debug view  C start view  O overlay  F12 screenshot  Esc quit");
     return lines;
+}
+
+}  // namespace
+
+int overlay_scale(int width, int height) { return std::max(1, std::min(width, height) / 360); }
+
+int overlay_width(const std::string& line, int scale) {
+    std::vector<char> chars(line.begin(), line.end());
+    chars.push_back('\0');
+    return (stb_easy_font_width(chars.data()) + 2 * kMargin) * std::max(scale, 1);
+}
+
+std::vector<std::string> overlay_lines(const State& s, const ssao_timings& t, int width, int height) {
+    std::vector<std::string> lines = unwrapped_lines(s, t, width, height);
+    std::vector<std::string> fitted;
+    // The band keeps a margin from the window's right edge as from its left.
+    const int scale = overlay_scale(width, height);
+    for (const std::string& line : lines)
+        for (std::string& piece : wrap(line, width - kMargin * scale, scale)) fitted.push_back(std::move(piece));
+    return fitted;
 }
 
 Overlay::Overlay(GladGLContext& gl) : gl_(gl) {
@@ -187,7 +235,7 @@ void Overlay::draw(const std::vector<std::string>& lines, int width, int height,
     chars.push_back('\0');
 
     // A dark band behind the text first, then the text's quads.
-    const float margin = 2.0f;
+    const float margin = static_cast<float>(kMargin);
     const float w = static_cast<float>(stb_easy_font_width(chars.data())) + 2.0f * margin;
     const float h = static_cast<float>(stb_easy_font_height(chars.data())) + 2.0f * margin;
     std::vector<Vertex> quads = {{0, 0, 0, {0, 0, 0, 160}}, {w, 0, 0, {0, 0, 0, 160}},

@@ -14,7 +14,15 @@
 
 namespace viewer {
 
-// The overlay's lines for this state (no GL; what the tests read).
+// Screen pixels per font pixel for a window of width x height.
+int overlay_scale(int width, int height);
+
+// The width in screen pixels of `line` drawn at `scale`, its band's margins included.
+int overlay_width(const std::string& line, int scale);
+
+// The overlay's lines for this state (no GL; what the tests read), each as
+// wide as a window of width x height shows: a longer line is broken at its
+// double spaces (between "name value" groups), its continuation indented.
 std::vector<std::string> overlay_lines(const State& state, const ssao_timings& timings, int width, int height);
 
 class Overlay {

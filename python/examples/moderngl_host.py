@@ -3,7 +3,7 @@
 
 Renders a G-buffer (depth + view-space normals) of a floor meeting a wall with
 moderngl on a headless EGL context, hands moderngl's texture names (.glo) to
-the plugin through python/ssao.py (ctypes), reads the AO back, and checks
+the plugin through python/ssao/__init__.py (ctypes), reads the AO back, and checks
   - that the floor in the crease is darker than open floor, and
   - that moderngl's own state still renders correctly afterwards: the same
     G-buffer pass gives the same bytes, a plain draw gives its exact colour,
@@ -105,7 +105,8 @@ def mean_around(image, x, y, r=1):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    parser.add_argument("--plugin", help="libssao.so to load (default: $SSAO_PLUGIN, else the system's libssao.so.1)")
+    parser.add_argument("--plugin", help="libssao.so to load (default: where ssao.Library() finds it: beside the "
+                        "package, the build tree, the install prefix, $SSAO_PLUGIN, the system's libssao.so.1)")
     parser.add_argument("--size", type=int, default=96, help="image size in pixels (default 96)")
     args = parser.parse_args()
     size = args.size
@@ -149,7 +150,7 @@ def main():
         for _ in range(4):  # a few frames, so that GPU times arrive
             out = ctx.execute(depth_texture=depth.glo, normal_texture=normals.glo,
                               normal_packing=ssao.SSAO_NORMAL_PACKING_SIGNED,
-                              projection=column_major(proj), output_texture=ao.glo)
+                              projection=proj, output_texture=ao.glo)
         check(out.texture == ao.glo, "AO written into the host's texture %d (got %d)" % (ao.glo, out.texture))
         info = ctx.frame_info()
         check(info.depth_bits == 24 and not info.orthographic and abs(info.near_distance - 0.1) < 1e-4,

@@ -1,4 +1,4 @@
-"""test_layout.py PROBE [PYTHON_DIR] - python/ssao.py against the C compiler.
+"""test_layout.py PROBE [PYTHON_DIR] - python/ssao (the package) against the C compiler.
 
 PROBE is the program gen_layout_probe.py made from include/ssao/ssao.h; it
 prints what the compiler makes of every struct, field, enumerator and value
@@ -134,7 +134,7 @@ def main():
     if not self_test(ssao, probe):
         problems.append("self-test: dropping a field from ssao_settings went unnoticed")
     if problems:
-        print("python/ssao.py does not match include/ssao/ssao.h:")
+        print("python/ssao/__init__.py does not match include/ssao/ssao.h:")
         for p in problems:
             print("  " + p)
         return 1

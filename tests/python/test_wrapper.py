@@ -1,4 +1,4 @@
-"""test_wrapper.py PLUGIN [PYTHON_DIR] - python/ssao.py's wrapper without a GL
+"""test_wrapper.py PLUGIN [PYTHON_DIR] - python/ssao/__init__.py's wrapper without a GL
 context: the table, settings, presets, and errors raised as ssao.Error with
 the library's status and sentence."""
 

@@ -11,6 +11,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -78,10 +79,10 @@ Run run(const std::string& prefix, const std::string& program, const std::vector
     return r;
 }
 
-// The viewer in a fresh virtual X server of 320 x 240.
-Run run_viewer(const std::vector<std::string>& args, const std::string& dir) {
+// The viewer in a fresh virtual X server (320 x 240 unless asked for more).
+Run run_viewer(const std::vector<std::string>& args, const std::string& dir, const std::string& screen = "320x240") {
     REQUIRE_MESSAGE(!kXvfbRun.empty(), "xvfb-run is not installed: apt-get install xvfb xauth (scripts/install-deps.sh)");
-    return run(quote(kXvfbRun) + " -a -s '-screen 0 320x240x24'", kViewer, args, dir);
+    return run(quote(kXvfbRun) + " -a -s '-screen 0 " + screen + "x24'", kViewer, args, dir);
 }
 
 std::string write_script(const std::string& dir, const std::string& text) {
@@ -252,18 +253,39 @@ TEST_CASE("each mode key shows ssao-host's picture of that mode, U darkens conta
         CHECK(contact / contacts > 10.0 * (open / opens));
     }
 
-    // The overlay covers a band at the top left and nothing else.
-    const Png with_overlay = load_png(shot(dir, 0));
-    int inside = 0, outside = 0;
+    // The overlay changes the picture (it is checked for its extent at 480 px in its own test).
+    CHECK(differing(load_png(shot(dir, 0)), first) > 1000);
+}
+
+TEST_CASE("at 480 px the overlay, GPU line included, lies inside the window: a band at the top left") {
+    const int W = 480, H = 360;
+    const std::string dir = fresh_dir("overlay_480");
+    // The GPU line needs a finished timed frame: shoot on frame 12 with the overlay, 14 without. The AO
+    // view (V) is light everywhere, sky included, so the overlay's dark band changes every pixel it covers.
+    const Run r = run_viewer({"--width", std::to_string(W), "--height", std::to_string(H), "--script",
+                              write_script(dir, "0 H\n0 V\n12 F12\n13 O\n14 F12\n"), "--frames", "15", "--screenshot-dir", dir},
+                             dir, "640x480");
+    INFO("stdout: " << r.out << "\nstderr: " << r.err);
+    REQUIRE(r.exit_code == 0);
+    const Png on = load_png(shot(dir, 12)), off = load_png(shot(dir, 14));
+    REQUIRE((on.w == W && on.h == H));
+    int changed = 0, right = 0, bottom = 0, last_row = 0;
     for (int y = 0; y < H; ++y)
         for (int x = 0; x < W; ++x)
             for (int c = 0; c < 3; ++c)
-                if (with_overlay.at(x, y, c) != first.at(x, y, c)) {
-                    (y < 90 ? inside : outside) += 1;
+                if (on.at(x, y, c) != off.at(x, y, c)) {
+                    ++changed;
+                    right = std::max(right, x);
+                    last_row = std::max(last_row, y);
+                    if (y >= H / 2) ++bottom;
                     break;
                 }
-    CHECK(inside > 1000);
-    CHECK(outside == 0);
+    MESSAGE("the overlay's band: " << right + 1 << " x " << last_row + 1 << " px");
+    CHECK(changed > 5000);
+    // Its band ends before the right edge: no line runs off the window (before, the GPU line and the key help did,
+    // and the band reached the last column).
+    CHECK(right < W - 1);
+    CHECK(bottom == 0);
 }
 
 TEST_CASE("after a resize the AO matches a fresh start at that size") {
@@ -319,4 +341,81 @@ TEST_CASE("resizing reallocates without leaking") {
     MESSAGE("resident after 10 resizes " << kib[0] << " KiB, after 60 " << kib[1] << " KiB");
     // A G-buffer and lighting target left behind per resize would be ~1.5 MiB each: 75 MiB.
     CHECK(kib[1] - kib[0] < 8 * 1024);
+}
+
+TEST_CASE("C brings the start view back: the same picture as before flying and turning") {
+    const std::string dir = fresh_dir("reset");
+    const std::string script = write_script(dir,
+                                            "0 O\n1 F12\n"          // the start view, no overlay
+                                            "2 hold W 20\n"         // fly forward
+                                            "22 hold L 10\n"        // and turn
+                                            "33 F12\n"
+                                            "34 C\n35 F12\n");
+    const Run r = run_viewer({"--width", "160", "--height", "120", "--script", script, "--frames", "36",
+                              "--screenshot-dir", dir},
+                             dir);
+    INFO("stdout: " << r.out << "\nstderr: " << r.err);
+    REQUIRE(r.exit_code == 0);
+    const Png start = load_png(shot(dir, 1)), moved = load_png(shot(dir, 33)), reset = load_png(shot(dir, 35));
+    CHECK(differing(moved, start) > 160 * 120 / 10);
+    CHECK(differing(reset, start) == 0);
+    CHECK(r.out.find("frame 34: press C\n") != std::string::npos);
+}
+
+TEST_CASE("the shipped demo script runs every event and quits where it says") {
+    const std::string dir = fresh_dir("demo");
+    std::ifstream in(SSAO_DEMO_SCRIPT);
+    REQUIRE_MESSAGE(in.good(), "cannot read " << SSAO_DEMO_SCRIPT);
+    // The events the file holds, as the viewer logs them ("frame N: press K", a tap's release a frame later).
+    std::vector<std::string> want;
+    long quit_frame = -1;
+    for (std::string line; std::getline(in, line);) {
+        line = line.substr(0, line.find('#'));
+        std::istringstream words(line);
+        std::vector<std::string> w;
+        for (std::string x; words >> x;) w.push_back(x);
+        if (w.empty()) continue;
+        if (w[1] == "quit") {
+            quit_frame = std::stol(w[0]);
+        } else if (w[1] == "hold") {
+            want.push_back("frame " + w[0] + ": press " + w[2]);
+            want.push_back("frame " + std::to_string(std::stol(w[0]) + std::stol(w[3])) + ": release " + w[2]);
+        } else {
+            want.push_back("frame " + w[0] + ": press " + w[1]);
+            want.push_back("frame " + std::to_string(std::stol(w[0]) + 1) + ": release " + w[1]);
+        }
+    }
+    REQUIRE(quit_frame > 0);
+    REQUIRE(want.size() >= 20);
+    // Small and with a frame limit past its end, so only the script's quit ends it.
+    const Run r = run_viewer({"--width", "96", "--height", "72", "--script", SSAO_DEMO_SCRIPT, "--frames",
+                              std::to_string(quit_frame + 50)},
+                             dir);
+    INFO("stdout: " << r.out << "\nstderr: " << r.err);
+    REQUIRE(r.exit_code == 0);
+    CHECK(r.err.empty());
+    for (const auto& line : want) {
+        INFO(line);
+        CHECK(r.out.find(line + "\n") != std::string::npos);
+    }
+    CHECK(r.out.find("frame " + std::to_string(quit_frame) + ": quit\n") != std::string::npos);
+    // Its keys are the documented ones: modes, presets, blur, estimator, resolution, debug views, a flight and C.
+    for (const char* key : {"press U", "press 3", "press B", "press M", "press H", "press X", "press W", "press C"}) {
+        INFO(key);
+        CHECK(r.out.find(key) != std::string::npos);
+    }
+}
+
+TEST_CASE("--help is complete and names the demo script it ships") {
+    const std::string dir = fresh_dir("help");
+    const Run r = run("", kViewer, {"--help"}, dir);
+    REQUIRE(r.exit_code == 0);
+    for (const char* text : {"  X  ", "debug view", "  C  ", "start view", "viewer/demo.txt"}) {
+        INFO(text);
+        CHECK(r.out.find(text) != std::string::npos);
+    }
+    const size_t at = r.out.find("A tour of the keys: ");
+    REQUIRE(at != std::string::npos);
+    const std::string path = r.out.substr(at + 20, r.out.find('\n', at) - at - 20);
+    CHECK(fs::equivalent(path, SSAO_DEMO_SCRIPT));
 }

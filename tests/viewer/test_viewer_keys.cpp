@@ -16,9 +16,12 @@
 
 #include <GLFW/glfw3.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -61,10 +64,40 @@ void hold(viewer::Controls& c, int key, int frames) {
 
 glm::vec3 forward(const camera::Camera& c) { return glm::normalize(c.target - c.eye); }
 
+// The overlay's lines with the window-fitting undone: a continuation (two
+// spaces first) joined back to the line it was broken from.
+std::vector<std::string> unwrapped(const std::vector<std::string>& lines) {
+    std::vector<std::string> out;
+    for (const auto& l : lines) {
+        if (!out.empty() && l.rfind("  ", 0) == 0)
+            out.back() += l;
+        else
+            out.push_back(l);
+    }
+    return out;
+}
+
 bool contains(const std::vector<std::string>& lines, const std::string& text) {
-    for (const auto& l : lines)
+    for (const auto& l : unwrapped(lines))
         if (l.find(text) != std::string::npos) return true;
     return false;
+}
+
+// A 1.1 timing of every pass the plugin can run, each with a long number.
+ssao_timings all_pass_timings() {
+    ssao_timings t{};
+    t.size = sizeof t;
+    t.available = 1;
+    t.frame = 123456;
+    const uint32_t kinds[] = {SSAO_PASS_CLEAR, SSAO_PASS_DOWNSAMPLE, SSAO_PASS_AO, SSAO_PASS_BLUR_X, SSAO_PASS_BLUR_Y,
+                              SSAO_PASS_UPSAMPLE};
+    t.pass_count = 6;
+    for (uint32_t i = 0; i < t.pass_count; ++i) {
+        t.pass_kind[i] = kinds[i];
+        t.pass_ms[i] = 123.456 + i;
+    }
+    t.total_ms = 999.999;
+    return t;
 }
 
 }  // namespace
@@ -212,8 +245,12 @@ TEST_CASE("B steps through every blur and back; V, O, F12 and Esc") {
         tap(c, GLFW_KEY_B);
         seen.push_back(c.state().settings.blur);
     }
-    CHECK(seen == std::vector<ssao_blur>{SSAO_BLUR_DEPTH_AWARE, SSAO_BLUR_BOX_4X4, SSAO_BLUR_GAUSSIAN, SSAO_BLUR_NONE,
-                                         SSAO_BLUR_DEPTH_AWARE});
+    // The cycle depth-aware -> 4x4 box -> gaussian -> none -> depth-aware, from wherever the defaults start it.
+    const std::vector<ssao_blur> cycle = {SSAO_BLUR_DEPTH_AWARE, SSAO_BLUR_BOX_4X4, SSAO_BLUR_GAUSSIAN, SSAO_BLUR_NONE};
+    const auto start = std::find(cycle.begin(), cycle.end(), seen[0]);
+    REQUIRE(start != cycle.end());
+    for (size_t i = 0; i < seen.size(); ++i)
+        CHECK(seen[i] == cycle[(size_t(start - cycle.begin()) + i) % cycle.size()]);
     // Every blur B gives is one the plugin accepts.
     for (ssao_blur b : seen) {
         ssao_settings s = c.state().settings, r{};
@@ -315,7 +352,7 @@ TEST_CASE("the overlay states the settings, the GPU milliseconds and what a key 
     t.pass_ms[1] = 0.25;
     t.pass_ms[2] = 0.25;
     CHECK(contains(viewer::overlay_lines(c.state(), t, 320, 240),
-                   "GPU ms (frame 7): ao 1.250  blur x 0.250  blur y 0.250  total 1.750"));
+                   "GPU ms (frame 7): ao 1.250  blur x 0.250  blur y 0.250  total 1.750"));   // on fitted lines
     t.pass_count = 0;
 #endif
     tap(c, GLFW_KEY_3);
@@ -395,4 +432,94 @@ TEST_CASE("M switches the estimator when the plugin has one") {
     // HOOK(method): a 1.0 header has no estimator; the key says so.
     CHECK(contains(viewer::overlay_lines(c.state(), t, 320, 240), "no estimator choice"));
 #endif
+}
+
+TEST_CASE("C puts the camera back to the start view, from a script as from the keyboard") {
+    Fixture f;
+    viewer::Controls c = f.controls();
+    const camera::Camera start = c.camera();
+    // The README's complaint: W held for 3 s flies into the model; C brings the start view back.
+    std::vector<viewer::ScriptEvent> events;
+    std::string error;
+    REQUIRE_MESSAGE(viewer::parse_script("0 hold W 90\n90 hold L 20\n111 C\n", events, error), error);
+    size_t next = 0;
+    // As the viewer's frame loop runs a script: the frame's events, then the held keys move the camera.
+    for (long frame = 0; frame < 113; ++frame) {
+        for (; next < events.size() && events[next].frame <= frame; ++next)
+            c.key(events[next].key, events[next].kind == viewer::ScriptEvent::Kind::Press ? GLFW_PRESS : GLFW_RELEASE);
+        c.advance(1.0f / 30.0f);
+        if (frame == 110) {   // flown forward and turned before C
+            CHECK(glm::length(c.camera().eye - start.eye) > 0.1f);
+            CHECK(glm::length(forward(c.camera()) - forward(start)) > 0.1f);
+        }
+    }
+    CHECK(c.camera().eye == start.eye);
+    CHECK(c.camera().target == start.target);
+    CHECK(c.camera().znear == start.znear);
+    CHECK(c.camera().zfar == start.zfar);
+    // The next move flies from the start view again.
+    hold(c, GLFW_KEY_W, 1);
+    CHECK(glm::length(c.camera().eye - start.eye) < 0.1f);
+    CHECK(glm::dot(forward(c.camera()), forward(start)) > 0.999f);
+}
+
+TEST_CASE("the overlay fits the window: at 480 px every line, the GPU line of six passes included") {
+    Fixture f;
+    viewer::Controls c = f.controls();
+    if (c.state().settings.method != SSAO_METHOD_VISIBILITY) tap(c, GLFW_KEY_M);   // the longest settings line
+    REQUIRE(c.state().settings.method == SSAO_METHOD_VISIBILITY);
+    tap(c, GLFW_KEY_H);
+    const ssao_timings t = all_pass_timings();
+    for (const auto& [w, h] : std::vector<std::pair<int, int>>{{480, 360}, {480, 270}, {320, 240}, {800, 600}, {1920, 1080}}) {
+        const std::vector<std::string> lines = viewer::overlay_lines(c.state(), t, w, h);
+        const int scale = viewer::overlay_scale(w, h);
+        for (const auto& l : lines) {
+            INFO(w << "x" << h << " line '" << l << "'");
+            CHECK(viewer::overlay_width(l, scale) <= w - 2 * scale);   // a margin on the right too
+        }
+        // Nothing lost: every pass, the total and the key help are still there.
+        for (const char* part : {"GPU ms (frame 123456):", "clear 123.456", "down 124.456", "ao 125.456", "blur x 126.456",
+                                 "blur y 127.456", "up 128.456", "total 999.999", "estimator visibility", "Esc quit",
+                                 "C start view"}) {
+            INFO(w << "x" << h << ": " << std::string(part));
+            CHECK(contains(lines, part));
+        }
+    }
+    // Unfitted, the GPU line alone is wider than 480 px: the fitting is what makes it fit.
+    const std::vector<std::string> wide = unwrapped(viewer::overlay_lines(c.state(), t, 480, 360));
+    bool gpu_wider = false;
+    for (const auto& l : wide)
+        if (l.rfind("GPU ms", 0) == 0) gpu_wider = viewer::overlay_width(l, 1) > 480;
+    CHECK(gpu_wider);
+}
+
+TEST_CASE("--help names every key the viewer answers and the shipped demo script") {
+    const std::string help = viewer::help_text("scene.glb", "/data/viewer/demo.txt");
+    const std::string keys = help.substr(help.find("keys:"));
+    // Every key Controls::key acts on, by the name the help gives it.
+    for (const char* key : {"W A S D", "Q Z", "I J K L", "E R T Y U", "1 2 3 4", "0 ", "B ", "V ", "O ", "M ", "H ", "X ",
+                            "C ", "F12", "Esc"}) {
+        INFO(std::string(key));
+        CHECK(keys.find(std::string("  ") + key) != std::string::npos);
+    }
+    CHECK(keys.find("debug view") != std::string::npos);
+    CHECK(keys.find("start view") != std::string::npos);
+    CHECK(help.find("/data/viewer/demo.txt") != std::string::npos);
+    // Every letter the controls answer is in the help (letters without a meaning are not).
+    Fixture f;
+    for (char letter = 'A'; letter <= 'Z'; ++letter) {
+        viewer::Controls c = f.controls();
+        const ssao_settings before = c.state().settings;
+        const camera::Camera cam = c.camera();
+        const int key = GLFW_KEY_A + (letter - 'A');
+        c.key(key, GLFW_PRESS);
+        c.advance(0.5f);
+        c.key(key, GLFW_RELEASE);
+        const bool acts = std::memcmp(&before, &c.state().settings, sizeof before) != 0 || c.camera().eye != cam.eye ||
+                          c.camera().target != cam.target || c.state().mode != 0 || !c.state().overlay ||
+                          c.state().view != viewer::View::Lit || !c.state().notice.empty();
+        if (!acts) continue;
+        INFO("key " << letter << " acts but the help does not name it");
+        CHECK(keys.find(std::string(1, letter) + " ") != std::string::npos);
+    }
 }

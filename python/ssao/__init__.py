@@ -1,20 +1,42 @@
-"""ssao.py - the SSAO plugin (libssao.so) from Python, through ctypes only.
+"""ssao - the SSAO plugin (libssao.so) from Python, through ctypes only.
 
 A mirror of include/ssao/ssao.h (structs, enums, constants) and a thin wrapper
 of its function table:
 
     import ssao
-    lib = ssao.Library()                      # $SSAO_PLUGIN, else libssao.so.1 on the search path
+    lib = ssao.Library()                      # found as below; or ssao.Library("/path/libssao.so.1")
     settings = lib.preset_settings(ssao.SSAO_PRESET_MEDIUM)
     settings.radius = 0.5
     with lib.create_context(settings=settings) as ctx:   # a GL 3.3+ context current
         out = ctx.execute(depth_texture=depth.glo, normal_texture=normals.glo,
-                          projection=proj_column_major,
+                          projection=proj,   # a 4x4 numpy array P[row, col], or 16 floats column-major
                           normal_packing=ssao.SSAO_NORMAL_PACKING_SIGNED)
         print(out.texture, ctx.timings().total_ms)
 
+Where Library() finds the library (search_order()), the first that loads of:
+  1. beside this module: <package dir>/libssao.so.1 (a copy installed as package data);
+  2. the build tree this copy of the module was generated into (build/python/ssao:
+     the build's plugin/libssao.so.1, named by a _build_paths.py that only the
+     build tree has; an installed module has none);
+  3. the install prefix the module lies in: <prefix>/lib/libssao.so.1 (for
+     `cmake --install`, the prefix's libdir as CMake laid it out; for pip, the
+     prefix above the lib*/ folder holding site-packages or dist-packages);
+  4. $SSAO_PLUGIN;
+  5. libssao.so.1 through the dynamic loader's own search (LD_LIBRARY_PATH,
+     ld.so.cache: a Debian package's /usr/lib/...).
+A path given to Library(path) is the only one tried.
+
+Matrices (projection=, view_matrix=) are accepted as a 4x4 numpy array or
+nested sequence in mathematical layout, M[row][col] (numpy's usual layout:
+the translation in M[:3, 3]), which is flattened column by column as the C API
+expects; or as 16 numbers (a flat sequence or numpy array of shape (16,)),
+taken as already column-major (glm's and moderngl's layout). Vectors
+(viewport=) as 4 numbers of any sequence or numpy array.
+
 Every failing call raises ssao.Error, whose .status is the ssao_status and
-whose .last_error is the library's sentence on it.
+whose .last_error is the library's sentence on it; an enum value the header
+does not have is refused with ssao.Error(SSAO_ERROR_INVALID_ENUM) naming the
+value and what it should be, before the library is called.
 
 Keeping the mirror true: tests/python/test_layout.py compares every struct's
 size and every field's name, order, offset, size and type, every enumerator and
@@ -23,11 +45,40 @@ to a struct in the header is one line appended to its _fields_ here; until it
 is, that test fails and names the field.
 """
 
+from __future__ import annotations
+
 import ctypes
 import enum
 import os
+import re
+import sys
+from typing import Any, Callable, Iterable, List, Optional, Sequence, Type, Union
 
-__all__ = ["Library", "Context", "Error"]  # plus every SSAO_* constant and ssao_* type below
+__all__ = ["Library", "Context", "Error", "search_order", "matrix16", "make_inputs", "__version__"]
+# plus every SSAO_* constant and ssao_* type below
+
+
+def _read_version() -> str:
+    """The package version: generated beside the module by CMake or by
+    setup.py from project(ssao VERSION ...) in the top-level CMakeLists.txt;
+    in a source checkout, read from that file."""
+    try:
+        from ._version import __version__ as v
+        return v
+    except ImportError:
+        pass
+    top = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "CMakeLists.txt")
+    try:
+        with open(top, encoding="utf-8") as f:
+            m = re.search(r"project\(ssao VERSION ([0-9.]+)", f.read())
+        return m.group(1) if m else "unknown"
+    except OSError:
+        return "unknown"
+
+
+__version__: str = _read_version()
+
+SONAME = "libssao.so.1"
 
 # ----------------------------------------------------------------- constants
 
@@ -361,7 +412,7 @@ STRUCTS = (ssao_settings, ssao_inputs, ssao_output, ssao_timings, ssao_frame_inf
 class Error(Exception):
     """A call into the library failed: .function, .status (ssao_status), .last_error (str)."""
 
-    def __init__(self, function, status, last_error):
+    def __init__(self, function: str, status: int, last_error: str) -> None:
         try:
             status = ssao_status(status)
         except ValueError:
@@ -373,42 +424,182 @@ class Error(Exception):
         super().__init__("%s failed: %s%s" % (function, name, ": " + last_error if last_error else ""))
 
 
-def _text(raw):
+def _text(raw: Optional[bytes]) -> str:
     return raw.decode("utf-8", "replace") if raw else ""
 
 
-def _search_order(path):
-    """Where Library() looks: the explicit path alone, else $SSAO_PLUGIN alone,
-    else the soname through the dynamic loader's search (LD_LIBRARY_PATH,
-    ld.so.cache, /usr/lib...)."""
+# ------------------------------------------------------------ enum checks
+
+# The enum each enum-typed struct field holds, for messages that name the value.
+_ENUM_FIELDS = {
+    "kernel_shape": ssao_kernel_shape, "distribution": ssao_kernel_distribution, "rotation": ssao_rotation,
+    "blur": ssao_blur, "output_format": ssao_output_format, "method": ssao_method,
+    "resolution": ssao_resolution, "debug_view": ssao_debug_view,
+    "normal_space": ssao_normal_space, "normal_packing": ssao_normal_packing, "clip_range": ssao_clip_range,
+    "output_mode": ssao_output_mode,
+}
+
+
+def _members(kind: Type[enum.IntEnum]) -> str:
+    return ", ".join("%s (%d)" % (m.name, m.value) for m in kind if not m.name.endswith("_MAX_ENUM"))
+
+
+def _check_enum(function: str, what: str, kind: Type[enum.IntEnum], value: Any) -> int:
+    """int(value) when it is one of `kind`'s members, else ssao.Error(INVALID_ENUM) naming it."""
+    try:
+        number = int(value)
+    except (TypeError, ValueError):
+        number = None
+    if number is None or number not in kind._value2member_map_ or kind(number).name.endswith("_MAX_ENUM"):
+        raise Error(function, SSAO_ERROR_INVALID_ENUM,
+                    "%s %r is not an %s; one of %s" % (what, value, kind.__name__, _members(kind)))
+    return number
+
+
+def _check_enum_fields(function: str, struct: ctypes.Structure) -> None:
+    for name, _ in struct._fields_:
+        if name in _ENUM_FIELDS:
+            _check_enum(function, "%s.%s" % (type(struct).__name__, name), _ENUM_FIELDS[name], getattr(struct, name))
+
+
+# --------------------------------------------------------- matrices, inputs
+
+Matrix = Any  # a 4x4 numpy array or nested sequence (M[row][col]), or 16 column-major numbers
+
+
+def _as_list(value: Any) -> Any:
+    return value.tolist() if hasattr(value, "tolist") else value
+
+
+def matrix16(value: Matrix, name: str = "matrix") -> "ctypes.Array[ctypes.c_float]":
+    """16 floats in the column-major order of the C API, from a 4x4 matrix in
+    mathematical layout (value[row][col], numpy's M[row, col]; flattened column
+    by column: M[0][0], M[1][0], M[2][0], M[3][0], M[0][1], ...) or from 16
+    numbers already column-major (taken as they are). Anything else raises
+    ValueError or TypeError naming `name` and what it got."""
+    rows = _as_list(value)
+    try:
+        count = len(rows)
+    except TypeError:
+        raise TypeError("%s must be a 4x4 matrix or 16 numbers, not %s" % (name, type(value).__name__)) from None
+    if count == 4 and all(hasattr(r, "__len__") and len(r) == 4 for r in rows):
+        flat = [rows[r][c] for c in range(4) for r in range(4)]
+    elif count == 16:
+        flat = list(rows)
+    else:
+        shape = getattr(value, "shape", None)
+        raise ValueError("%s must be a 4x4 matrix or 16 numbers; got %s" %
+                         (name, "shape %s" % (tuple(shape),) if shape is not None else "%d items" % count))
+    try:
+        return (ctypes.c_float * 16)(*[float(v) for v in flat])
+    except (TypeError, ValueError):
+        raise TypeError("%s holds something that is not a number: %r" % (name, flat)) from None
+
+
+def _vector(value: Any, count: int, name: str, ctype: Any, convert: Callable[[Any], Any]) -> Any:
+    items = _as_list(value)
+    try:
+        items = list(items)
+    except TypeError:
+        raise TypeError("%s must be %d numbers, not %s" % (name, count, type(value).__name__)) from None
+    if len(items) != count:
+        raise ValueError("%s must be %d numbers; got %d" % (name, count, len(items)))
+    try:
+        return (ctype * count)(*[convert(v) for v in items])
+    except (TypeError, ValueError):
+        raise TypeError("%s holds something that is not a number: %r" % (name, items)) from None
+
+
+def make_inputs(**fields: Any) -> ssao_inputs:
+    """An ssao_inputs from its fields as keywords: projection and view_matrix as
+    matrix16() takes them, viewport as 4 ints (x, y, width, height), enum
+    fields as members or ints of their enum, the rest as ints."""
+    inputs = ssao_inputs()
+    for name, value in fields.items():
+        if name in ("projection", "view_matrix"):
+            value = matrix16(value, name)
+        elif name == "viewport":
+            value = _vector(value, 4, name, ctypes.c_int32, int)
+        elif name in _ENUM_FIELDS:
+            value = _check_enum("execute", "ssao_inputs." + name, _ENUM_FIELDS[name], value)
+        elif name == "size" or not hasattr(inputs, name):
+            raise TypeError("ssao_inputs has no field %r (fields: %s)" %
+                            (name, ", ".join(n for n, _ in ssao_inputs._fields_ if n != "size")))
+        setattr(inputs, name, value)
+    return inputs
+
+
+# ------------------------------------------------------------------ finding it
+
+
+def _package_dir() -> str:
+    return os.path.dirname(os.path.abspath(__file__))
+
+
+def _prefix_libdirs(package_dir: str) -> List[str]:
+    """The library folders of the install prefix the module lies in."""
+    try:
+        from . import _install_paths  # written by `cmake --install` only
+        return [os.path.normpath(os.path.join(package_dir, _install_paths.PACKAGE_TO_LIBDIR))]
+    except ImportError:
+        pass
+    # pip: <prefix>/lib*/python3*/site-packages/ssao or .../dist-packages/ssao.
+    parts = package_dir.split(os.sep)
+    for i in range(len(parts) - 1, 0, -1):
+        if parts[i].startswith("lib") and i + 1 < len(parts) and parts[i + 1].startswith("python"):
+            prefix = os.sep.join(parts[:i]) or os.sep
+            found = [os.path.join(prefix, parts[i])]
+            multiarch = getattr(sys.implementation, "_multiarch", None)  # Debian's lib/x86_64-linux-gnu
+            if multiarch:
+                found.append(os.path.join(prefix, parts[i], multiarch))
+            return found
+    return []
+
+
+def search_order(path: Optional[Union[str, "os.PathLike[str]"]] = None) -> List[str]:
+    """Where Library(path) looks, in order (see the module's docstring)."""
     if path:
-        return [str(path)]
+        return [os.fspath(path)]
+    here = _package_dir()
+    order = [os.path.join(here, SONAME)]
+    try:
+        from . import _build_paths  # only in a build tree's copy of the module
+        order.append(_build_paths.PLUGIN)
+    except ImportError:
+        pass
+    order += [os.path.join(d, SONAME) for d in _prefix_libdirs(here)]
     env = os.environ.get("SSAO_PLUGIN")
     if env:
-        return [env]
-    return ["libssao.so.1", "libssao.so"]
+        order.append(env)
+    order.append(SONAME)
+    return order
 
 
-def egl_get_proc_address():
+def egl_get_proc_address() -> Callable[[Any, bytes], Optional[int]]:
     """A get_proc_address for create_context on the current EGL context
     (moderngl's EGL backend, or any host on EGL)."""
     egl = ctypes.CDLL("libEGL.so.1")
     egl.eglGetProcAddress.restype = ctypes.c_void_p
     egl.eglGetProcAddress.argtypes = [ctypes.c_char_p]
 
-    def get(_user, name):
+    def get(_user: Any, name: bytes) -> Optional[int]:
         return egl.eglGetProcAddress(name)
 
     return get
 
 
 class Library:
-    """libssao.so, opened with dlopen (ctypes.CDLL), and its function table."""
+    """libssao.so, opened with dlopen (ctypes.CDLL), and its function table.
+    .path is the file it loaded, .version the interface version (major, minor)."""
 
-    def __init__(self, path=None):
+    def __init__(self, path: Optional[Union[str, "os.PathLike[str]"]] = None) -> None:
         errors = []
         self._dll = None
-        for candidate in _search_order(path):
+        for candidate in search_order(path):
+            # A path that is not there is skipped quietly unless it was the one asked for.
+            if os.sep in candidate and not os.path.exists(candidate) and not path:
+                errors.append("%s: not there" % candidate)
+                continue
             try:
                 self._dll = ctypes.CDLL(candidate, mode=os.RTLD_NOW | os.RTLD_LOCAL)
                 self.path = candidate
@@ -416,49 +607,57 @@ class Library:
             except OSError as e:
                 errors.append(str(e))
         if self._dll is None:
-            raise OSError("cannot load the SSAO plugin (pass a path or set SSAO_PLUGIN): " + "; ".join(errors))
+            raise OSError("cannot load the SSAO plugin (pass a path or set SSAO_PLUGIN); tried: " + "; ".join(errors))
         get_api = PFN_ssao_get_api(("ssao_get_api", self._dll))
         self.api = ssao_api()
         status = get_api(SSAO_API_VERSION, ctypes.byref(self.api))
         if status != SSAO_OK:
-            raise Error("ssao_get_api", status, "the library refused interface version 1.0")
+            raise Error("ssao_get_api", status, "%s refused interface version %d.%d" %
+                        (self.path, SSAO_API_VERSION >> 16, SSAO_API_VERSION & 0xFFFF))
         self.version = (self.api.version >> 16, self.api.version & 0xFFFF)
 
-    def status_string(self, status):
+    def status_string(self, status: int) -> str:
         return _text(self.api.status_string(int(status)))
 
-    def _check(self, function, status, message=None):
+    def _check(self, function: str, status: int, message: Optional[str] = None) -> None:
         if status != SSAO_OK:
             raise Error(function, status, message if message is not None else self.status_string(status))
 
-    def resolve_settings(self, settings=None):
+    def resolve_settings(self, settings: Optional[ssao_settings] = None) -> ssao_settings:
         """Every zero (default) field resolved; raises Error on an invalid value."""
         settings = settings if settings is not None else ssao_settings()
+        _check_enum_fields("resolve_settings", settings)
         out = ssao_settings()
         self._check("resolve_settings", self.api.resolve_settings(ctypes.byref(settings), ctypes.byref(out)))
         return out
 
-    def preset_settings(self, preset):
+    def preset_settings(self, preset: Union[ssao_preset, int]) -> ssao_settings:
+        number = _check_enum("preset_settings", "preset", ssao_preset, preset)
         out = ssao_settings()
-        self._check("preset_settings", self.api.preset_settings(int(preset), ctypes.byref(out)))
+        self._check("preset_settings", self.api.preset_settings(number, ctypes.byref(out)))
         return out
 
-    def create_context(self, get_proc_address=None, settings=None, log=None):
+    def create_context(self, get_proc_address: Optional[Callable[[Any, bytes], Optional[int]]] = None,
+                       settings: Optional[ssao_settings] = None,
+                       log: Optional[Callable[[ssao_log_level, str], None]] = None) -> "Context":
         """A Context on the GL context current on this thread. get_proc_address(user, name)
         returns a GL function's address (default: eglGetProcAddress); log(level, message)
         receives the library's messages."""
+        if settings is not None:
+            _check_enum_fields("create_context", settings)
         return Context(self, get_proc_address or egl_get_proc_address(), settings, log)
 
 
 class Context:
     """One ssao_context. Use it (and destroy it) with its GL context current."""
 
-    def __init__(self, library, get_proc_address, settings, log):
+    def __init__(self, library: Library, get_proc_address: Callable[[Any, bytes], Optional[int]],
+                 settings: Optional[ssao_settings], log: Optional[Callable[[ssao_log_level, str], None]]) -> None:
         self._lib = library
         self._api = library.api
-        self._messages = []
+        self._messages: List[str] = []
 
-        def on_log(_user, level, message):
+        def on_log(_user: Any, level: int, message: Optional[bytes]) -> None:
             text = _text(message)
             if level == SSAO_LOG_ERROR:
                 self._messages.append(text)
@@ -478,62 +677,55 @@ class Context:
         if status != SSAO_OK:
             raise Error("create_context", status, self._messages[-1] if self._messages else library.status_string(status))
 
-    # The context's own sentence on its last failure.
-    def last_error(self):
+    def last_error(self) -> str:
+        """The context's own sentence on its last failure."""
         return _text(self._api.last_error(self._ctx))
 
-    def _check(self, function, status):
+    def _check(self, function: str, status: int) -> None:
         if status != SSAO_OK:
             raise Error(function, status, self.last_error() or self._lib.status_string(status))
 
-    def set_settings(self, settings):
+    def set_settings(self, settings: ssao_settings) -> None:
+        _check_enum_fields("set_settings", settings)
         self._check("set_settings", self._api.set_settings(self._ctx, ctypes.byref(settings)))
 
-    def get_settings(self):
+    def get_settings(self) -> ssao_settings:
         out = ssao_settings()
         self._check("get_settings", self._api.get_settings(self._ctx, ctypes.byref(out)))
         return out
 
-    def execute(self, inputs=None, **fields):
+    def execute(self, inputs: Optional[ssao_inputs] = None, **fields: Any) -> ssao_output:
         """Runs the pass. Either an ssao_inputs, or its fields as keywords
-        (projection and view_matrix: 16 floats, column-major; viewport: 4 ints).
-        Returns the ssao_output."""
+        (make_inputs: projection and view_matrix a 4x4 matrix M[row][col] or
+        16 floats column-major; viewport 4 ints). Returns the ssao_output."""
         if inputs is None:
-            inputs = ssao_inputs()
-            for name, value in fields.items():
-                if name in ("projection", "view_matrix"):
-                    value = (ctypes.c_float * 16)(*[float(v) for v in value])
-                elif name == "viewport":
-                    value = (ctypes.c_int32 * 4)(*[int(v) for v in value])
-                elif not hasattr(inputs, name):
-                    raise TypeError("ssao_inputs has no field %r" % name)
-                setattr(inputs, name, value)
+            inputs = make_inputs(**fields)
         elif fields:
             raise TypeError("give an ssao_inputs or its fields, not both")
         out = ssao_output()
         self._check("execute", self._api.execute(self._ctx, ctypes.byref(inputs), ctypes.byref(out)))
         return out
 
-    def timings(self):
+    def timings(self) -> ssao_timings:
         out = ssao_timings()
         self._check("get_timings", self._api.get_timings(self._ctx, ctypes.byref(out)))
         return out
 
-    def frame_info(self):
+    def frame_info(self) -> ssao_frame_info:
         out = ssao_frame_info()
         self._check("get_frame_info", self._api.get_frame_info(self._ctx, ctypes.byref(out)))
         return out
 
-    def destroy(self):
+    def destroy(self) -> None:
         """Deletes the context's GL objects (its GL context must be current). Idempotent."""
         if self._ctx:
             status = self._api.destroy_context(self._ctx)
             self._ctx = _ctx_p()
             self._check("destroy_context", status)
 
-    def __enter__(self):
+    def __enter__(self) -> "Context":
         return self
 
-    def __exit__(self, *exc):
+    def __exit__(self, *exc: Any) -> bool:
         self.destroy()
         return False
