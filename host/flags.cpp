@@ -59,6 +59,16 @@ glm::vec3 vec3(const std::string& flag, const std::string& text) {
     return v;
 }
 
+void check_normal_float(const std::string& flag, const std::string& text, double v) {
+    const double smallest = static_cast<double>(std::numeric_limits<float>::min());
+    if (v != 0.0 && std::abs(v) < smallest) {
+        std::ostringstream s;
+        s << smallest;
+        fail(flag + " " + text + " is below the smallest normal 32-bit float (" + s.str() +
+             "); shaders would read it as 0");
+    }
+}
+
 Outcome walk(int argc, const char* const* argv, const Valued& valued, const Switches& switches,
              const Positional& positional) {
     bool help = false, version = false;
