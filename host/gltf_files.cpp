@@ -16,6 +16,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <filesystem>
 #include <system_error>
 
@@ -111,8 +112,10 @@ bool GltfFiles::plan(const unsigned char* json, size_t size, const std::string& 
         }
         // A byteLength tinygltf would refuse: it says so itself, and the
         // file is never read.
-        if (!b.contains("byteLength") || !b["byteLength"].is_number_unsigned()) continue;
-        const uint64_t length = b["byteLength"].get<uint64_t>();
+        if (!b.contains("byteLength") || !b["byteLength"].is_number()) continue;
+        const double declared = b["byteLength"].get<double>();
+        if (!(declared >= 0.0 && declared <= 9007199254740992.0) || declared != std::floor(declared)) continue;
+        const uint64_t length = b["byteLength"].is_number_unsigned() ? b["byteLength"].get<uint64_t>() : uint64_t(declared);
         const std::string name = decode_uri(uri);
         if (name.find('\0') != std::string::npos) {
             error = scene_path + ": " + what + "'s URI " + quote_uri(uri) + " contains a NUL byte.";

@@ -102,8 +102,13 @@ for args in "--radius 1e-45" "--fov 1e-30" "--near 1e-40"; do
   set -- $args
   check "ssao-reference $args: exit 2, one line naming $1" expect_error 2 "$1 $2" "$reference" $args --out "$out"
 done
-check "ssao-host --msaa 32: this GL's sample limit, before rendering" expect_error 1 "--msaa 32: this GL allows at most" \
-  "$host" --msaa 32 --width 16 --height 16 --out "$out"
+# llvmpipe allows 4 samples; a GL that allows 32 renders instead.
+if "$host" --msaa 32 --width 16 --height 16 --frames 1 --only ao --out "$work/msaa32" >/dev/null 2>&1; then
+  echo "ok      ssao-host --msaa 32: this GL allows 32 samples (the limit is not exercised here)"
+else
+  check "ssao-host --msaa 32: this GL's sample limit, one line, before rendering" expect_error 1 \
+    "--msaa 32: this GL allows at most" "$host" --msaa 32 --width 16 --height 16 --out "$out"
+fi
 check "ssao-host --fov 1e-3 still renders" "$host" --fov 1e-3 --width 16 --height 16 --frames 1 --only ao --out "$work/fov" >/dev/null
 [ ! -e "$out" ] || { echo "FAILED  a refused run left $out behind"; failures=$((failures + 1)); }
 
