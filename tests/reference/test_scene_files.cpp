@@ -222,6 +222,17 @@ TEST_CASE("buffer URIs that leave the scene's folder are refused, naming the URI
         CHECK_FALSE(has(r.error, "requested"));
         CHECK_FALSE(has(r.error, "got"));
     }
+    // A URI with a line break (JSON "\n") and a long one: still one line, cut short.
+    const std::string broken = dir.write("scene/nl.gltf", triangle_gltf("../x\\ny.bin"));
+    Result r = load(broken);
+    CHECK_FALSE(r.ok);
+    CHECK(has(r.error, "buffer 0's URI '../x\\x0ay.bin' names a file outside"));
+    const std::string long_uri = "../" + std::string(5000, 'a');
+    r = load(dir.write("scene/long.gltf", triangle_gltf(long_uri)));
+    CHECK_FALSE(r.ok);
+    CHECK(r.error.size() < 500u);
+    CHECK(has(r.error, "buffer 0's URI '../aaaa"));
+    CHECK(has(r.error, "aaa...' "));
     // Allowed: the file outside is read like one inside.
     CHECK(load(dir.write("scene/ok1.gltf", triangle_gltf("../outside.bin")), outside_allowed()).ok);
     CHECK(load(dir.write("scene/ok2.gltf", triangle_gltf(outside)), outside_allowed()).ok);
