@@ -41,7 +41,9 @@ scene::Limits fuzz_limits() {
 // exit: SCRATCH/scene/ is the scene's folder, SCRATCH/outside.bin lies
 // beside it. Its names are what the URI mutation writes.
 const std::string& scratch() {
-    static const std::string dir = [] {
+    // Never destroyed: the atexit handler that removes the folder runs after
+    // the static destructors registered later than it.
+    static const std::string& dir = *new std::string([] {
         namespace fs = std::filesystem;
         std::string tmpl = (fs::temp_directory_path() / "fuzz_scene.XXXXXX").string();
         if (!::mkdtemp(tmpl.data())) std::abort();
@@ -62,7 +64,7 @@ const std::string& scratch() {
             std::filesystem::remove_all(scratch(), ec);
         });
         return root.string();
-    }();
+    }());
     return dir;
 }
 
