@@ -17,6 +17,7 @@ struct Error {
     std::string message;
 };
 [[noreturn]] void fail(const std::string& message);
+// 's' for messages, its control characters written \xNN (one line always).
 std::string quoted(const std::string& s);
 
 // A finite number ("inf" too when allowed).

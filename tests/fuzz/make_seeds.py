@@ -155,6 +155,9 @@ def flags():
         "help": ["--help"],
         "fade-taa": ["--fade-start", "2", "--fade-end=9", "--radius-pixels", "12", "--frame-index", "4294967295",
                      "--accumulate", "16"],
+        "tiny-values": ["--radius", "1.2e-38", "--power=1e-45", "--fov", "1.2e-28", "--thickness", "3e-39",
+                        "--msaa", "4"],
+        "msaa-odd": ["--msaa", "3", "--sample-index", "2"],
     }
     for name, args in seeds.items():
         write("flags", name, "h" + "\0".join(args))
