@@ -85,6 +85,12 @@ for tool in "$host" "$reference" "$bench"; do
   check "$(basename "$tool") --help lists --allow-outside-files" bash -c '"$1" --help | grep -q -- --allow-outside-files' _ "$tool"
 done
 
+# The plugin named by --plugin: dlopen on a FIFO waited for a writer forever.
+check "ssao-host --plugin FIFO: one line, exit 1, no hang" \
+  expect_error 1 "not a regular file but a FIFO" "$host" --plugin "$work/fifo.gltf" --out "$out"
+check "ssao-bench --plugin FIFO: one line, exit 1, no hang" \
+  expect_error 1 "not a regular file but a FIFO" "$bench" --plugin "$work/fifo.gltf" --out "$out"
+
 # ssao-error: a FIFO as either image, a directory, a device.
 "$reference" --width 8 --height 8 --samples 4 --quiet --out "$work/ref" >/dev/null
 check "ssao-error FIFO REF: one line, exit 1, no hang" expect_error 1 "not a regular file but a FIFO" "$error" "$work/fifo.exr" "$work/ref"
