@@ -142,7 +142,9 @@ void measure_scene(const std::string& path, const Options& o, int scale, const s
                    const std::vector<Config>& configs, bool with_errors, std::vector<Row>& rows) {
     scene::Scene sc;
     std::string error;
-    if (!scene::load(path, sc, error)) throw std::runtime_error(error);
+    scene::Limits limits;
+    limits.allow_outside_files = o.allow_outside_files;
+    if (!scene::load(path, sc, error, limits)) throw std::runtime_error(error);
     const int w = o.width * scale, h = o.height * scale;
     const float aspect = static_cast<float>(w) / static_cast<float>(h);
     const camera::Camera cam = camera::choose(sc, aspect);

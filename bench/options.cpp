@@ -25,6 +25,8 @@ std::string help_text() {
            "  --plugin PATH          libssao.so to load (default: as ssao-host finds it)\n"
            "  --normals gbuffer|depth  the plugin's normals: the G-buffer's, or depth: normal_texture = 0, the\n"
            "                         plugin rebuilds them from depth (default gbuffer)\n"
+           "  --allow-outside-files  let the scenes' buffer URIs name files outside their folders\n"
+           "                         (absolute paths, '..', symbolic links leading out); refused by default\n"
            "  --help, -h / --version this text / the version\n"
            "Scenes default to the bundled spot and teapot models and scenes/corner.gltf.\n";
 }
@@ -77,6 +79,7 @@ Parse parse(int argc, char** argv, Options& o, std::string& error) {
          }},
     };
     const flags::Switches switches = {
+        {"--allow-outside-files", [&] { o.allow_outside_files = true; }},
         {"--quick", [&] {
              o.frames = 5;
              o.warmup = 2;

@@ -16,6 +16,7 @@ struct Options {
     std::string out = "bench-out";
     std::string plugin;                      // empty: plugin::Library::search_order()
     bool normals_from_depth = false;         // --normals depth: every configuration gets normal_texture = 0
+    bool allow_outside_files = false;        // scenes' buffer URIs may leave their folders (host/scene_limits.h)
 };
 
 enum class Parse { Run, Help, Version, Error };

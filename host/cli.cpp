@@ -67,6 +67,7 @@ float ranged(const std::string& flag, const std::string& text, double lo, bool l
         r << (lo_open ? "(" : "[") << lo << ", " << hi << (hi_open ? ")" : "]");
         fail(flag + " " + text + " is out of range " + r.str());
     }
+    flags::check_normal_float(flag, text, v);
     return static_cast<float>(v);
 }
 
@@ -110,7 +111,7 @@ ParseResult parse(int argc, const char* const* argv, Options& o, std::string& er
          }},
         {"--eye", [&](const std::string& f, const std::string& v) { o.cam.eye = flags::vec3(f, v); }},
         {"--target", [&](const std::string& f, const std::string& v) { o.cam.target = flags::vec3(f, v); }},
-        {"--fov", [&](const std::string& f, const std::string& v) { o.cam.fov_deg = ranged(f, v, 0, true, 180, true); }},
+        {"--fov", [&](const std::string& f, const std::string& v) { o.cam.fov_deg = flags::fov_degrees(f, v); }},
         {"--near", [&](const std::string& f, const std::string& v) { o.cam.znear = ranged(f, v, 0, true, kBig, false); }},
         {"--far", [&](const std::string& f, const std::string& v) {
              const double d = flags::number(f, v, true);
@@ -186,6 +187,10 @@ ParseResult parse(int argc, const char* const* argv, Options& o, std::string& er
          }},
         {"--msaa", [&](const std::string& f, const std::string& v) {
              o.msaa = static_cast<int>(flags::integer(f, v, 1, 32));
+             // GL rounds a sample count up to one it supports: 3 would run
+             // with 4 and report 3. The largest allowed is checked once the
+             // context exists.
+             if ((o.msaa & (o.msaa - 1)) != 0) fail(f + " " + v + " is not a power of two (1, 2, 4, 8, 16 or 32)");
          }},
         {"--sample-index", [&](const std::string& f, const std::string& v) {
              o.sample_index = static_cast<uint32_t>(flags::integer(f, v, 0, 31));
@@ -199,6 +204,7 @@ ParseResult parse(int argc, const char* const* argv, Options& o, std::string& er
         {"--gl33", [&] { o.gl33 = true; }},
         {"--reverse-z", [&] { o.cam.reverse_z = true; }},
         {"--sheet", [&] { o.sheet = true; }},
+        {"--allow-outside-files", [&] { o.allow_outside_files = true; }},
         {"--no-sheet", [&] { o.sheet = false; }},
     };
 
@@ -254,6 +260,8 @@ std::string help_text(const ssao_settings* d, const std::string& default_scene, 
          "  --plugin PATH           libssao.so to load (default $SSAO_PLUGIN, else ../lib/libssao.so.1 beside\n"
          "                          the program, else the build tree's, else the system's; README \"Finding the plugin\")\n"
          "  --gl33                  ask for a GL 3.3 core context (default 4.5 core)\n"
+         "  --allow-outside-files   let the scene's buffer URIs name files outside its folder (absolute\n"
+         "                          paths, '..', symbolic links leading out); refused by default\n"
          "\n"
          "Camera (default: the scene's camera, else framed from the scene bounds)\n"
          "  --eye x,y,z --target x,y,z\n"
@@ -315,7 +323,8 @@ std::string help_text(const ssao_settings* d, const std::string& default_scene, 
          "  --debug-view " << debug_view_text::choices() << "\n"
          "                          one more execute with this debug view, written to debug_view.png (normal\n"
          "                          views: RGB, n*0.5+0.5; raw-ao, blur-weights: grey) (default none)\n"
-         "  --msaa N                the plugin reads a G-buffer rendered with N samples per pixel, 1..32\n"
+         "  --msaa N                the plugin reads a G-buffer rendered with N samples per pixel: 1, 2, 4..32,\n"
+         "                          a power of two and at most what the GL allows\n"
          "                          (GL_TEXTURE_2D_MULTISAMPLE; default 1 = single-sample); the lighting uses\n"
          "                          the single-sample G-buffer\n"
          "  --sample-index I        with --msaa N: the sample the plugin reads, 0..N-1 (default 0)\n"

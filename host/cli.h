@@ -22,6 +22,7 @@ enum class NormalFormat { RGBA16F, RGBA8 };
 // chooser or the plugin decide".
 struct Options {
     std::string scene_path;         // empty = the bundled default scene
+    bool allow_outside_files = false;  // the scene's buffer URIs may leave its folder (scene_limits.h)
     std::string out_dir = "out";
     std::string plugin_path;        // empty = plugin::Library::search_order()
     int width = 800;

@@ -14,7 +14,23 @@ namespace flags {
 
 void fail(const std::string& message) { throw Error{message}; }
 
-std::string quoted(const std::string& s) { return "'" + s + "'"; }
+std::string quoted(const std::string& s) {
+    // Control characters escaped: an argument with a line break must not
+    // make a usage error two lines.
+    std::string out = "'";
+    for (const char ch : s) {
+        const auto c = static_cast<unsigned char>(ch);
+        if (c < 0x20 || c == 0x7f) {
+            static const char hex[] = "0123456789abcdef";
+            out += "\\x";
+            out += hex[c >> 4];
+            out += hex[c & 15];
+        } else {
+            out += ch;
+        }
+    }
+    return out + "'";
+}
 
 double number(const std::string& flag, const std::string& text, bool allow_inf) {
     if (allow_inf && (text == "inf" || text == "infinity" || text == "+inf"))
@@ -57,6 +73,16 @@ glm::vec3 vec3(const std::string& flag, const std::string& text) {
         v[i] = static_cast<float>(d);
     }
     return v;
+}
+
+void check_normal_float(const std::string& flag, const std::string& text, double v) {
+    const double smallest = static_cast<double>(std::numeric_limits<float>::min());
+    if (v != 0.0 && std::abs(v) < smallest) {
+        std::ostringstream s;
+        s << smallest;
+        fail(flag + " " + text + " is below the smallest normal 32-bit float (" + s.str() +
+             "); shaders would read it as 0");
+    }
 }
 
 Outcome walk(int argc, const char* const* argv, const Valued& valued, const Switches& switches,

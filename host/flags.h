@@ -17,6 +17,7 @@ struct Error {
     std::string message;
 };
 [[noreturn]] void fail(const std::string& message);
+// 's' for messages, its control characters written \xNN (one line always).
 std::string quoted(const std::string& s);
 
 // A finite number ("inf" too when allowed).
@@ -25,6 +26,11 @@ double number(const std::string& flag, const std::string& text, bool allow_inf =
 long long integer(const std::string& flag, const std::string& text, long long lo, long long hi);
 // "x,y,z".
 glm::vec3 vec3(const std::string& flag, const std::string& text);
+// Refuses `v` (parsed from `text`) when it is not 0 but smaller in magnitude
+// than the smallest normal 32-bit float (1.17549e-38): as a float it becomes 0
+// (which the plugin reads as "default") or a denormal, which shaders flush
+// to 0. --radius 1e-45 and --power 1e-45 are refused here.
+void check_normal_float(const std::string& flag, const std::string& text, double v);
 
 using Valued = std::map<std::string, std::function<void(const std::string& flag, const std::string& value)>>;
 using Switches = std::map<std::string, std::function<void()>>;

@@ -165,8 +165,6 @@ int run(const cli::Options& o) {
             throw RunError("the bundled scene '" + scene_path + "' is missing (looked in $SSAO_DATA_DIR, " +
                            "<program>/../share/ssao and, for an uninstalled build, the source tree); " +
                            "pass a .gltf or .glb file");
-        if (fs::is_directory(scene_path, ec))
-            throw RunError("cannot load '" + scene_path + "': it is a directory, not a .gltf or .glb file");
     }
     const bool full = !o.only_ao;
     const bool sheet = o.sheet.value_or(full);
@@ -186,7 +184,9 @@ int run(const cli::Options& o) {
     const ssao_api& api = library.api();
 
     scene::Scene sc;
-    if (!scene::load(scene_path, sc, error)) throw RunError("cannot load the scene: " + error);
+    scene::Limits limits;
+    limits.allow_outside_files = o.allow_outside_files;
+    if (!scene::load(scene_path, sc, error, limits)) throw RunError("cannot load the scene: " + error);
     if (sc.mesh.triangle_count() == 0) throw RunError("'" + scene_path + "' has nothing to draw (no triangles)");
 
     std::string radius_note;
@@ -217,6 +217,17 @@ int run(const cli::Options& o) {
     if (W > max_size || H > max_size)
         throw RunError("the image size " + std::to_string(W) + "x" + std::to_string(H) +
                        " exceeds this GPU's largest texture, " + std::to_string(max_size));
+    // --msaa N (a power of two, checked when parsed) within what this
+    // context allows, before anything is rendered.
+    if (o.msaa > 1) {
+        GLint max_depth = 0, max_color = 0;
+        gl.GetIntegerv(GL_MAX_DEPTH_TEXTURE_SAMPLES, &max_depth);
+        gl.GetIntegerv(GL_MAX_COLOR_TEXTURE_SAMPLES, &max_color);
+        const int max_samples = std::min(max_depth, max_color);
+        if (o.msaa > max_samples)
+            throw RunError("--msaa " + std::to_string(o.msaa) + ": this GL allows at most " +
+                           std::to_string(max_samples) + " samples in a multisampled texture");
+    }
     const char* renderer = reinterpret_cast<const char*>(gl.GetString(GL_RENDERER));
 
     // Everything rendered is kept in memory and written at the end.
@@ -244,13 +255,6 @@ int run(const cli::Options& o) {
         // pixel; the lighting and the depth/normal pictures use the first.
         std::unique_ptr<gbuffer::GBuffer> ms_gbuf;
         if (o.msaa > 1) {
-            GLint max_depth = 0, max_color = 0;
-            gl.GetIntegerv(GL_MAX_DEPTH_TEXTURE_SAMPLES, &max_depth);
-            gl.GetIntegerv(GL_MAX_COLOR_TEXTURE_SAMPLES, &max_color);
-            const int max_samples = std::min(max_depth, max_color);
-            if (o.msaa > max_samples)
-                throw RunError("--msaa " + std::to_string(o.msaa) + ": this GL allows at most " +
-                               std::to_string(max_samples) + " samples in a multisampled texture");
             gbuffer::Desc ms_desc = gdesc;
             ms_desc.samples = o.msaa;
             ms_gbuf = std::make_unique<gbuffer::GBuffer>(gl, ms_desc, sc.mesh);

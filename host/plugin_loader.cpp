@@ -1,8 +1,10 @@
 #include "plugin_loader.h"
 
+#include "input_file.h"
 #include "locate.h"
 
 #include <dlfcn.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <climits>
@@ -26,6 +28,13 @@ bool Library::open(const std::string& path, std::string& error) {
     if (handle_) {
         dlclose(handle_);
         handle_ = nullptr;
+    }
+    // dlopen on a FIFO waits for a writer forever: a path (not a bare name
+    // for the loader's search) must name a regular file.
+    struct stat st {};
+    if (path.find('/') != std::string::npos && ::stat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode)) {
+        error = "cannot load the SSAO plugin '" + path + "': not a regular file but " + input_file::kind_text(st.st_mode);
+        return false;
     }
     handle_ = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
     if (!handle_) {

@@ -7,12 +7,13 @@ find_library(SSAO_TINYGLTF_LIBRARY tinygltf REQUIRED)
 add_library(ssao_scene STATIC
   ${CMAKE_CURRENT_LIST_DIR}/scene.cpp
   ${CMAKE_CURRENT_LIST_DIR}/scene_limits.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/gltf_files.cpp
   ${CMAKE_CURRENT_LIST_DIR}/camera.cpp
   ${CMAKE_CURRENT_LIST_DIR}/camera_flags.cpp)
 target_include_directories(ssao_scene PUBLIC ${CMAKE_CURRENT_LIST_DIR})
 # tiny_gltf.h is third-party: include it as a system header so -Werror stays on our code.
 target_include_directories(ssao_scene SYSTEM PRIVATE ${SSAO_TINYGLTF_INCLUDE_DIR})
-target_link_libraries(ssao_scene PUBLIC glm::glm ssao_flags ssao_locate PRIVATE ${SSAO_TINYGLTF_LIBRARY})
+target_link_libraries(ssao_scene PUBLIC glm::glm ssao_flags ssao_locate ssao_input_file PRIVATE ${SSAO_TINYGLTF_LIBRARY})
 if(TARGET nlohmann_json::nlohmann_json)
   target_link_libraries(ssao_scene PRIVATE nlohmann_json::nlohmann_json)
 endif()

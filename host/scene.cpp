@@ -7,6 +7,9 @@
 
 #include "scene.h"
 
+#include "gltf_files.h"
+#include "input_file.h"
+
 #include <cstdio>
 
 #if defined(__GNUC__)
@@ -27,11 +30,9 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
-#include <fstream>
 #include <functional>
 #include <limits>
 #include <sstream>
-#include <sys/stat.h>
 
 namespace scene {
 namespace {
@@ -488,57 +489,10 @@ void read_hints(const tinygltf::Value& extras, AoHints& h) {
 
 }  // namespace
 
-namespace {
-
-std::string size_text(uint64_t bytes) {
-    if (bytes % (uint64_t(1) << 30) == 0) return std::to_string(bytes >> 30) + " GiB";
-    if (bytes % (uint64_t(1) << 20) == 0) return std::to_string(bytes >> 20) + " MiB";
-    return std::to_string(bytes) + " bytes";
-}
-
-// Reads at most limits.max_bytes: a regular file is judged by its size
-// before reading, a stream (pipe, /dev/zero) while it is read.
-bool read_bounded(const std::string& path, const Limits& limits, std::vector<unsigned char>& bytes,
-                  std::string& error) {
-    const std::string too_large = path + ": the file is larger than " + size_text(limits.max_bytes) + ".";
-    struct stat st {};
-    if (::stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode) && uint64_t(st.st_size) > limits.max_bytes) {
-        error = too_large;
-        return false;
-    }
-    std::ifstream f(path, std::ios::binary);
-    if (!f) {
-        error = path + ": cannot open the file (missing or unreadable).";
-        return false;
-    }
-    try {
-        std::vector<char> chunk(size_t(1) << 16);
-        while (f) {
-            f.read(chunk.data(), std::streamsize(chunk.size()));
-            const auto got = size_t(f.gcount());
-            if (uint64_t(bytes.size()) + got > limits.max_bytes) {
-                error = too_large;
-                return false;
-            }
-            bytes.insert(bytes.end(), chunk.begin(), chunk.begin() + std::ptrdiff_t(got));
-        }
-    } catch (const std::bad_alloc&) {
-        error = path + ": out of memory while reading the file.";
-        return false;
-    }
-    if (f.bad()) {
-        error = path + ": cannot read the file.";
-        return false;
-    }
-    return true;
-}
-
-}  // namespace
-
 bool load(const std::string& path, Scene& out, std::string& error, const Limits& limits) {
     error.clear();
     std::vector<unsigned char> bytes;
-    if (!read_bounded(path, limits, bytes, error)) return false;
+    if (!input_file::read(path, limits.max_bytes, bytes, error)) return false;
     return load_from_memory(bytes, path, out, error, limits);
 }
 
@@ -550,7 +504,7 @@ bool load_from_memory(const std::vector<unsigned char>& bytes, const std::string
         return false;
     }
     if (bytes.size() > limits.max_bytes) {
-        error = path + ": the file is larger than " + size_text(limits.max_bytes) + ".";
+        error = path + ": the file is larger than " + input_file::size_text(limits.max_bytes) + ".";
         return false;
     }
     // Binary when it says so, by magic or by extension; JSON otherwise.
@@ -576,24 +530,31 @@ bool load_from_memory(const std::vector<unsigned char>& bytes, const std::string
         return false;
     }
 
-    std::string base_dir;
-    const size_t slash = path.find_last_of("/\\");
-    if (slash != std::string::npos) base_dir = path.substr(0, slash);
+    // Which files the URIs may reach, decided before tinygltf reads any;
+    // tinygltf gets no base directory, so its callbacks see the URIs as
+    // written and read only what the plan allows.
+    GltfFiles files;
+    if (!files.plan(json, json_size, path, limits, error)) return false;
 
     tinygltf::TinyGLTF gltf;
     gltf.SetImageLoader(ignore_image, nullptr);
+    gltf.SetFsCallbacks(files.callbacks());
     tinygltf::Model model;
     std::string err, warn;
     bool ok = false;
     try {
         if (binary)
-            ok = gltf.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(), unsigned(bytes.size()), base_dir);
+            ok = gltf.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(), unsigned(bytes.size()), "");
         else
             ok = gltf.LoadASCIIFromString(&model, &err, &warn, reinterpret_cast<const char*>(bytes.data()),
-                                          unsigned(bytes.size()), base_dir);
+                                          unsigned(bytes.size()), "");
     } catch (const std::exception& e) {
         ok = false;
         err = e.what();
+    }
+    if (!ok && !files.error().empty()) {
+        error = files.error();
+        return false;
     }
     if (!ok) {
         err = trim_tinygltf_message(err);

@@ -68,7 +68,9 @@ std::optional<AoRadius> ao_radius(const Scene& s);
 // sentence naming the problem (missing file, malformed JSON, truncated glb,
 // accessor past its buffer, non-triangle primitive, nothing to draw, ...).
 // `limits` (scene_limits.h) bounds the file size, the JSON nesting and the
-// flattened triangles, each failing with its own sentence.
+// flattened triangles, each failing with its own sentence. The file and the
+// buffer files its URIs name are read through input_file.h (regular files
+// only); which URIs may be read is gltf_files.h's plan.
 bool load(const std::string& path, Scene& out, std::string& error, const Limits& limits = Limits{});
 
 // The same on bytes already in memory; `path` names them in messages and

@@ -1,8 +1,11 @@
 // scene_limits.h - what a scene file may cost before loading gives up with a
-// sentence: file size, JSON nesting depth and triangles after flattening.
+// sentence: file size, JSON nesting depth and triangles after flattening,
+// and which files its URIs may reach.
 // Scenes come from anywhere; each limit stops one way a small hostile file
 // turns into a crash or an unbounded amount of work.
 #pragma once
+
+#include "input_file.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -10,9 +13,16 @@
 namespace scene {
 
 struct Limits {
-    // Bytes of the file, checked while reading, so a stream such as
-    // /dev/zero is not read to its end first.
-    uint64_t max_bytes = uint64_t(1) << 31;  // 2 GiB
+    // Bytes of the scene file, judged by its size before it is read
+    // (input_file.h), and of all the buffer files it names together.
+    uint64_t max_bytes = input_file::kMaxInputBytes;  // 2 GiB
+    // Characters of all its data URIs together: tinygltf decodes each into
+    // memory, a few times its size at the peak.
+    uint64_t max_data_uri_bytes = uint64_t(1) << 28;  // 256 MiB
+    // Buffer URIs may name files outside the scene's folder (absolute
+    // paths, "..", symbolic links that lead out). Off: a scene from
+    // anywhere reads nothing but its own folder (gltf_files.h).
+    bool allow_outside_files = false;
     // Nesting of JSON arrays and objects: tinygltf converts JSON (extras
     // included) recursively, so 100,000 nested brackets overflow the stack.
     // glTF itself needs fewer than 10 levels.

@@ -8,14 +8,20 @@
 // it when present). With the depth-only limit (ssao-reference --limit) every
 // error is also split into limit vs V_R (what no depth-only method can avoid)
 // and TEST vs limit (what the tested estimator adds). The tested AO is read from channel Y, else R, else the file's first
-// channel. Sky is excluded: reference pixels with A = 0 (or a non-finite Y).
+// channel. Sky is excluded: reference pixels with A = 0 (or, without A, a
+// non-finite reference depth). Every value compared must be AO: finite and in
+// [0, 1] up to aocheck::kAoTolerance, in the reference (wherever A is not 0)
+// and in the test (where the reference has geometry); otherwise, or with no
+// pixel to compare, ssao-error exits 1 with one line.
 // Prints RMSE, PSNR (peak 1), mean signed error, 99th percentile and max of
 // |error| over the masks all / interior / silhouette band / screen-border band,
 // with the reference's own noise floor; --csv appends the same rows to FILE.
+#include "ao_checks.h"
 #include "flags.h"
 #include "image_io.h"
 #include "metrics.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
@@ -34,6 +40,7 @@ const char* kHelp =
     "\n"
     "usage: ssao-error TEST.exr REF [flags]\n"
     "  TEST.exr          AO under test (channel Y, else R, else the first channel), values in [0,1]\n"
+    "                    (finite, within 0.001; otherwise ssao-error refuses it, as it does a reference)\n"
     "  REF               reference_ao.exr from ssao-reference, or the folder it wrote\n"
     "  --ref-stderr FILE reference standard-error EXR (default: REF folder's reference_stderr.exr)\n"
     "  --ref-depth FILE  reference view-depth EXR for the silhouette band (default: REF folder's\n"
@@ -185,6 +192,35 @@ static int run(int argc, char** argv) {
     in.std_error = se.empty() ? nullptr : &se;
     in.depth = depth.empty() ? nullptr : &depth;
     in.band = band;
+
+    // Only AO is compared: a NaN, infinite or out-of-range value in either
+    // image would make every figure meaningless, and so would an empty mask.
+    std::vector<uint8_t> covered;
+    if (has_cover) {
+        covered.resize(cover.size());
+        for (size_t i = 0; i < cover.size(); ++i) covered[i] = cover[i] > 0.5f;
+    }
+    auto refuse = [](const std::string& path, const std::string& why) {
+        std::fprintf(stderr, "ssao-error: %s: %s; it is not an AO image in [0, 1].\n", path.c_str(), why.c_str());
+        return 1;
+    };
+    if (const std::string why = aocheck::check_values(ref, rw, has_cover ? &covered : nullptr); !why.empty())
+        return refuse(ref_path, why);
+    metrics::Masks masks;
+    if (!metrics::build_masks(in, masks, error)) {
+        std::fprintf(stderr, "ssao-error: %s.\n", error.c_str());
+        return 1;
+    }
+    if (std::find(masks.geometry.begin(), masks.geometry.end(), uint8_t(1)) == masks.geometry.end()) {
+        std::fprintf(stderr, "ssao-error: %s has no pixel to compare: all of it is sky (A = 0%s).\n", ref_path.c_str(),
+                     depth.empty() ? "" : ", or no finite depth");
+        return 1;
+    }
+    if (const std::string why = aocheck::check_values(test, tw, &masks.geometry); !why.empty())
+        return refuse(test_path, why);
+    if (!limit.empty())
+        if (const std::string why = aocheck::check_values(limit, rw, &masks.geometry); !why.empty())
+            return refuse(limit_path, why);
     std::vector<metrics::Stats> stats;
     metrics::Split split;
     if (!metrics::compute(in, stats, error) ||
@@ -204,9 +240,6 @@ static int run(int argc, char** argv) {
                     "ours vs limit what the tested estimator adds (mean = mean signed error)\n\n");
         std::fputs(metrics::split_table(split).c_str(), stdout);
     }
-    if (!stats.empty() && stats[0].non_finite > 0)
-        std::printf("\nwarning: %zu geometry pixels of the tested image are NaN or infinite (not compared).\n",
-                    stats[0].non_finite);
 
     if (!csv_path.empty()) {
         const bool fresh = !is_file(csv_path);

@@ -1,5 +1,7 @@
 #include "image_io.h"
 
+#include "input_file.h"
+
 #include <tinyexr.h>
 
 #if defined(__GNUC__)
@@ -25,10 +27,19 @@
 namespace refio {
 namespace {
 
+// What an EXR input may cost to read: the images of these tools are at most
+// 16384 x 16384 float pixels, 1 GiB a channel uncompressed.
+constexpr uint64_t kMaxExrBytes = input_file::kMaxInputBytes;
+
+// tinyexr's messages end in a newline (and some hold more than one line):
+// a tool's error is one line.
 std::string exr_message(const char* err) {
     std::string s = err ? err : "unknown error";
     if (err) FreeEXRErrorMessage(err);
-    return s;
+    while (!s.empty() && (s.back() == '\n' || s.back() == '\r' || s.back() == ' ' || s.back() == '.')) s.pop_back();
+    for (char& c : s)
+        if (c == '\n' || c == '\r') c = ' ';
+    return s.empty() ? "unknown error" : s;
 }
 
 }  // namespace
@@ -80,7 +91,10 @@ bool write_exr(const std::string& path, int width, int height, std::vector<Chann
 
 namespace {
 
+// The file's bytes (read through input_file, so a FIFO or a device is
+// refused and nothing past the budget is read) and what tinyexr made of them.
 struct LoadedExr {
+    std::vector<unsigned char> bytes;
     EXRHeader header;
     EXRImage image;
     bool header_ok = false, image_ok = false;
@@ -97,9 +111,10 @@ struct LoadedExr {
 };
 
 bool parse_header(const std::string& path, LoadedExr& x, std::string& error) {
+    if (!input_file::read(path, kMaxExrBytes, x.bytes, error)) return false;
     EXRVersion version;
-    if (ParseEXRVersionFromFile(&version, path.c_str()) != TINYEXR_SUCCESS) {
-        error = path + ": not a readable OpenEXR file (missing or not EXR).";
+    if (ParseEXRVersionFromMemory(&version, x.bytes.data(), x.bytes.size()) != TINYEXR_SUCCESS) {
+        error = path + ": not an OpenEXR file.";
         return false;
     }
     if (version.multipart || version.non_image) {
@@ -107,7 +122,7 @@ bool parse_header(const std::string& path, LoadedExr& x, std::string& error) {
         return false;
     }
     const char* err = nullptr;
-    const int rc = ParseEXRHeaderFromFile(&x.header, &version, path.c_str(), &err);
+    const int rc = ParseEXRHeaderFromMemory(&x.header, &version, x.bytes.data(), x.bytes.size(), &err);
     // Freed even when parsing failed: tinyexr fills the header (channels,
     // pixel types) before it reports a later error, and FreeEXRHeader is
     // safe on the initialised, unfilled header (leak found by fuzz_exr).
@@ -157,7 +172,7 @@ bool read_channel(const std::string& path, const std::vector<std::string>& prefe
     // decode: set it now so a truncated file leaks nothing (issue 11).
     x.image.num_channels = x.header.num_channels;
     const char* err = nullptr;
-    if (LoadEXRImageFromFile(&x.image, &x.header, path.c_str(), &err) != TINYEXR_SUCCESS) {
+    if (LoadEXRImageFromMemory(&x.image, &x.header, x.bytes.data(), x.bytes.size(), &err) != TINYEXR_SUCCESS) {
         error = path + ": cannot read the EXR pixels (" + exr_message(err) + ").";
         return false;
     }

@@ -49,6 +49,7 @@ using flags::quoted;
 float positive(const std::string& flag, const std::string& text) {
     const double v = flags::number(flag, text);
     if (!(v > 0.0) || v > 1e30) fail(flag + " " + text + " must be greater than 0");
+    flags::check_normal_float(flag, text, v);
     return float(v);
 }
 
@@ -65,6 +66,7 @@ struct Options {
     std::optional<double> thickness;   // default: depth_limit::kDefaultThicknessOfR x radius
     std::optional<int> limit_directions;
     bool quiet = false;
+    bool allow_outside_files = false;
     camera::Overrides cam;
 };
 
@@ -103,6 +105,8 @@ std::string help_text() {
     " x R; inf: a height field)\n"
     "  --limit-directions N  with --limit: directions per pixel, a multiple of " +
     std::to_string(depth_limit::kReplicas) + " (default " + std::to_string(depth_limit::kDefaultDirections) + ")\n"
+    "  --allow-outside-files  let the scene's buffer URIs name files outside its folder (absolute\n"
+    "                     paths, '..', symbolic links leading out); refused by default\n"
     "  --threads N        worker threads (default: all cores)\n"
     "  --quiet            no progress bar\n"
     "  --help, -h         this text\n"
@@ -126,11 +130,7 @@ Parse parse(int argc, char** argv, Options& o, std::string& error) {
         {"--threads", [&](const std::string& f, const std::string& v) { o.threads = int(flags::integer(f, v, 1, 1024)); }},
         {"--eye", [&](const std::string& f, const std::string& v) { o.cam.eye = flags::vec3(f, v); }},
         {"--target", [&](const std::string& f, const std::string& v) { o.cam.target = flags::vec3(f, v); }},
-        {"--fov", [&](const std::string& f, const std::string& v) {
-             const double d = flags::number(f, v);
-             if (!(d > 0.0 && d < 180.0)) fail(f + " " + v + " is out of range (0, 180)");
-             o.cam.fov_deg = float(d);
-         }},
+        {"--fov", [&](const std::string& f, const std::string& v) { o.cam.fov_deg = flags::fov_degrees(f, v); }},
         {"--near", [&](const std::string& f, const std::string& v) { o.cam.znear = positive(f, v); }},
         {"--far", [&](const std::string& f, const std::string& v) {
              const double d = flags::number(f, v, true);
@@ -159,6 +159,7 @@ Parse parse(int argc, char** argv, Options& o, std::string& error) {
         {"--limit", [&] { o.limit = true; }},
         {"--quiet", [&] { o.quiet = true; }},
         {"--reverse-z", [&] { o.cam.reverse_z = true; }},
+        {"--allow-outside-files", [&] { o.allow_outside_files = true; }},
     };
     try {
         const flags::Outcome outcome = flags::walk(argc, argv, valued, switches, o.scene_path);
@@ -216,7 +217,9 @@ static int run(int argc, char** argv) {
     if (o.scene_path.empty()) o.scene_path = locate::bundled("models/spot-on-ground.glb");
 
     scene::Scene sc;
-    if (!scene::load(o.scene_path, sc, error)) {
+    scene::Limits limits;
+    limits.allow_outside_files = o.allow_outside_files;
+    if (!scene::load(o.scene_path, sc, error, limits)) {
         std::fprintf(stderr, "ssao-reference: %s\n", error.c_str());
         return 1;
     }

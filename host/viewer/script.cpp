@@ -1,12 +1,13 @@
 #include "script.h"
 
+#include "input_file.h"
+
 #include <GLFW/glfw3.h>
 
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
 #include <cstdlib>
-#include <fstream>
 #include <sstream>
 
 namespace viewer {
@@ -131,14 +132,16 @@ bool parse_script(const std::string& text, std::vector<ScriptEvent>& events, std
 }
 
 bool load_script(const std::string& path, std::vector<ScriptEvent>& events, std::string& error) {
-    std::ifstream f(path, std::ios::binary);
-    if (!f) {
-        error = "cannot read the script '" + path + "'";
+    // Through the tools' one reader: a FIFO or a device is refused, not read.
+    constexpr uint64_t kMaxScriptBytes = uint64_t(16) << 20;
+    std::vector<unsigned char> bytes;
+    std::string why;
+    if (!input_file::read(path, kMaxScriptBytes, bytes, why)) {
+        if (!why.empty() && why.back() == '.') why.pop_back();
+        error = "cannot read the script: " + why;
         return false;
     }
-    std::ostringstream s;
-    s << f.rdbuf();
-    if (!parse_script(s.str(), events, error)) {
+    if (!parse_script(std::string(bytes.begin(), bytes.end()), events, error)) {
         error = "script " + path + ":" + error;
         return false;
     }

@@ -48,6 +48,10 @@ for pair in "$host:--width:0" "$reference:--samples:x" "$error:--band:300" "$ben
     test "$ca" -eq 2 -a "$cb" -eq 2 -a "$a" = "$b" -a -n "$a"
 done
 check "a switch takes no value: ssao-reference --quiet=1 exits 2" expect_usage_error "$reference" --quiet --quiet=1
+# An argument with a line break is quoted with it escaped: still one line (found by fuzz_flags).
+check "ssao-host with two scenes, one named 'a<newline>b': exit 2, one line" \
+  expect_usage_error "$host" "more than one scene file given: 'a\x0ab'" $'a\nb' c.glb
+check "ssao-error --bogus<newline>: exit 2, one line" expect_usage_error "$error" "'--bogus\x0a'" a.exr b.exr $'--bogus\n'
 check "a coordinate beyond float range: ssao-host --eye=1e57,2,3 exits 2 (not an inf camera)" expect_usage_error "$host" --eye --eye=1e57,2,3
 check "a coordinate beyond float range: ssao-reference --target 0,-4e38,0 exits 2" expect_usage_error "$reference" --target --target 0,-4e38,0
 

@@ -7,12 +7,18 @@
 //         with flags shaped like those of ssao-reference, ssao-error and
 //         ssao-bench, whose own parse() functions live in their main files.
 // A parse either succeeds, asks for help/version, or fails with a sentence;
-// a parsed value is inside the range its parser was given.
+// a parsed value is inside the range its parser was given, every float flag
+// the host takes is 0 or a normal float (a denormal reaches shaders as 0),
+// --fov gives a projection scale float shaders can use, and --msaa is a
+// power of two.
 #include "cli.h"
 #include "flags.h"
 
+#include "camera_flags.h"
+
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -28,6 +34,21 @@ void host_cli(const std::vector<std::string>& args, const std::vector<const char
     const cli::ParseResult r = cli::parse(int(args.size()), argv.data(), options, error);
     check(r != cli::ParseResult::Error || !error.empty());
     check(r == cli::ParseResult::Error || error.empty());
+    check(error.find('\n') == std::string::npos);
+    if (r != cli::ParseResult::Run) return;
+    auto normal_or_zero = [](const std::optional<float>& v) {
+        if (v) check(std::isfinite(*v) && (*v == 0.0f || std::fabs(*v) >= std::numeric_limits<float>::min()));
+    };
+    for (const auto* v : {&options.radius, &options.bias, &options.depth_step_bias, &options.power, &options.strength,
+                          &options.blur_sigma, &options.blur_tolerance, &options.thickness, &options.fade_start,
+                          &options.fade_end, &options.radius_pixels, &options.cam.fov_deg, &options.cam.znear,
+                          &options.cam.ortho_half_height})
+        normal_or_zero(*v);
+    for (const auto* v : {&options.radius, &options.power, &options.cam.fov_deg}) check(!*v || **v > 0.0f);
+    if (options.cam.fov_deg)
+        check(1.0 / std::tan(double(*options.cam.fov_deg) * 3.14159265358979323846 / 360.0) <=
+              flags::kMaxProjectionElement * 1.0000001);
+    check(options.msaa >= 0 && (options.msaa & (options.msaa - 1)) == 0);
 }
 
 void shared_walker(const std::vector<std::string>& args, const std::vector<const char*>& argv) {

@@ -3,12 +3,24 @@
 // byte mutations, a custom mutator edits the JSON as a structure: it nests a
 // value in arrays and objects, repeats array elements and nodes, and inflates
 // numbers and counts, the shapes that overflowed the stack and multiplied
-// the work in issue 11. Any crash, sanitizer report, uncaught exception or
-// time/memory limit hit is a finding.
+// the work in issue 11, and swaps buffer and image URIs for names of a
+// scratch folder the fuzzer makes (scratch() below): a buffer file, files
+// outside the scene's folder, symbolic links in and out, a FIFO, a directory,
+// a sparse file far larger than declared, data URIs. Any crash, sanitizer
+// report, uncaught exception, time/memory limit hit (a FIFO that blocks, a
+// file read whole), a refusal without a sentence or over two lines, or
+// tinygltf's size message (which discloses a file's size) is a finding.
 #include "scene.h"
 
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <cstdint>
+#include <cstdio>
+#include <cstdlib>
 #include <cstring>
+#include <filesystem>
+#include <fstream>
 #include <random>
 #include <string>
 #include <vector>
@@ -24,6 +36,45 @@ scene::Limits fuzz_limits() {
     l.max_triangles = 200000;
     return l;
 }
+
+// The scratch folder, made once per process under $TMPDIR and removed at
+// exit: SCRATCH/scene/ is the scene's folder, SCRATCH/outside.bin lies
+// beside it. Its names are what the URI mutation writes.
+const std::string& scratch() {
+    // Never destroyed: the atexit handler that removes the folder runs after
+    // the static destructors registered later than it.
+    static const std::string& dir = *new std::string([] {
+        namespace fs = std::filesystem;
+        std::string tmpl = (fs::temp_directory_path() / "fuzz_scene.XXXXXX").string();
+        if (!::mkdtemp(tmpl.data())) std::abort();
+        const fs::path root = tmpl, scene = root / "scene";
+        fs::create_directories(scene / "sub");
+        fs::create_directories(scene / "dir.bin");
+        const float pos[9] = {0, 0, 0, 1, 0, 0, 0, 0, -1};
+        for (const fs::path& p : {scene / "tri.bin", scene / "sub" / "tri.bin", root / "outside.bin"})
+            std::ofstream(p, std::ios::binary).write(reinterpret_cast<const char*>(pos), sizeof pos);
+        { std::ofstream(scene / "big.bin", std::ios::binary) << 'x'; }
+        fs::resize_file(scene / "big.bin", uint64_t(3) << 30);  // sparse: no disk
+        if (::mkfifo((scene / "pipe.bin").c_str(), 0600) != 0) std::abort();
+        fs::create_symlink(root / "outside.bin", scene / "link-out.bin");
+        fs::create_symlink("tri.bin", scene / "link-in.bin");
+        fs::create_directory_symlink(root, scene / "up");
+        std::atexit([] {
+            std::error_code ec;
+            std::filesystem::remove_all(scratch(), ec);
+        });
+        return root.string();
+    }());
+    return dir;
+}
+
+// URIs the mutator puts in place of a "uri" value.
+const char* const kUris[] = {
+    "tri.bin", "sub/tri.bin", "sub/../tri.bin", "t%72i.bin", "tri+.bin", "../outside.bin", "up/outside.bin",
+    "link-out.bin", "link-in.bin", "pipe.bin", "dir.bin", "big.bin", "missing.bin", "/etc/passwd", "/dev/zero",
+    "/tmp", "/", "", ".", "..", "../../../../../../etc/passwd", "%2e%2e/outside.bin", "tri.bin%00/../../x",
+    "file:///etc/passwd", "data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAAAAAAIC/",
+    "data:application/octet-stream;base64,", "data:image/png;base64,AAAA", "data:text/plain,abc"};
 
 // The JSON part of an input: all of it for .gltf; for .glb the JSON chunk.
 struct Parts {
@@ -115,7 +166,24 @@ size_t value_end(const std::string& s, size_t open) {
 bool mutate_json(std::string& json, std::mt19937& rng, size_t max_size) {
     const std::vector<size_t> opens = openings(json);
     auto pick = [&](size_t n) { return size_t(rng() % n); };
-    switch (rng() % 6) {
+    switch (rng() % 7) {
+        case 6: {  // point a URI at one of the scratch folder's files (or a data URI)
+            std::vector<size_t> uris;
+            for (size_t at = json.find("\"uri\""); at != std::string::npos; at = json.find("\"uri\"", at + 1))
+                uris.push_back(at);
+            if (uris.empty()) return false;
+            const size_t key = uris[pick(uris.size())];
+            const size_t open = json.find('"', key + 5);
+            if (open == std::string::npos) return false;
+            size_t close = open + 1;
+            while (close < json.size() && json[close] != '"') close += json[close] == '\\' ? 2 : 1;
+            if (close >= json.size()) return false;
+            std::string uri = kUris[pick(sizeof kUris / sizeof kUris[0])];
+            if (rng() % 8 == 0) uri = scratch() + "/" + (rng() % 2 ? "outside.bin" : "scene/tri.bin");  // absolute
+            if (json.size() + uri.size() > max_size) return false;
+            json.replace(open + 1, close - open - 1, uri);
+            return true;
+        }
         case 0: {  // nest a value: v -> [[...v...]] (sometimes very deep)
             if (opens.empty()) return false;
             const size_t a = opens[pick(opens.size())], b = value_end(json, a);
@@ -195,11 +263,17 @@ extern "C" size_t LLVMFuzzerCustomMutator(uint8_t* data, size_t size, size_t max
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     const std::vector<unsigned char> bytes(data, data + size);
-    // .glb by magic; otherwise the name decides nothing more, so both loaders run.
+    // .glb by magic; otherwise the name decides nothing more, so both loaders
+    // run. The scene lies in the scratch folder, so its URIs reach its files;
+    // one input in four may leave the folder.
     scene::Scene sc;
     std::string error;
-    const bool ok = scene::load_from_memory(bytes, "fuzz.gltf", sc, error, fuzz_limits());
+    scene::Limits limits = fuzz_limits();
+    limits.allow_outside_files = size % 4 == 3;
+    const bool ok = scene::load_from_memory(bytes, scratch() + "/scene/fuzz.gltf", sc, error, limits);
     if (!ok && error.empty()) __builtin_trap();  // a failure must say why
+    if (error.find('\n') != std::string::npos) __builtin_trap();  // in one line
+    if (error.find("File size mismatch : ") != std::string::npos) __builtin_trap();  // tinygltf's, with the file's size
     if (ok && (sc.mesh.indices.size() % 3 != 0 || sc.mesh.positions.size() != sc.mesh.normals.size()))
         __builtin_trap();
     if (ok)

@@ -81,6 +81,33 @@ def scenes():
     doc["nodes"][0]["children"] = [0]
     write("scene", "cycle.gltf", json.dumps(doc))
     write("scene", "bad-json.gltf", '{"asset":{"version":"2.0"},"nodes":[{]')
+    # URIs: the names fuzz_scene's scratch folder holds (its scene folder has
+    # tri.bin, sub/tri.bin, pipe.bin (a FIFO), dir.bin (a directory), big.bin
+    # (3 GiB, sparse), link-in.bin, link-out.bin; ../outside.bin beside it).
+    tri = struct.pack("<9f", 0, 0, 0, 1, 0, 0, 0, 0, -1)
+    def uri_scene(uri, images=None):
+        doc = {
+            "asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
+            "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+            "buffers": [{"uri": uri, "byteLength": len(tri)}],
+            "bufferViews": [{"buffer": 0, "byteLength": len(tri)}],
+            "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+                           "min": [0, 0, -1], "max": [1, 0, 0]}],
+        }
+        if images:
+            doc["images"] = [{"uri": u} for u in images]
+        return json.dumps(doc, separators=(",", ":"))
+    for name, uri in [("uri-external", "tri.bin"), ("uri-outside", "../outside.bin"), ("uri-absolute", "/etc/passwd"),
+                      ("uri-fifo", "pipe.bin"), ("uri-directory", "dir.bin"), ("uri-abs-directory", "/tmp"),
+                      ("uri-big", "big.bin"), ("uri-link-out", "link-out.bin"), ("uri-link-in", "link-in.bin"),
+                      ("uri-percent", "t%72i.bin"), ("uri-device", "/dev/zero")]:
+        write("scene", name + ".gltf", uri_scene(uri))
+    write("scene", "uri-data-images.gltf",
+          uri_scene("data:application/octet-stream;base64," + base64.b64encode(tri).decode(),
+                    ["pipe.bin", "/etc/passwd", "data:image/png;base64,AAAA"]))
+    doc_u, data_u = gltf(pos, idx, uri=False)
+    doc_u["buffers"].append({"uri": "../outside.bin", "byteLength": len(tri)})
+    write("scene", "uri-glb-second-buffer.glb", glb(doc_u, data_u))
 
 
 def abi():
@@ -128,6 +155,9 @@ def flags():
         "help": ["--help"],
         "fade-taa": ["--fade-start", "2", "--fade-end=9", "--radius-pixels", "12", "--frame-index", "4294967295",
                      "--accumulate", "16"],
+        "tiny-values": ["--radius", "1.2e-38", "--power=1e-45", "--fov", "1.2e-28", "--thickness", "3e-39",
+                        "--msaa", "4"],
+        "msaa-odd": ["--msaa", "3", "--sample-index", "2"],
     }
     for name, args in seeds.items():
         write("flags", name, "h" + "\0".join(args))

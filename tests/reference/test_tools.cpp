@@ -5,12 +5,14 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <array>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <string>
 #include <vector>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -271,6 +273,128 @@ TEST_CASE("a tiny reference run, compared with itself by ssao-error") {
     const Run band = run(kErr + " a.exr b.exr --band x");
     CHECK(band.code != 0);
     CHECK(band.output.find("--band") != std::string::npos);
+}
+
+TEST_CASE("ssao-error refuses images that are not AO, and a reference with nothing to compare") {
+    TempDir dir;
+    const int w = 8, h = 4;
+    const size_t n = size_t(w * h);
+    auto write = [&](const std::string& name, std::vector<float> y, std::vector<float> a = {}) {
+        const std::string p = (dir.path / name).string();
+        std::string err;
+        std::vector<refio::Channel> ch = {{"Y", &y}};
+        if (!a.empty()) ch.push_back({"A", &a});
+        REQUIRE_MESSAGE(refio::write_exr(p, w, h, ch, err), err);
+        return p;
+    };
+    const std::vector<float> half(n, 0.5f), ones(n, 1.0f), zeros(n, 0.0f);
+    const std::string good_ref = write("ref.exr", half, ones);
+    const std::string good_test = write("test.exr", half);
+    REQUIRE(run(kErr + " " + good_test + " " + good_ref).code == 0);
+    // Within the tolerance of 0.001: still AO.
+    std::vector<float> edge(n, 1.0005f);
+    edge[0] = -0.0005f;
+    CHECK(run(kErr + " " + write("edge.exr", edge) + " " + good_ref).code == 0);
+
+    struct Case {
+        std::string test, ref, expect;
+    };
+    std::vector<float> nan_ref(n, std::nanf("")), inf_ref(n, INFINITY), big_test(n, 0.5f), neg_test(n, 0.5f),
+        nan_test(n, 0.5f);
+    big_test[n - 1] = 1.5f;
+    neg_test[9] = -1e38f;
+    nan_test[3] = std::nanf("");
+    const Case cases[] = {
+        // Before: exit 0 with "0 pixels" compared and no warning.
+        {good_test, write("nan_ref.exr", nan_ref, ones), "32 of 32 compared pixels are NaN or infinite (the first at x 0, y 0)"},
+        {good_test, write("inf_ref.exr", inf_ref, ones), "32 of 32 compared pixels are NaN or infinite"},
+        {good_test, write("nan_ref_no_a.exr", nan_ref), "32 of 32 compared pixels are NaN or infinite"},
+        // Before: RMSE 1e38 with exit 0.
+        {write("neg.exr", neg_test), good_ref, "1 of 32 compared pixels are outside [0, 1] by more than 0.001 (the first, -1e+38, at x 1, y 1)"},
+        {write("big.exr", big_test), good_ref, "(the first, 1.5, at x 7, y 3)"},
+        {write("nan_test.exr", nan_test), good_ref, "1 of 32 compared pixels are NaN or infinite (the first at x 3, y 0)"},
+        {good_test, write("sky_ref.exr", half, zeros), "has no pixel to compare: all of it is sky"},
+    };
+    for (const Case& c : cases) {
+        const Run r = run(kErr + " " + c.test + " " + c.ref);
+        INFO(r.output);
+        CHECK(r.code == 1);
+        CHECK(r.output.find(c.expect) != std::string::npos);
+        CHECK(r.output.rfind("ssao-error: ", 0) == 0);
+        CHECK(std::count(r.output.begin(), r.output.end(), '\n') == 1);
+    }
+    // Sky pixels of the test are not compared, so not judged.
+    std::vector<float> sky_a(ones), sky_test(half);
+    sky_a[0] = 0.0f;
+    sky_test[0] = std::nanf("");
+    CHECK(run(kErr + " " + write("sky_nan_test.exr", sky_test) + " " + write("ref_sky0.exr", half, sky_a)).code == 0);
+}
+
+TEST_CASE("ssao-error on a FIFO, a directory or a damaged EXR: one line, exit 1, no hang") {
+    TempDir dir;
+    const std::string fifo = (dir.path / "fifo.exr").string();
+    REQUIRE(mkfifo(fifo.c_str(), 0600) == 0);
+    const std::vector<float> y(16, 0.5f);
+    const std::string ref = (dir.path / "ref.exr").string();
+    std::string err;
+    REQUIRE(refio::write_exr(ref, 4, 4, {{"Y", &y}}, err));
+    std::string bytes;
+    {
+        std::ifstream in(ref, std::ios::binary);
+        bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    }
+    const std::string truncated = (dir.path / "truncated.exr").string();
+    std::ofstream(truncated, std::ios::binary) << bytes.substr(0, bytes.size() - 20);
+    const std::string text = (dir.path / "text.exr").string();
+    std::ofstream(text) << "not an image\n";
+    struct Case {
+        std::string args, expect;
+    };
+    const Case cases[] = {
+        {fifo + " " + ref, fifo + ": not a regular file but a FIFO (named pipe)."},  // before: waited forever
+        {ref + " " + fifo, fifo + ": not a regular file but a FIFO (named pipe)."},
+        {"/dev/zero " + ref, "/dev/zero: not a regular file but a character device."},
+        {text + " " + ref, text + ": not an OpenEXR file."},
+        {truncated + " " + ref, truncated + ": "},
+    };
+    for (const Case& c : cases) {
+        const Run r = run("timeout -s KILL 20 " + kErr + " " + c.args);
+        INFO(c.args << " -> " << r.output);
+        CHECK(r.code == 1);
+        CHECK(r.output.find("ssao-error: " + c.expect) == 0);
+        CHECK(std::count(r.output.begin(), r.output.end(), '\n') == 1);
+    }
+}
+
+TEST_CASE("ssao-reference: a scene that is a FIFO, or whose buffer leaves its folder, is one line") {
+    TempDir dir;
+    const std::string fifo = (dir.path / "x.gltf").string();
+    REQUIRE(mkfifo(fifo.c_str(), 0600) == 0);
+    const std::string out = (dir.path / "out").string();
+    Run r = run("timeout -s KILL 20 " + kRef + " " + fifo + " --quiet --out " + out);
+    CHECK(r.code == 1);
+    CHECK(r.output == "ssao-reference: " + fifo + ": not a regular file but a FIFO (named pipe).\n");
+    // One triangle whose 36-byte buffer lies beside the scene's folder.
+    fs::create_directories(dir.path / "scene");
+    const float pos[9] = {0, 0, 0, 1, 0, 0, 0, 0, -1};
+    std::ofstream((dir.path / "tri.bin").string(), std::ios::binary).write(reinterpret_cast<const char*>(pos), sizeof pos);
+    const std::string scene = (dir.path / "scene" / "s.gltf").string();
+    std::ofstream(scene) << "{\"asset\":{\"version\":\"2.0\"},\"scene\":0,\"scenes\":[{\"nodes\":[0]}],\"nodes\":[{\"mesh\":0}],"
+                            "\"meshes\":[{\"primitives\":[{\"attributes\":{\"POSITION\":0}}]}],"
+                            "\"buffers\":[{\"uri\":\"../tri.bin\",\"byteLength\":36}],"
+                            "\"bufferViews\":[{\"buffer\":0,\"byteLength\":36}],"
+                            "\"accessors\":[{\"bufferView\":0,\"componentType\":5126,\"count\":3,\"type\":\"VEC3\","
+                            "\"min\":[0,0,-1],\"max\":[1,0,0]}]}";
+    r = run(kRef + " " + scene + " --quiet --width 4 --height 4 --samples 1 --out " + out);
+    CHECK(r.code == 1);
+    CHECK(r.output == "ssao-reference: " + scene +
+                          ": buffer 0's URI '../tri.bin' names a file outside the scene's folder; "
+                          "--allow-outside-files allows it.\n");
+    CHECK_FALSE(fs::exists(out));
+    r = run(kRef + " " + scene + " --allow-outside-files --quiet --width 4 --height 4 --samples 1 --out " + out);
+    INFO(r.output);
+    CHECK(r.code == 0);
+    CHECK(fs::exists(fs::path(out) / "reference_ao.exr"));
 }
 
 }  // TEST_SUITE
