@@ -3,12 +3,17 @@
 // create_context (with decoded settings and struct sizes), set_settings,
 // execute with decoded textures (a pool of every target and format, deleted
 // and random names), sizes, enums, floats, matrices and viewports, the
-// getters, destroy. After every call: the GL state snapshot of
-// tests/plugin/gl_state_snapshot.h is unchanged, KHR_debug reported no GL
-// error, the status is a documented one, and no bad input came back OK.
+// getters, destroy; a host that makes another GL context current (an
+// unrelated one, one sharing objects with the first, or none) and that
+// deletes the library's output texture. After every call: the current
+// context's GL state snapshot (tests/plugin/gl_state_snapshot.h) is
+// unchanged, KHR_debug reported no GL error there, the status is a documented
+// one, no bad input came back OK, and no call that touches GL came back OK on
+// a GL context other than the one its ssao_context was created on.
 #include "c_caller.h"
 #include "gl_fixture.h"
 #include "gl_state_snapshot.h"
+#include "other_context.h"
 
 #include <ssao/ssao.h>
 
@@ -53,6 +58,10 @@ struct Reader {
     }
 };
 
+// The GL contexts a host may have current: the first one (where the
+// textures live), an unrelated one, one sharing objects with the first, none.
+enum Current { kFirst = 0, kUnrelated = 1, kShared = 2, kNone = 3 };
+
 struct World {
     std::unique_ptr<eglctx::Context> egl;
     std::unique_ptr<testgl::DebugErrors> errors;
@@ -60,7 +69,20 @@ struct World {
     std::vector<GLuint> textures;  // every kind the decoder picks from
     testgl::Snapshot host_state;
     GLuint host_fbo = 0, host_vao = 0;
+    std::unique_ptr<testgl::OtherContext> unrelated, shared;
+    testgl::Snapshot unrelated_state, shared_state;
+    Current current = kFirst;
 };
+
+void make_current(World& w, Current c) {
+    switch (c) {
+        case kFirst: w.unrelated->make_first_current(); break;
+        case kUnrelated: w.unrelated->make_current(); break;
+        case kShared: w.shared->make_current(); break;
+        case kNone: w.unrelated->release_current(); break;
+    }
+    w.current = c;
+}
 
 GLuint texture_2d(GladGLContext& gl, GLenum internal, int w, int h) {
     GLuint t = 0;
@@ -160,25 +182,57 @@ World& world() {
         gl.ClearColor(0.25f, 0.5f, 0.75f, 1.0f);
         x->host_state = testgl::snapshot(gl);
         if (!x->errors->messages().empty()) finding("GL error while setting up", x->errors->messages()[0]);
+        // The other contexts, with state of their own.
+        x->unrelated = std::make_unique<testgl::OtherContext>(testgl::OtherContext::Sharing::none);
+        x->shared = std::make_unique<testgl::OtherContext>(testgl::OtherContext::Sharing::with_current);
+        for (testgl::OtherContext* o : {x->unrelated.get(), x->shared.get()}) {
+            o->make_current();
+            GLuint vao = 0;
+            o->gl().GenVertexArrays(1, &vao);
+            o->gl().BindVertexArray(vao);
+            o->gl().Enable(GL_BLEND);
+            o->gl().Viewport(0, 0, 3, 3);
+        }
+        x->unrelated->make_current();
+        x->unrelated_state = testgl::snapshot(x->unrelated->gl());
+        x->shared->make_current();
+        x->shared_state = testgl::snapshot(x->shared->gl());
+        if (!x->unrelated->gl_errors().empty() || !x->shared->gl_errors().empty())
+            finding("GL error while setting up the other contexts");
+        x->unrelated->make_first_current();
         return x;
     }();
     return *w;
 }
 
 bool documented(ssao_status st) {
-    return st >= SSAO_OK && st <= SSAO_ERROR_INTERNAL;
+    return st >= SSAO_OK && st <= SSAO_ERROR_WRONG_CONTEXT;
 }
 
 void check_after(World& w, const char* call, ssao_status st) {
     if (!documented(st)) finding("undocumented status from", call);
     if (st == SSAO_ERROR_INTERNAL) finding("SSAO_ERROR_INTERNAL from", call);
-    if (!w.errors->messages().empty()) finding("GL error after", std::string(call) + ": " + w.errors->messages()[0]);
-    const testgl::Snapshot now = testgl::snapshot(w.egl->gl());
-    if (now != w.host_state) {
-        for (const auto& e : w.host_state)
+    if (w.current == kNone) return;  // no GL to look at
+    GladGLContext& gl = w.current == kFirst ? w.egl->gl() : w.current == kUnrelated ? w.unrelated->gl() : w.shared->gl();
+    const std::vector<std::string>& errors = w.current == kFirst       ? w.errors->messages()
+                                             : w.current == kUnrelated ? w.unrelated->gl_errors()
+                                                                       : w.shared->gl_errors();
+    const testgl::Snapshot& state =
+        w.current == kFirst ? w.host_state : w.current == kUnrelated ? w.unrelated_state : w.shared_state;
+    if (!errors.empty()) finding("GL error after", std::string(call) + ": " + errors[0]);
+    const testgl::Snapshot now = testgl::snapshot(gl);
+    if (now != state) {
+        for (const auto& e : state)
             if (now.at(e.first) != e.second) finding("GL state changed by", std::string(call) + ": " + e.first);
         finding("GL state changed by", call);
     }
+}
+
+// A call that touches GL, on a context created on another GL context: only
+// the argument checks (which come first) or WRONG_CONTEXT may answer.
+void check_wrong_context(const char* call, ssao_status st) {
+    if (st != SSAO_ERROR_WRONG_CONTEXT && st != SSAO_ERROR_NULL_POINTER && st != SSAO_ERROR_STRUCT_SIZE)
+        finding("not refused on the wrong GL context:", call);
 }
 
 // Settings: raw bytes, or a valid struct with a few decoded fields.
@@ -283,10 +337,15 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     const ssao_api& a = w.lib.api();
     Reader r{data, size};
     ssao_context* ctx[2] = {nullptr, nullptr};
+    Current creator[2] = {kFirst, kFirst};  // the GL context each was created on
+    GLuint owned_output[2] = {0, 0};        // the library's output texture, as execute last returned it
+    if (w.current != kFirst) make_current(w, kFirst);
     for (int op = 0; op < 48 && !r.empty(); ++op) {
         const uint8_t code = r.u8();
-        ssao_context* c = ctx[code >> 7];
-        switch (code % 9) {
+        const int which = code >> 7;
+        ssao_context* c = ctx[which];
+        const bool wrong = c && creator[which] != w.current;
+        switch ((code & 0x7f) % 11) {
             case 0: {  // create
                 ssao_context*& slot = ctx[code >> 7];
                 if (slot) break;
@@ -302,11 +361,16 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
                 const ssao_status st = a.create_context(&desc, &slot);
                 check_after(w, "create_context", st);
                 if ((st == SSAO_OK) != (slot != nullptr)) finding("create_context: status and context disagree");
+                if (w.current == kNone && st == SSAO_OK) finding("create_context OK with no GL context current");
+                creator[which] = w.current;
+                owned_output[which] = 0;
                 break;
             }
-            case 1: {  // destroy
-                check_after(w, "destroy_context", a.destroy_context(c));
-                ctx[code >> 7] = nullptr;
+            case 1: {  // destroy: freed even when refused on the wrong GL context
+                const ssao_status st = a.destroy_context(c);
+                check_after(w, "destroy_context", st);
+                if (wrong && st != SSAO_ERROR_WRONG_CONTEXT) finding("destroy_context not refused on the wrong GL context");
+                ctx[which] = nullptr;
                 break;
             }
             case 2: {  // set_settings
@@ -333,6 +397,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
                 const bool with_out = r.u8() >= 20;  // `out` may be NULL (ssao.h)
                 const ssao_status st = a.execute(c, &in, with_out ? &out : nullptr);
                 check_after(w, "execute", st);
+                if (wrong) check_wrong_context("execute", st);
+                if (st == SSAO_OK && with_out && in.output_texture == 0 && out.size == sizeof out)
+                    owned_output[which] = out.texture;
                 if (st == SSAO_OK) {
                     if (in.depth_texture == in.output_texture || in.normal_texture == in.output_texture)
                         finding("execute OK with the output as an input");
@@ -350,7 +417,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
             case 6: {  // the getters
                 ssao_timings t{};
                 t.size = r.u8() < 240 ? sizeof t : r.u32();
-                check_after(w, "get_timings", a.get_timings(c, &t));
+                const ssao_status st = a.get_timings(c, &t);
+                check_after(w, "get_timings", st);
+                if (wrong) check_wrong_context("get_timings", st);
                 ssao_frame_info fi{};
                 fi.size = r.u8() < 240 ? sizeof fi : r.u32();
                 check_after(w, "get_frame_info", a.get_frame_info(c, &fi));
@@ -366,13 +435,35 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
                 check_after(w, "preset_settings", unit_c_preset_raw(&a, r.small_or_raw(7), &out));
                 break;
             }
+            case 9: {  // the host makes another GL context current (or none)
+                make_current(w, static_cast<Current>(r.u8() % 4));
+                break;
+            }
+            case 10: {  // the host deletes the library's output texture (where that name is the texture)
+                const bool sees_it = creator[which] == w.current || (creator[which] == kFirst && w.current == kShared) ||
+                                     (creator[which] == kShared && w.current == kFirst);
+                if (c && owned_output[which] != 0 && sees_it) {
+                    GladGLContext& gl = w.current == kFirst ? w.egl->gl() : w.shared->gl();
+                    gl.DeleteTextures(1, &owned_output[which]);
+                    owned_output[which] = 0;
+                    check_after(w, "glDeleteTextures(output)", SSAO_OK);
+                }
+                break;
+            }
             default: {
-                const char* text = a.status_string(static_cast<ssao_status>(r.u8() % 17));
+                const char* text = a.status_string(static_cast<ssao_status>(r.u8() % 18));
                 if (!text || !*text) finding("empty status string");
                 break;
             }
         }
     }
-    for (ssao_context* c : ctx) check_after(w, "destroy_context", a.destroy_context(c));
+    for (int i = 0; i < 2; ++i) {
+        if (!ctx[i]) continue;
+        make_current(w, creator[i]);
+        const ssao_status st = a.destroy_context(ctx[i]);
+        check_after(w, "destroy_context", st);
+        if (st != SSAO_OK) finding("destroy_context refused on its own GL context");
+    }
+    make_current(w, kFirst);
     return 0;
 }
