@@ -122,14 +122,8 @@ Run run_sequence(int seed, Barrier* start = nullptr) {
 }  // namespace
 
 TEST_CASE("threads: two contexts on two threads give the single-threaded results, frame for frame") {
-    // The oracle: both sequences, one after the other, on this thread.
-    const Run alone_a = run_sequence(1);
-    const Run alone_b = run_sequence(2);
-    REQUIRE_MESSAGE(alone_a.error.empty(), alone_a.error);
-    REQUIRE_MESSAGE(alone_b.error.empty(), alone_b.error);
-    REQUIRE(alone_a.frames.size() == size_t(kExecutes));
-    CHECK(alone_a.frames != alone_b.frames);  // the sequences differ, so a mix-up would show
-
+    // Together first: the driver's first shader compiles in this process
+    // (its one-time set-up included) happen in both threads at once.
     Run together_a, together_b;
     Barrier start(2);
     std::thread ta([&] { together_a = run_sequence(1, &start); });
@@ -140,6 +134,14 @@ TEST_CASE("threads: two contexts on two threads give the single-threaded results
     REQUIRE_MESSAGE(together_b.error.empty(), together_b.error);
     CHECK(together_a.gl_errors == 0u);
     CHECK(together_b.gl_errors == 0u);
+
+    // The oracle: both sequences, one after the other, on this thread.
+    const Run alone_a = run_sequence(1);
+    const Run alone_b = run_sequence(2);
+    REQUIRE_MESSAGE(alone_a.error.empty(), alone_a.error);
+    REQUIRE_MESSAGE(alone_b.error.empty(), alone_b.error);
+    REQUIRE(alone_a.frames.size() == size_t(kExecutes));
+    CHECK(alone_a.frames != alone_b.frames);  // the sequences differ, so a mix-up would show
     int differing = 0;
     for (int i = 0; i < kExecutes; ++i) {
         differing += together_a.frames[size_t(i)] != alone_a.frames[size_t(i)];
