@@ -15,12 +15,12 @@ GLADapiproc load_gl(const char* name) {
 
 }  // namespace
 
-OtherContext::OtherContext(Sharing sharing) {
+OtherContext::OtherContext(Sharing sharing, int major, int minor) {
     EGLDisplay display = eglGetCurrentDisplay();
     EGLContext first = eglGetCurrentContext();
     if (display == EGL_NO_DISPLAY || first == EGL_NO_CONTEXT)
         throw std::runtime_error("OtherContext: no EGL context is current");
-    const EGLint attribs[] = {EGL_CONTEXT_MAJOR_VERSION, 4, EGL_CONTEXT_MINOR_VERSION, 5,
+    const EGLint attribs[] = {EGL_CONTEXT_MAJOR_VERSION, major, EGL_CONTEXT_MINOR_VERSION, minor,
                               EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
                               EGL_CONTEXT_OPENGL_DEBUG, EGL_TRUE, EGL_NONE};
     EGLContext context = eglCreateContext(display, EGL_NO_CONFIG_KHR,

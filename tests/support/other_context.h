@@ -1,5 +1,5 @@
 // other_context.h - a second GL context for the tests of the wrong-context
-// checks: an EGL 4.5 core debug context on the display of the context current
+// checks: an EGL core debug context (4.5 unless asked otherwise) on the display of the context current
 // when it is made, sharing objects with that one or not, with its own glad
 // table and KHR_debug error capture. Switching between it and the first
 // context goes through eglMakeCurrent.
@@ -18,7 +18,7 @@ public:
     enum class Sharing { none, with_current };
     // Made while the first context is current (its display is used, and with
     // Sharing::with_current its objects are shared); that one stays current.
-    explicit OtherContext(Sharing sharing);
+    explicit OtherContext(Sharing sharing, int major = 4, int minor = 5);
     ~OtherContext();
     OtherContext(const OtherContext&) = delete;
     OtherContext& operator=(const OtherContext&) = delete;
