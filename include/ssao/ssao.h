@@ -57,7 +57,8 @@
  *   name is left alone) and makes a new one; destroy_context then deletes
  *   only a texture that is still the library's.
  * - destroy_context deletes every GL object the library made; call it while
- *   the GL context is still current. ssao_get_api, status_string,
+ *   the GL context is still current (after that context is gone it only
+ *   frees the library's memory, see destroy_context). ssao_get_api, status_string,
  *   resolve_settings and preset_settings need no GL context.
  *
  * GL state
@@ -545,12 +546,12 @@ typedef struct ssao_api {
     ssao_status (SSAO_CALL *create_context)(const ssao_context_desc* desc, ssao_context** out);
 
     /* Deletes the context and its GL objects; NULL is allowed (returns OK).
-     * The GL context it was created on must be current. */
+     * The GL context it was created on must be current. On any other GL
+     * context (or none) it deletes no GL object (the names may be the current
+     * context's own), frees the library's memory all the same (ctx is invalid
+     * afterwards) and returns WRONG_CONTEXT: the GL objects go with the
+     * creating GL context when the host destroys it. */
     ssao_status (SSAO_CALL *destroy_context)(ssao_context* ctx);
-    /* On any other GL context (or none) it deletes no GL object (the
-     * names may be the current context's own), frees the library's memory all
-     * the same (ctx is invalid afterwards) and returns WRONG_CONTEXT: the GL
-     * objects go with the creating GL context when the host destroys it. */
 
     /* Validates and applies settings (takes effect at the next execute).
      * Returns OK, NULL_POINTER, STRUCT_SIZE, INVALID_ENUM, INVALID_VALUE. */
