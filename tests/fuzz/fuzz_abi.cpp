@@ -62,16 +62,34 @@ struct Reader {
 // textures live), an unrelated one, one sharing objects with the first, none.
 enum Current { kFirst = 0, kUnrelated = 1, kShared = 2, kNone = 3 };
 
+// The library, loaded once for the process (the world below may be rebuilt).
+plugin::Library& library() {
+    static plugin::Library* lib = [] {
+        auto* l = new plugin::Library();
+        std::string error;
+        if (!l->open(plugin::Library::default_path(), error)) finding("cannot open the plugin", error);
+        return l;
+    }();
+    return *lib;
+}
+
 struct World {
     std::unique_ptr<eglctx::Context> egl;
     std::unique_ptr<testgl::DebugErrors> errors;
-    plugin::Library lib;
+    plugin::Library& lib = library();
     std::vector<GLuint> textures;  // every kind the decoder picks from
     testgl::Snapshot host_state;
     GLuint host_fbo = 0, host_vao = 0;
     std::unique_ptr<testgl::OtherContext> unrelated, shared;
     testgl::Snapshot unrelated_state, shared_state;
     Current current = kFirst;
+    // Destroying the GL contexts frees every GL object made in them (the
+    // library's too, after a destroy_context refused on another context).
+    ~World() {
+        shared.reset();
+        unrelated.reset();
+        egl.reset();
+    }
 };
 
 void make_current(World& w, Current c) {
@@ -93,116 +111,127 @@ GLuint texture_2d(GladGLContext& gl, GLenum internal, int w, int h) {
     return t;
 }
 
-World& world() {
-    static World* w = [] {
-        auto* x = new World();
-        x->egl = testgl::make_debug_context(4, 5);
-        GladGLContext& gl = x->egl->gl();
-        std::string error;
-        if (!x->lib.open(plugin::Library::default_path(), error)) finding("cannot open the plugin", error);
-        x->errors = std::make_unique<testgl::DebugErrors>(gl);
-        // 2D textures of every input and output format, at a few tiny sizes.
-        const GLenum formats[] = {GL_DEPTH_COMPONENT16, GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT32F,
-                                  GL_DEPTH24_STENCIL8,  GL_DEPTH32F_STENCIL8, GL_RGBA16F, GL_RGBA8, GL_RGBA32F,
-                                  GL_RGB10_A2, GL_RGBA8_SNORM, GL_RG8, GL_R8, GL_R16F, GL_R32UI, GL_RGBA8UI,
-                                  GL_RGBA16I, GL_SRGB8_ALPHA8};
-        for (GLenum f : formats)
-            for (int s : {1, 7, 16}) x->textures.push_back(texture_2d(gl, f, s, s == 7 ? 5 : s));
-        // Other targets.
-        GLuint t = 0;
-        gl.GenTextures(1, &t);
-        gl.BindTexture(GL_TEXTURE_3D, t);
-        gl.TexStorage3D(GL_TEXTURE_3D, 1, GL_R32F, 16, 16, 2);
-        x->textures.push_back(t);
-        gl.GenTextures(1, &t);
-        gl.BindTexture(GL_TEXTURE_2D_ARRAY, t);
-        gl.TexStorage3D(GL_TEXTURE_2D_ARRAY, 1, GL_DEPTH_COMPONENT32F, 16, 16, 1);
-        x->textures.push_back(t);
-        gl.GenTextures(1, &t);
-        gl.BindTexture(GL_TEXTURE_CUBE_MAP, t);
-        gl.TexStorage2D(GL_TEXTURE_CUBE_MAP, 1, GL_RGBA16F, 16, 16);
-        x->textures.push_back(t);
-        gl.GenTextures(1, &t);
-        gl.BindTexture(GL_TEXTURE_RECTANGLE, t);
-        gl.TexStorage2D(GL_TEXTURE_RECTANGLE, 1, GL_DEPTH_COMPONENT32F, 16, 16);
-        x->textures.push_back(t);
+World* make_world() {
+    auto* x = new World();
+    x->egl = testgl::make_debug_context(4, 5);
+    GladGLContext& gl = x->egl->gl();
+    x->errors = std::make_unique<testgl::DebugErrors>(gl);
+    // 2D textures of every input and output format, at a few tiny sizes.
+    const GLenum formats[] = {GL_DEPTH_COMPONENT16, GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT32F,
+                              GL_DEPTH24_STENCIL8,  GL_DEPTH32F_STENCIL8, GL_RGBA16F, GL_RGBA8, GL_RGBA32F,
+                              GL_RGB10_A2, GL_RGBA8_SNORM, GL_RG8, GL_R8, GL_R16F, GL_R32UI, GL_RGBA8UI,
+                              GL_RGBA16I, GL_SRGB8_ALPHA8};
+    for (GLenum f : formats)
+        for (int s : {1, 7, 16}) x->textures.push_back(texture_2d(gl, f, s, s == 7 ? 5 : s));
+    // Other targets.
+    GLuint t = 0;
+    gl.GenTextures(1, &t);
+    gl.BindTexture(GL_TEXTURE_3D, t);
+    gl.TexStorage3D(GL_TEXTURE_3D, 1, GL_R32F, 16, 16, 2);
+    x->textures.push_back(t);
+    gl.GenTextures(1, &t);
+    gl.BindTexture(GL_TEXTURE_2D_ARRAY, t);
+    gl.TexStorage3D(GL_TEXTURE_2D_ARRAY, 1, GL_DEPTH_COMPONENT32F, 16, 16, 1);
+    x->textures.push_back(t);
+    gl.GenTextures(1, &t);
+    gl.BindTexture(GL_TEXTURE_CUBE_MAP, t);
+    gl.TexStorage2D(GL_TEXTURE_CUBE_MAP, 1, GL_RGBA16F, 16, 16);
+    x->textures.push_back(t);
+    gl.GenTextures(1, &t);
+    gl.BindTexture(GL_TEXTURE_RECTANGLE, t);
+    gl.TexStorage2D(GL_TEXTURE_RECTANGLE, 1, GL_DEPTH_COMPONENT32F, 16, 16);
+    x->textures.push_back(t);
+    gl.GenTextures(1, &t);
+    gl.BindTexture(GL_TEXTURE_2D_MULTISAMPLE, t);
+    gl.TexStorage2DMultisample(GL_TEXTURE_2D_MULTISAMPLE, 4, GL_RGBA8, 16, 16, GL_TRUE);
+    x->textures.push_back(t);
+    // (1.2) Multisampled inputs: depth and normals of matching and of
+    // mismatched sample counts.
+    const struct { GLenum format; int samples; } ms[] = {
+        {GL_DEPTH_COMPONENT32F, 4}, {GL_DEPTH24_STENCIL8, 2}, {GL_RGBA16F, 4}, {GL_RGBA16F, 2}};
+    for (const auto& m : ms) {
         gl.GenTextures(1, &t);
         gl.BindTexture(GL_TEXTURE_2D_MULTISAMPLE, t);
-        gl.TexStorage2DMultisample(GL_TEXTURE_2D_MULTISAMPLE, 4, GL_RGBA8, 16, 16, GL_TRUE);
+        gl.TexStorage2DMultisample(GL_TEXTURE_2D_MULTISAMPLE, m.samples, m.format, 16, 16, GL_TRUE);
         x->textures.push_back(t);
-        // (1.2) Multisampled inputs: depth and normals of matching and of
-        // mismatched sample counts.
-        const struct { GLenum format; int samples; } ms[] = {
-            {GL_DEPTH_COMPONENT32F, 4}, {GL_DEPTH24_STENCIL8, 2}, {GL_RGBA16F, 4}, {GL_RGBA16F, 2}};
-        for (const auto& m : ms) {
-            gl.GenTextures(1, &t);
-            gl.BindTexture(GL_TEXTURE_2D_MULTISAMPLE, t);
-            gl.TexStorage2DMultisample(GL_TEXTURE_2D_MULTISAMPLE, m.samples, m.format, 16, 16, GL_TRUE);
-            x->textures.push_back(t);
-        }
-        gl.BindTexture(GL_TEXTURE_2D_MULTISAMPLE, 0);
-        GLuint buffer = 0;
-        gl.GenBuffers(1, &buffer);
-        gl.BindBuffer(GL_TEXTURE_BUFFER, buffer);
-        gl.BufferData(GL_TEXTURE_BUFFER, 1024, nullptr, GL_STATIC_DRAW);
-        gl.BindBuffer(GL_TEXTURE_BUFFER, 0);
-        gl.GenTextures(1, &t);
-        gl.BindTexture(GL_TEXTURE_BUFFER, t);
-        gl.TexBuffer(GL_TEXTURE_BUFFER, GL_R32F, buffer);
-        gl.BindTexture(GL_TEXTURE_BUFFER, 0);
-        x->textures.push_back(t);
-        gl.GenTextures(1, &t);  // a name never bound: not a texture yet
-        x->textures.push_back(t);
-        gl.GenTextures(1, &t);  // a deleted name
-        gl.BindTexture(GL_TEXTURE_2D, t);
-        gl.BindTexture(GL_TEXTURE_2D, 0);
-        gl.DeleteTextures(1, &t);
-        x->textures.push_back(t);
-        x->textures.push_back(0);
-        x->textures.push_back(123456);
-        // A host with its own state: framebuffer, VAO, bindings, odd fixed function.
-        GLuint color = texture_2d(gl, GL_RGBA8, 8, 8);
-        gl.GenFramebuffers(1, &x->host_fbo);
-        gl.BindFramebuffer(GL_FRAMEBUFFER, x->host_fbo);
-        gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color, 0);
-        gl.GenVertexArrays(1, &x->host_vao);
-        gl.BindVertexArray(x->host_vao);
-        gl.ActiveTexture(GL_TEXTURE2);
-        gl.BindTexture(GL_TEXTURE_2D, x->textures[6]);
-        gl.ViewportIndexedf(0, 1.5f, 2.25f, 5.75f, 6.5f);
-        gl.Enable(GL_SCISSOR_TEST);
-        gl.Scissor(1, 1, 3, 3);
-        gl.Enable(GL_BLEND);
-        gl.BlendFunc(GL_ONE, GL_ONE);
-        gl.ColorMaski(0, GL_TRUE, GL_FALSE, GL_TRUE, GL_FALSE);
-        gl.Enable(GL_DEPTH_TEST);
-        gl.DepthMask(GL_FALSE);
-        gl.PixelStorei(GL_UNPACK_ALIGNMENT, 1);
-        gl.PixelStorei(GL_UNPACK_ROW_LENGTH, 3);
-        gl.ClearColor(0.25f, 0.5f, 0.75f, 1.0f);
-        x->host_state = testgl::snapshot(gl);
-        if (!x->errors->messages().empty()) finding("GL error while setting up", x->errors->messages()[0]);
-        // The other contexts, with state of their own.
-        x->unrelated = std::make_unique<testgl::OtherContext>(testgl::OtherContext::Sharing::none);
-        x->shared = std::make_unique<testgl::OtherContext>(testgl::OtherContext::Sharing::with_current);
-        for (testgl::OtherContext* o : {x->unrelated.get(), x->shared.get()}) {
-            o->make_current();
-            GLuint vao = 0;
-            o->gl().GenVertexArrays(1, &vao);
-            o->gl().BindVertexArray(vao);
-            o->gl().Enable(GL_BLEND);
-            o->gl().Viewport(0, 0, 3, 3);
-        }
-        x->unrelated->make_current();
-        x->unrelated_state = testgl::snapshot(x->unrelated->gl());
-        x->shared->make_current();
-        x->shared_state = testgl::snapshot(x->shared->gl());
-        if (!x->unrelated->gl_errors().empty() || !x->shared->gl_errors().empty())
-            finding("GL error while setting up the other contexts");
-        x->unrelated->make_first_current();
-        return x;
-    }();
-    return *w;
+    }
+    gl.BindTexture(GL_TEXTURE_2D_MULTISAMPLE, 0);
+    GLuint buffer = 0;
+    gl.GenBuffers(1, &buffer);
+    gl.BindBuffer(GL_TEXTURE_BUFFER, buffer);
+    gl.BufferData(GL_TEXTURE_BUFFER, 1024, nullptr, GL_STATIC_DRAW);
+    gl.BindBuffer(GL_TEXTURE_BUFFER, 0);
+    gl.GenTextures(1, &t);
+    gl.BindTexture(GL_TEXTURE_BUFFER, t);
+    gl.TexBuffer(GL_TEXTURE_BUFFER, GL_R32F, buffer);
+    gl.BindTexture(GL_TEXTURE_BUFFER, 0);
+    x->textures.push_back(t);
+    gl.GenTextures(1, &t);  // a name never bound: not a texture yet
+    x->textures.push_back(t);
+    gl.GenTextures(1, &t);  // a deleted name
+    gl.BindTexture(GL_TEXTURE_2D, t);
+    gl.BindTexture(GL_TEXTURE_2D, 0);
+    gl.DeleteTextures(1, &t);
+    x->textures.push_back(t);
+    x->textures.push_back(0);
+    x->textures.push_back(123456);
+    // A host with its own state: framebuffer, VAO, bindings, odd fixed function.
+    GLuint color = texture_2d(gl, GL_RGBA8, 8, 8);
+    gl.GenFramebuffers(1, &x->host_fbo);
+    gl.BindFramebuffer(GL_FRAMEBUFFER, x->host_fbo);
+    gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color, 0);
+    gl.GenVertexArrays(1, &x->host_vao);
+    gl.BindVertexArray(x->host_vao);
+    gl.ActiveTexture(GL_TEXTURE2);
+    gl.BindTexture(GL_TEXTURE_2D, x->textures[6]);
+    gl.ViewportIndexedf(0, 1.5f, 2.25f, 5.75f, 6.5f);
+    gl.Enable(GL_SCISSOR_TEST);
+    gl.Scissor(1, 1, 3, 3);
+    gl.Enable(GL_BLEND);
+    gl.BlendFunc(GL_ONE, GL_ONE);
+    gl.ColorMaski(0, GL_TRUE, GL_FALSE, GL_TRUE, GL_FALSE);
+    gl.Enable(GL_DEPTH_TEST);
+    gl.DepthMask(GL_FALSE);
+    gl.PixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    gl.PixelStorei(GL_UNPACK_ROW_LENGTH, 3);
+    gl.ClearColor(0.25f, 0.5f, 0.75f, 1.0f);
+    x->host_state = testgl::snapshot(gl);
+    if (!x->errors->messages().empty()) finding("GL error while setting up", x->errors->messages()[0]);
+    // The other contexts, with state of their own.
+    x->unrelated = std::make_unique<testgl::OtherContext>(testgl::OtherContext::Sharing::none);
+    x->shared = std::make_unique<testgl::OtherContext>(testgl::OtherContext::Sharing::with_current);
+    for (testgl::OtherContext* o : {x->unrelated.get(), x->shared.get()}) {
+        o->make_current();
+        GLuint vao = 0;
+        o->gl().GenVertexArrays(1, &vao);
+        o->gl().BindVertexArray(vao);
+        o->gl().Enable(GL_BLEND);
+        o->gl().Viewport(0, 0, 3, 3);
+    }
+    x->unrelated->make_current();
+    x->unrelated_state = testgl::snapshot(x->unrelated->gl());
+    x->shared->make_current();
+    x->shared_state = testgl::snapshot(x->shared->gl());
+    if (!x->unrelated->gl_errors().empty() || !x->shared->gl_errors().empty())
+        finding("GL error while setting up the other contexts");
+    x->unrelated->make_first_current();
+    return x;
+}
+
+World* g_world = nullptr;
+
+World& world() {
+    if (!g_world) g_world = make_world();
+    return *g_world;
+}
+
+// A destroy_context refused on the wrong GL context leaves the library's GL
+// objects in the creating context until that context is destroyed (ssao.h):
+// after such an input the world is discarded (world() makes a new one), so
+// they do not pile up.
+void discard_world() {
+    delete g_world;
+    g_world = nullptr;
 }
 
 bool documented(ssao_status st) {
@@ -339,6 +368,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     ssao_context* ctx[2] = {nullptr, nullptr};
     Current creator[2] = {kFirst, kFirst};  // the GL context each was created on
     GLuint owned_output[2] = {0, 0};        // the library's output texture, as execute last returned it
+    bool gl_objects_left = false;           // a destroy_context was refused on the wrong GL context
     if (w.current != kFirst) make_current(w, kFirst);
     for (int op = 0; op < 48 && !r.empty(); ++op) {
         const uint8_t code = r.u8();
@@ -370,6 +400,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
                 const ssao_status st = a.destroy_context(c);
                 check_after(w, "destroy_context", st);
                 if (wrong && st != SSAO_ERROR_WRONG_CONTEXT) finding("destroy_context not refused on the wrong GL context");
+                if (wrong) gl_objects_left = true;
                 ctx[which] = nullptr;
                 break;
             }
@@ -465,5 +496,6 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         if (st != SSAO_OK) finding("destroy_context refused on its own GL context");
     }
     make_current(w, kFirst);
+    if (gl_objects_left) discard_world();
     return 0;
 }
