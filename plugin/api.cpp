@@ -2,6 +2,7 @@
 // entry point checks its pointers and struct sizes, and no C++ exception
 // crosses the boundary.
 #include "context.h"
+#include "context_identity.h"
 #include "raw_enum.h"
 #include "settings.h"
 #include "struct_versions.h"
@@ -47,6 +48,7 @@ const char* SSAO_CALL status_string(ssao_status status) {
         case SSAO_ERROR_FRAMEBUFFER: return "an internal framebuffer is incomplete";
         case SSAO_ERROR_OUT_OF_MEMORY: return "out of memory";
         case SSAO_ERROR_INTERNAL: return "internal error";
+        case SSAO_ERROR_WRONG_CONTEXT: return "the current GL context is not the one the context was created on";
         case SSAO_STATUS_MAX_ENUM: break;
     }
     return "unknown status";
@@ -78,9 +80,14 @@ ssao_status SSAO_CALL api_preset_settings(ssao_preset preset, ssao_settings* out
 
 ssao_status SSAO_CALL api_destroy_context(ssao_context* ctx) {
     if (!ctx) return SSAO_OK;
+    // On a foreign GL context the library's names may be that context's own
+    // objects: none is deleted there, but the memory is freed all the same
+    // (the handle cannot be used on any context afterwards either way).
+    std::unique_ptr<ssao_context> owned(ctx);
     return guarded(nullptr, [&] {
+        if (ctx->gl_ready && !ssao_impl::on_creating_context(*ctx))
+            return ssao_impl::wrong_context(*ctx, "destroy_context (memory freed, no GL object deleted)");
         ssao_impl::release(*ctx);
-        delete ctx;
         return SSAO_OK;
     });
 }
@@ -159,7 +166,10 @@ ssao_status SSAO_CALL api_execute(ssao_context* ctx, const ssao_inputs* inputs, 
     if (out && out->size != sizeof(ssao_output))
         return ctx->fail(SSAO_ERROR_STRUCT_SIZE, "ssao_output.size does not match this library");
     const ssao_inputs full = ssao_impl::read_prefix(*inputs);  // a 1.1 host's: the 1.2 fields read as zero
-    return guarded(ctx, [&] { return ssao_impl::execute(*ctx, full, out); });
+    return guarded(ctx, [&] {
+        if (!ssao_impl::on_creating_context(*ctx)) return ssao_impl::wrong_context(*ctx, "execute");
+        return ssao_impl::execute(*ctx, full, out);
+    });
 }
 
 ssao_status SSAO_CALL api_get_timings(ssao_context* ctx, ssao_timings* out) {
@@ -167,6 +177,7 @@ ssao_status SSAO_CALL api_get_timings(ssao_context* ctx, ssao_timings* out) {
     if (!ssao_impl::is_known_size<ssao_timings>(out->size))
         return ctx->fail(SSAO_ERROR_STRUCT_SIZE, "ssao_timings.size matches no version of ssao_timings this library knows");
     return guarded(ctx, [&] {
+        if (!ssao_impl::on_creating_context(*ctx)) return ssao_impl::wrong_context(*ctx, "get_timings");
         ssao_impl::collect_timings(*ctx);
         ssao_impl::write_prefix(out, ctx->timings);  // a 1.0 caller gets the fields up to total_ms
         return SSAO_OK;

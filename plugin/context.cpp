@@ -2,8 +2,10 @@
 // checks, shader compilation, and every GL object made once up front.
 #include "context.h"
 
+#include "context_identity.h"
 #include "debug.h"
 #include "program_cache.h"
+#include "resources.h"
 #include "uniforms.h"
 
 
@@ -54,7 +56,7 @@ bool all_required_loaded(const GladGLContext& gl, std::string& missing) {
     SSAO_REQUIRE_GL(GetProgramiv) SSAO_REQUIRE_GL(GetQueryObjectuiv) SSAO_REQUIRE_GL(GetShaderInfoLog)
     SSAO_REQUIRE_GL(GetShaderiv) SSAO_REQUIRE_GL(GetStringi) SSAO_REQUIRE_GL(GetTexLevelParameteriv)
     SSAO_REQUIRE_GL(GetTexParameteriv) SSAO_REQUIRE_GL(GetUniformBlockIndex) SSAO_REQUIRE_GL(GetUniformLocation)
-    SSAO_REQUIRE_GL(IsEnabled) SSAO_REQUIRE_GL(IsEnabledi) SSAO_REQUIRE_GL(IsTexture) SSAO_REQUIRE_GL(LinkProgram)
+    SSAO_REQUIRE_GL(IsEnabled) SSAO_REQUIRE_GL(IsEnabledi) SSAO_REQUIRE_GL(IsTexture) SSAO_REQUIRE_GL(IsVertexArray) SSAO_REQUIRE_GL(LinkProgram)
     SSAO_REQUIRE_GL(PixelStorei) SSAO_REQUIRE_GL(PolygonMode) SSAO_REQUIRE_GL(SamplerParameteri)
     SSAO_REQUIRE_GL(Scissor) SSAO_REQUIRE_GL(ShaderSource) SSAO_REQUIRE_GL(StencilMaskSeparate)
     SSAO_REQUIRE_GL(TexImage2D) SSAO_REQUIRE_GL(TexParameteri) SSAO_REQUIRE_GL(Uniform1i) SSAO_REQUIRE_GL(Uniform2i)
@@ -103,6 +105,7 @@ ssao_status initialise(ssao_context& ctx, const ssao_context_desc& desc) {
     ctx.caps.clip_control = gl.ClipControl != nullptr && (v >= 45 || has_gl_extension(gl, "GL_ARB_clip_control"));
     ctx.caps.depth_stencil_mode = v >= 43;
     ctx.caps.texture_target_query = v >= 45 && gl.GetTextureParameteriv != nullptr;
+    ctx.caps.query_buffer = v >= 44 || has_gl_extension(gl, "GL_ARB_query_buffer_object");
     ctx.caps.indexed_blend = v >= 40 && gl.BlendFuncSeparatei != nullptr && gl.BlendEquationSeparatei != nullptr;
     if (v >= 41 && gl.GetFloati_v && gl.ViewportIndexedfv && gl.ScissorIndexedv) {
         gl.GetIntegerv(GL_MAX_VIEWPORTS, &ctx.caps.viewports);
@@ -116,14 +119,16 @@ ssao_status initialise(ssao_context& ctx, const ssao_context_desc& desc) {
     const ssao_status st = compile_base_programs(ctx);
     if (st != SSAO_OK) return st;
 
-    // Object creation binds nothing here: buffers and textures are first bound
-    // inside execute, under the state guard.
+    // Object creation binds nothing here but the vertex array, whose binding
+    // is put back at once (mark_creating_context): buffers and textures are
+    // first bound inside execute, under the state guard.
     gl.GenVertexArrays(1, &ctx.vao);
     gl.GenFramebuffers(1, &ctx.fbo);
     gl.GenBuffers(1, &ctx.ubo_frame);
     gl.GenBuffers(1, &ctx.ubo_kernel);
     gl.GenTextures(1, &ctx.noise_texture);
     gl.GenSamplers(1, &ctx.sampler);
+    mark_creating_context(ctx);
     // texelFetch ignores filtering and wrapping, but a depth texture with a
     // compare mode would read as a shadow test: the sampler turns that off.
     gl.SamplerParameteri(ctx.sampler, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
@@ -150,7 +155,8 @@ void release(ssao_context& ctx) {
     if (ctx.sampler) gl.DeleteSamplers(1, &ctx.sampler);
     for (GLuint texture : ctx.intermediates)
         if (texture) gl.DeleteTextures(1, &texture);
-    if (ctx.output) gl.DeleteTextures(1, &ctx.output);
+    // The host may have deleted the output it was handed (and reused the name).
+    if (owned_output_alive(ctx)) gl.DeleteTextures(1, &ctx.output);
     if (ctx.timers) gl.DeleteQueries(ssao_context::kFrames * ssao_context::kStamps, &ctx.queries[0][0]);
 }
 

@@ -42,6 +42,10 @@ struct ssao_context {
     // ProgramId first, then each variant a plan has used.
     std::vector<ssao_impl::CompiledProgram> programs;
     GLuint vao = 0, fbo = 0, ubo_frame = 0, ubo_kernel = 0, noise_texture = 0, sampler = 0;
+    // The vertex array's label, unique in the process (empty without
+    // KHR_debug): how execute recognises the creating GL context
+    // (context_identity.cpp).
+    std::string vao_label;
 
     // The plan's intermediate textures, each with the size and format it was
     // last allocated at, and the plugin-owned output (resources.cpp). They

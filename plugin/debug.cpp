@@ -4,6 +4,8 @@
 #include "context.h"
 #include "plan.h"
 
+#include <cstring>
+
 namespace ssao_impl {
 
 namespace {
@@ -26,6 +28,18 @@ void init_debug(ssao_context& ctx) {
 
 void label_object(const ssao_context& ctx, GLenum identifier, GLuint name, const char* label) {
     if (ctx.debug.available && name != 0) ctx.gl.ObjectLabel(identifier, name, -1, label);
+}
+
+bool has_label(const ssao_context& ctx, GLenum identifier, GLuint name, const char* label) {
+    if (!ctx.debug.available || !ctx.gl.GetObjectLabel) return true;
+    // One byte more than the label: a longer one is told apart, not
+    // truncated into a match.
+    char read[96] = {};
+    const size_t want = std::strlen(label);
+    if (want + 1 >= sizeof read) return false;
+    GLsizei length = 0;
+    ctx.gl.GetObjectLabel(identifier, name, static_cast<GLsizei>(sizeof read), &length, read);
+    return static_cast<size_t>(length) == want && std::memcmp(read, label, want) == 0;
 }
 
 ExecuteGroup::ExecuteGroup(ssao_context& ctx) : ctx_(ctx) {

@@ -14,12 +14,12 @@ struct DebugState {
     bool available = false;   // KHR_debug's functions are loaded (set at creation)
     GLint max_depth = 0;      // GL_MAX_DEBUG_GROUP_STACK_DEPTH
     bool groups_on = false;   // inside an execute whose outer group was pushed
-    bool objects_labelled = false;  // the framebuffer and vertex array (labelled after their first bind)
+    bool objects_labelled = false;  // the framebuffer (labelled after its first bind)
 };
 
 // Labels of the library's objects (programs are labelled from programs.cpp).
 constexpr const char* kLabelFramebuffer = "ssao: framebuffer";
-constexpr const char* kLabelVertexArray = "ssao: vertex array";
+constexpr const char* kLabelVertexArray = "ssao: vertex array";  // + " <n>", unique in the process
 constexpr const char* kLabelSampler = "ssao: sampler";
 constexpr const char* kLabelFrameBlock = "ssao: frame constants";
 constexpr const char* kLabelKernelBlock = "ssao: kernel";
@@ -34,6 +34,10 @@ void init_debug(ssao_context& ctx);
 // glObjectLabel where KHR_debug is present. `name` must exist (been bound or
 // created once): a name that is only generated is not an object yet.
 void label_object(const ssao_context& ctx, GLenum identifier, GLuint name, const char* label);
+
+// Whether object `name` (which must exist in the current context) carries
+// exactly `label`. Without KHR_debug labels cannot be read: true.
+bool has_label(const ssao_context& ctx, GLenum identifier, GLuint name, const char* label);
 
 // The group around a whole execute: pushed only when the host's stack has
 // room for it and one pass group, so the library never overflows the stack;

@@ -204,6 +204,16 @@ GlStateGuard::~GlStateGuard() {
         gl.ClipControl(static_cast<GLenum>(clip_origin_), static_cast<GLenum>(clip_depth_mode_));
 }
 
+QueryBufferUnbound::QueryBufferUnbound(const GladGLContext& gl, const GlCaps& caps) : gl_(gl) {
+    if (!caps.query_buffer) return;
+    gl.GetIntegerv(GL_QUERY_BUFFER_BINDING, &saved_);
+    if (saved_ != 0) gl.BindBuffer(GL_QUERY_BUFFER, 0);
+}
+
+QueryBufferUnbound::~QueryBufferUnbound() {
+    if (saved_ != 0) gl_.BindBuffer(GL_QUERY_BUFFER, static_cast<GLuint>(saved_));
+}
+
 void set_pass_state(const GladGLContext& gl, const GlCaps& caps) {
     gl.Disable(GL_SCISSOR_TEST);
     gl.Disable(GL_DEPTH_TEST);

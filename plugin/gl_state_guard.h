@@ -13,6 +13,7 @@ struct GlCaps {
     bool depth_stencil_mode = false;  // GL 4.3: GL_DEPTH_STENCIL_TEXTURE_MODE
     bool texture_target_query = false;// GL 4.5: GL_TEXTURE_TARGET
     bool indexed_blend = false;       // GL 4.0: glBlendFuncSeparatei / glBlendEquationSeparatei
+    bool query_buffer = false;        // GL 4.4 or ARB_query_buffer_object: GL_QUERY_BUFFER exists
     int viewports = 1;                // GL 4.1 viewport arrays: how many indices to save (<= 16)
     int max_draw_buffers = 8;
     int max_clip_distances = 8;
@@ -72,6 +73,23 @@ private:
     GLuint ds_texture_ = 0, ds_unit_ = 0;
     GLenum ds_target_ = GL_TEXTURE_2D;
     GLint ds_mode_ = 0;
+};
+
+// While it lives, no buffer is bound to GL_QUERY_BUFFER (where that target
+// exists): with one bound, glGetQueryObject* writes the result into that
+// buffer at the offset the pointer argument gives, instead of into memory.
+// Restores the host's binding on destruction. Used around every read of the
+// timer queries, inside execute and in get_timings (which has no state guard).
+class QueryBufferUnbound {
+public:
+    QueryBufferUnbound(const GladGLContext& gl, const GlCaps& caps);
+    ~QueryBufferUnbound();
+    QueryBufferUnbound(const QueryBufferUnbound&) = delete;
+    QueryBufferUnbound& operator=(const QueryBufferUnbound&) = delete;
+
+private:
+    const GladGLContext& gl_;
+    GLint saved_ = 0;
 };
 
 // Puts the pipeline into the state the passes assume (after the guard saved it).

@@ -71,7 +71,9 @@ ssao_status execute(ssao_context& ctx, const ssao_inputs& in, ssao_output* out) 
     if (st != SSAO_OK) return st;
 
     // Resources: (re)allocate only on change; only then are the unpack state
-    // and our framebuffer's completeness looked at.
+    // and our framebuffer's completeness looked at. An output the host
+    // deleted is a change.
+    forget_deleted_output(ctx);
     if (ctx.kernel_dirty || resources_stale(ctx, plan)) {
         guard.save_unpack_state();
         reset_unpack(gl);

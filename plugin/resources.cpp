@@ -75,6 +75,16 @@ GLenum PlanTextures::target_of(const TexRef& ref) const {
     return host_input ? input_target : GLenum(GL_TEXTURE_2D);
 }
 
+bool owned_output_alive(const ssao_context& ctx) {
+    return ctx.output != 0 && ctx.gl.IsTexture(ctx.output) && has_label(ctx, GL_TEXTURE, ctx.output, kLabelOutput);
+}
+
+void forget_deleted_output(ssao_context& ctx) {
+    if (ctx.output == 0 || owned_output_alive(ctx)) return;
+    ctx.output = 0;
+    ctx.output_width = ctx.output_height = 0;
+}
+
 bool resources_stale(const ssao_context& ctx, const FramePlan& plan) {
     for (int i = 0; i < plan.intermediate_count; ++i)
         if (intermediate_stale(ctx, plan, i)) return true;

@@ -23,6 +23,17 @@ struct PlanTextures {
     GLenum target_of(const TexRef& ref) const;
 };
 
+// Whether ctx.output still names the library's output texture: the host may
+// have deleted it (glIsTexture false), and a texture of the host's may have
+// taken the name since (its label is not "ssao: output"; only told apart with
+// KHR_debug). Queries only.
+bool owned_output_alive(const ssao_context& ctx);
+
+// Forgets an output texture the host deleted (owned_output_alive false), so
+// the next update_resources makes a new one; the name is not deleted, it is
+// not the library's any more.
+void forget_deleted_output(ssao_context& ctx);
+
 // Whether update_resources will (re)allocate anything for `plan`.
 bool resources_stale(const ssao_context& ctx, const FramePlan& plan);
 

@@ -80,11 +80,11 @@ void draw(const ssao_context& ctx, const Pass& pass) {
     gl.DrawArrays(GL_TRIANGLES, 0, 3);
 }
 
-// The objects bound here exist only after their first bind: label them then.
+// The framebuffer exists only after its first bind: label it then (the
+// vertex array was made and labelled at creation: context_identity.cpp).
 void label_bound_objects(ssao_context& ctx) {
     if (ctx.debug.objects_labelled) return;
     label_object(ctx, GL_FRAMEBUFFER, ctx.fbo, kLabelFramebuffer);
-    label_object(ctx, GL_VERTEX_ARRAY, ctx.vao, kLabelVertexArray);
     ctx.debug.objects_labelled = true;
 }
 

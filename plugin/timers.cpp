@@ -43,6 +43,7 @@ void end_timed_frame(ssao_context& ctx, int slot) {
 void collect_timings(ssao_context& ctx) {
     if (!ctx.timers) return;
     const GladGLContext& gl = ctx.gl;
+    const QueryBufferUnbound results_to_memory(gl, ctx.caps);
     // Oldest first, so the newest completed frame wins.
     for (;;) {
         int oldest = -1;

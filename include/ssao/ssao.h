@@ -33,16 +33,32 @@
  *   settings applied, no GL state changed, no output written).
  *
  * Threading and lifetime
- * - A context belongs to the GL context (or share group) that was current at
- *   create_context. Every call that takes a context must be made on a thread
- *   where that GL context is current. A context is not thread-safe; distinct
+ * - A context belongs to the one GL context that was current at
+ *   create_context: not to its share group, since the vertex array,
+ *   framebuffer and query objects it keeps are not shared between GL
+ *   contexts. execute, get_timings and destroy_context must be made on a
+ *   thread where that GL context is current; on any other (one sharing
+ *   objects with it included, or none) they return SSAO_ERROR_WRONG_CONTEXT
+ *   and touch nothing in GL. To use the library on two GL contexts, create
+ *   one ssao_context on each. A context is not thread-safe; distinct
  *   contexts may be used from distinct threads with their own GL contexts.
+ * - How the current context is recognised: at creation the library makes
+ *   its vertex array exist and, with KHR_debug, labels it with a name unique
+ *   in the process ("ssao: vertex array <n>"); each of those calls first asks
+ *   glIsVertexArray and glGetObjectLabel (queries that raise no GL error).
+ *   Without KHR_debug only glIsVertexArray is asked, so a foreign context
+ *   that happens to hold a vertex array of the same name is not told apart.
  * - Textures passed to execute are only read (depth, normal) or rendered into
  *   (output) during that call; the library keeps no reference to them.
  * - The texture returned for plugin-owned output stays valid until the next
  *   execute that changes the viewport size or output format, or destroy_context.
+ *   If the host deletes it, the next execute notices (glIsTexture, and with
+ *   KHR_debug its "ssao: output" label, so a host texture that reused the
+ *   name is left alone) and makes a new one; destroy_context then deletes
+ *   only a texture that is still the library's.
  * - destroy_context deletes every GL object the library made; call it while
- *   the GL context is still current. ssao_get_api, status_string,
+ *   the GL context is still current (after that context is gone it only
+ *   frees the library's memory, see destroy_context). ssao_get_api, status_string,
  *   resolve_settings and preset_settings need no GL context.
  *
  * GL state
@@ -60,6 +76,14 @@
  *   colour/depth/stencil write masks, clip control (where supported), the
  *   depth-stencil texture mode of a D24S8/D32FS8 input (GL 4.3+) and the
  *   unpack pixel-store parameters.
+ * - Where query buffers exist (GL 4.4 or ARB_query_buffer_object), a buffer
+ *   bound to GL_QUERY_BUFFER would make reading the timer queries write into
+ *   it: execute and get_timings unbind it while they read them and bind it
+ *   back. No other buffer binding matters to it: it reads no pixels back
+ *   (pixel-pack), draws no indirect or indexed draws (draw-indirect; the
+ *   element array belongs to its own vertex array) and uses no copy-read/
+ *   write, texture, atomic-counter, shader-storage, dispatch-indirect or
+ *   transform-feedback buffer: those bindings are neither read nor changed.
  * - It assumes, and does not save: the texture parameters of the host's
  *   textures other than the depth-stencil mode (it reads them with texelFetch
  *   through its own sampler objects, so filters, wrap and compare modes do not
@@ -165,6 +189,11 @@ typedef enum ssao_status {
     SSAO_ERROR_OUT_OF_MEMORY = 14,
     /* A bug in the library; last_error says where. */
     SSAO_ERROR_INTERNAL = 15,
+    /* The GL context current on this thread is not the one the context
+     * was created on (another context, one sharing objects with it, or none:
+     * the creating one was destroyed). Nothing was done in GL. Remedy: make
+     * the creating GL context current (see "Threading and lifetime"). */
+    SSAO_ERROR_WRONG_CONTEXT = 16,
     SSAO_STATUS_MAX_ENUM = 0x7fffffff  /* not a value: keeps the enum 32 bits wide */
 } ssao_status;
 
@@ -517,7 +546,11 @@ typedef struct ssao_api {
     ssao_status (SSAO_CALL *create_context)(const ssao_context_desc* desc, ssao_context** out);
 
     /* Deletes the context and its GL objects; NULL is allowed (returns OK).
-     * The GL context it was created on must be current. */
+     * The GL context it was created on must be current. On any other GL
+     * context (or none) it deletes no GL object (the names may be the current
+     * context's own), frees the library's memory all the same (ctx is invalid
+     * afterwards) and returns WRONG_CONTEXT: the GL objects go with the
+     * creating GL context when the host destroys it. */
     ssao_status (SSAO_CALL *destroy_context)(ssao_context* ctx);
 
     /* Validates and applies settings (takes effect at the next execute).
@@ -531,13 +564,16 @@ typedef struct ssao_api {
      * NULL_POINTER, STRUCT_SIZE, INVALID_ENUM, INVALID_VALUE, INVALID_SIZE,
      * INVALID_TEXTURE, UNSUPPORTED_FORMAT, INVALID_PROJECTION, FRAMEBUFFER,
      * OUT_OF_MEMORY, INTERNAL, and (1.2) SHADER: a feature that is off by
-     * default compiles its shader variant the first time a frame uses it. */
+     * default compiles its shader variant the first time a frame uses it;
+     * WRONG_CONTEXT when the creating GL context is not current. */
     ssao_status (SSAO_CALL *execute)(ssao_context* ctx, const ssao_inputs* inputs, ssao_output* out);
 
     /* GPU times of the newest frame whose queries have completed, without
      * waiting. available = 0 until one has. out->size may be the 1.0 size
      * (40: only the fields up to total_ms are written) or sizeof(ssao_timings);
-     * out->size is left as given. Returns OK, NULL_POINTER, STRUCT_SIZE. */
+     * out->size is left as given. Returns OK, NULL_POINTER, STRUCT_SIZE, and
+     * WRONG_CONTEXT (out untouched) when the creating GL context is not
+     * current: the timer queries live there. */
     ssao_status (SSAO_CALL *get_timings)(ssao_context* ctx, ssao_timings* out);
 
     /* What the last successful execute read from its inputs. Returns OK,

@@ -56,6 +56,24 @@ inline Snapshot snapshot(GladGLContext& gl, int units = 4) {
     geti("uniform_buffer", GL_UNIFORM_BUFFER_BINDING);
     geti("pixel_unpack_buffer", GL_PIXEL_UNPACK_BUFFER_BINDING);
     geti("pixel_pack_buffer", GL_PIXEL_PACK_BUFFER_BINDING);
+    // Every other buffer binding point, each from the GL version that has it:
+    // the library must neither need nor change any of them.
+    GLint major = 0, minor = 0;
+    gl.GetIntegerv(GL_MAJOR_VERSION, &major);
+    gl.GetIntegerv(GL_MINOR_VERSION, &minor);
+    const int version = major * 10 + minor;
+    geti("element_array_buffer", GL_ELEMENT_ARRAY_BUFFER_BINDING);  // of the bound vertex array
+    geti("copy_read_buffer", GL_COPY_READ_BUFFER_BINDING);
+    geti("copy_write_buffer", GL_COPY_WRITE_BUFFER_BINDING);
+    geti("texture_buffer", GL_TEXTURE_BUFFER_BINDING);
+    geti("transform_feedback_buffer", GL_TRANSFORM_FEEDBACK_BUFFER_BINDING);
+    if (version >= 40) geti("draw_indirect_buffer", GL_DRAW_INDIRECT_BUFFER_BINDING);
+    if (version >= 42) geti("atomic_counter_buffer", GL_ATOMIC_COUNTER_BUFFER_BINDING);
+    if (version >= 43) {
+        geti("dispatch_indirect_buffer", GL_DISPATCH_INDIRECT_BUFFER_BINDING);
+        geti("shader_storage_buffer", GL_SHADER_STORAGE_BUFFER_BINDING);
+    }
+    if (version >= 44) geti("query_buffer", GL_QUERY_BUFFER_BINDING);
     for (GLuint i = 0; i < 4; ++i) {
         GLint b = 0;
         GLint64 start = 0, size = 0;

@@ -239,7 +239,13 @@ TEST_CASE("object labels: every GL object the library made carries an 'ssao: ...
         std::multiset<std::string> library, unlabelled_host;
         for (GLuint name = 1; name < 512; ++name) {
             if (!k.is(gl, name)) continue;
-            const std::string label = testgl::object_label(gl, k.identifier, name);
+            std::string label = testgl::object_label(gl, k.identifier, name);
+            // The vertex array's label ends in a number unique in the process
+            // (how the library recognises its GL context): "ssao: vertex array 7".
+            const std::string vao = "ssao: vertex array ";
+            if (k.identifier == GL_VERTEX_ARRAY && label.rfind(vao, 0) == 0 && label.size() > vao.size() &&
+                label.find_first_not_of("0123456789", vao.size()) == std::string::npos)
+                label = "ssao: vertex array";
             if (label.rfind("ssao: ", 0) == 0)
                 library.insert(label);
             else

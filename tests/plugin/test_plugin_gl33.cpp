@@ -18,6 +18,7 @@
 #include "cpu_ssao.h"
 #include "debug_groups.h"
 #include "gl_fixture.h"
+#include "other_context.h"
 
 #include <sys/wait.h>
 #include <unistd.h>
@@ -134,7 +135,9 @@ int ao_mismatches(testgl::Fixture& fx) {
 
 // Child process: a 3.3 context without KHR_debug. Exit codes: 0 the library
 // ran correctly; 2 the override did not remove KHR_debug; 3 execute failed
-// or its AO is wrong; 4 a GL error; 5 the debug stack or labels changed.
+// or its AO is wrong; 4 a GL error; 5 the debug stack or labels changed;
+// 6 execute on another context (told apart by the vertex array's name alone,
+// without labels) was not refused with WRONG_CONTEXT, or raised a GL error there.
 int child_without_khr_debug() {
     setenv("MESA_GL_VERSION_OVERRIDE", "3.3", 1);
     setenv("MESA_EXTENSION_OVERRIDE", "-GL_KHR_debug", 1);
@@ -145,7 +148,16 @@ int child_without_khr_debug() {
     if (off < 0 || off > 32 * 32 / 50) return 3;
     for (int i = 0; i < 3; ++i)
         if (ao_mismatches(fx) != off) return 3;
-    return gl.GetError() == GL_NO_ERROR ? 0 : 4;
+    if (gl.GetError() != GL_NO_ERROR) return 4;
+    testgl::OtherContext other(testgl::OtherContext::Sharing::none, 3, 3);
+    other.make_current();
+    ssao_inputs in{};
+    in.size = sizeof in;
+    const ssao_status st = fx.api().execute(fx.ctx(), &in, nullptr);
+    const bool clean = other.gl().GetError() == GL_NO_ERROR;
+    other.make_first_current();
+    if (st != SSAO_ERROR_WRONG_CONTEXT || !clean) return 6;
+    return ao_mismatches(fx) == off && gl.GetError() == GL_NO_ERROR ? 0 : 3;
 }
 
 }  // namespace

@@ -2,14 +2,21 @@
 // distinct threads, each with its own GL context (issue 11): two threads, two
 // EGL contexts, 1,000 executes each with changing settings and viewports, and
 // every frame's AO identical to the same sequence run on one thread.
+// Both threads wait at a barrier after creating their contexts, so their
+// first executes, which compile shader variants (each sequence asks for
+// variants the other does not: distance fade and frame noise in one, pixel
+// radius in the other) and make the driver compile its own for the first
+// draws, run at the same time.
 // scripts/run-sanitizers.sh also runs it under ThreadSanitizer.
 #include "gl_fixture.h"
 #include "test_scenes.h"
 
 #include <doctest/doctest.h>
 
+#include <condition_variable>
 #include <cstdint>
 #include <cstring>
+#include <mutex>
 #include <stdexcept>
 #include <string>
 #include <thread>
@@ -28,6 +35,25 @@ uint64_t hash_floats(const std::vector<float>& v) {
     return h;
 }
 
+// Releases its threads together once `count` have arrived (C++17 has no std::barrier).
+class Barrier {
+public:
+    explicit Barrier(int count) : left_(count) {}
+    void arrive_and_wait() {
+        std::unique_lock<std::mutex> lock(mutex_);
+        if (--left_ == 0) {
+            released_.notify_all();
+            return;
+        }
+        released_.wait(lock, [&] { return left_ == 0; });
+    }
+
+private:
+    std::mutex mutex_;
+    std::condition_variable released_;
+    int left_;
+};
+
 struct Run {
     std::vector<uint64_t> frames;  // one hash per execute
     std::string error;             // first failure, empty if none
@@ -35,9 +61,12 @@ struct Run {
 };
 
 // One thread's whole life: its own EGL context, plugin context and textures,
-// `kExecutes` frames of a sequence that depends on `seed`.
-Run run_sequence(int seed) {
+// `kExecutes` frames of a sequence that depends on `seed` (1 or 2: each asks
+// for shader variants of its own). With a barrier, the first execute waits
+// there until the other thread is ready for its own first execute too.
+Run run_sequence(int seed, Barrier* start = nullptr) {
     Run r;
+    bool arrived = false;
     try {
         using namespace testscenes;
         testgl::Fixture fx;  // EGL context current on this thread, plugin context on it
@@ -57,9 +86,20 @@ Run run_sequence(int seed) {
                 s.blur = blurs[(step / 10) % 4];
                 s.seed = static_cast<uint32_t>(seed + 1);
                 s.output_format = (step / 20) % 2 ? SSAO_OUTPUT_R16F : SSAO_OUTPUT_R8;
+                if (seed == 1) {  // the FADE variant
+                    s.fade_start = 2.0f;
+                    s.fade_end = 8.0f;
+                } else {          // the RADIUS_PIXELS variant
+                    s.radius_pixels = 6.0f;
+                }
                 if (fx.api().set_settings(fx.ctx(), &s) != SSAO_OK) throw std::runtime_error("set_settings failed");
             }
             ssao_inputs in = base;
+            if (seed == 1) in.frame_index = static_cast<uint32_t>(i + 1);  // the FRAME_NOISE variant
+            if (start && !arrived) {
+                arrived = true;
+                start->arrive_and_wait();
+            }
             const int w = 1 + (step * 5) % kW, h = 1 + (step * 3) % kH;
             in.viewport[0] = (step % (kW - w + 1));
             in.viewport[1] = (step % (kH - h + 1));
@@ -75,12 +115,26 @@ Run run_sequence(int seed) {
     } catch (const std::exception& e) {
         r.error = e.what();
     }
+    if (start && !arrived) start->arrive_and_wait();  // failed before its first execute: do not strand the other
     return r;
 }
 
 }  // namespace
 
 TEST_CASE("threads: two contexts on two threads give the single-threaded results, frame for frame") {
+    // Together first: the driver's first shader compiles in this process
+    // (its one-time set-up included) happen in both threads at once.
+    Run together_a, together_b;
+    Barrier start(2);
+    std::thread ta([&] { together_a = run_sequence(1, &start); });
+    std::thread tb([&] { together_b = run_sequence(2, &start); });
+    ta.join();
+    tb.join();
+    REQUIRE_MESSAGE(together_a.error.empty(), together_a.error);
+    REQUIRE_MESSAGE(together_b.error.empty(), together_b.error);
+    CHECK(together_a.gl_errors == 0u);
+    CHECK(together_b.gl_errors == 0u);
+
     // The oracle: both sequences, one after the other, on this thread.
     const Run alone_a = run_sequence(1);
     const Run alone_b = run_sequence(2);
@@ -88,16 +142,6 @@ TEST_CASE("threads: two contexts on two threads give the single-threaded results
     REQUIRE_MESSAGE(alone_b.error.empty(), alone_b.error);
     REQUIRE(alone_a.frames.size() == size_t(kExecutes));
     CHECK(alone_a.frames != alone_b.frames);  // the sequences differ, so a mix-up would show
-
-    Run together_a, together_b;
-    std::thread ta([&] { together_a = run_sequence(1); });
-    std::thread tb([&] { together_b = run_sequence(2); });
-    ta.join();
-    tb.join();
-    REQUIRE_MESSAGE(together_a.error.empty(), together_a.error);
-    REQUIRE_MESSAGE(together_b.error.empty(), together_b.error);
-    CHECK(together_a.gl_errors == 0u);
-    CHECK(together_b.gl_errors == 0u);
     int differing = 0;
     for (int i = 0; i < kExecutes; ++i) {
         differing += together_a.frames[size_t(i)] != alone_a.frames[size_t(i)];

@@ -43,6 +43,9 @@ public:
     GladGLContext& gl() { return egl_->gl(); }
     const ssao_api& api() const { return lib_.api(); }
     ssao_context* ctx() { return ctx_; }
+    // The test destroyed the context itself (on another GL context): the
+    // fixture must not destroy it again.
+    void forget_context() { ctx_ = nullptr; }
     // GL errors reported through KHR_debug since the fixture was made.
     const std::vector<std::string>& gl_errors() const { return errors_->messages(); }
 

@@ -1,0 +1,100 @@
+// The host deletes the library-owned output texture it was handed: the next
+// execute makes a new one (same size, or after a size change) with the AO a
+// fresh context gives, without a GL error. (A host texture that took the
+// deleted name is told apart by its label; Mesa does not hand a freed name
+// out again, so that case cannot be made here.)
+#include <doctest/doctest.h>
+
+#include "gl_fixture.h"
+#include "test_scenes.h"
+
+#include <string>
+#include <vector>
+
+using testscenes::crease_scene;
+using testscenes::kFov;
+using testscenes::make;
+
+namespace {
+
+constexpr int kSize = 32;
+constexpr int kSmallW = 24, kSmallH = 20;  // the size-change viewport
+
+struct Scene {
+    GLuint depth = 0, normal = 0;
+    ssao_inputs in{};
+    explicit Scene(testgl::Fixture& fx) {
+        const auto proj = analytic::perspective(kFov, 1.0, 0.1, 100.0);
+        const analytic::GBuffer g = analytic::render(crease_scene(), proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, kSize, kSize);
+        depth = fx.make_depth(GL_DEPTH_COMPONENT32F, kSize, kSize, g.depth);
+        normal = fx.make_normals(GL_RGBA16F, kSize, kSize, g.normal);
+        in = fx.inputs(depth, normal, proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE);
+        fx.settings(make(8, SSAO_BLUR_DEFAULT));
+    }
+    ssao_inputs small() const {
+        ssao_inputs s = in;
+        s.viewport[0] = 3;
+        s.viewport[1] = 5;
+        s.viewport[2] = kSmallW;
+        s.viewport[3] = kSmallH;
+        return s;
+    }
+};
+
+struct Expected {
+    std::vector<float> full, small;
+};
+
+// What a fresh context renders (its own EGL and library context, gone after).
+Expected fresh_results() {
+    testgl::Fixture fx;
+    Scene scene(fx);
+    ssao_output out{};
+    out.size = sizeof out;
+    Expected e;
+    REQUIRE(fx.api().execute(fx.ctx(), &scene.in, &out) == SSAO_OK);
+    e.full = fx.read_red(out.texture, kSize, kSize);
+    const ssao_inputs small = scene.small();
+    REQUIRE(fx.api().execute(fx.ctx(), &small, &out) == SSAO_OK);
+    e.small = fx.read_red(out.texture, kSmallW, kSmallH);
+    return e;
+}
+
+}  // namespace
+
+TEST_CASE("deleted output: the host deletes the library's output; the next execute makes a new one, same size or not") {
+    const Expected expected = fresh_results();
+    testgl::Fixture fx;
+    auto& gl = fx.gl();
+    Scene scene(fx);
+    ssao_output out{};
+    out.size = sizeof out;
+    REQUIRE(fx.api().execute(fx.ctx(), &scene.in, &out) == SSAO_OK);
+
+    // Same size.
+    gl.DeleteTextures(1, &out.texture);
+    out.texture = 0;
+    REQUIRE(fx.api().execute(fx.ctx(), &scene.in, &out) == SSAO_OK);
+    CHECK(gl.IsTexture(out.texture));
+    CHECK(fx.read_red(out.texture, kSize, kSize) == expected.full);
+    for (const std::string& e : fx.gl_errors()) MESSAGE(e);
+    CHECK(fx.gl_errors().empty());
+
+    // With a size change in the same execute.
+    gl.DeleteTextures(1, &out.texture);
+    const ssao_inputs small = scene.small();
+    REQUIRE(fx.api().execute(fx.ctx(), &small, &out) == SSAO_OK);
+    CHECK(fx.read_red(out.texture, kSmallW, kSmallH) == expected.small);
+    // And back, deleting it once more: the reallocation path again.
+    gl.DeleteTextures(1, &out.texture);
+    REQUIRE(fx.api().execute(fx.ctx(), &scene.in, &out) == SSAO_OK);
+    CHECK(fx.read_red(out.texture, kSize, kSize) == expected.full);
+    // Deleted once more, then destroy_context: nothing of the host's deleted, no error.
+    gl.DeleteTextures(1, &out.texture);
+    REQUIRE(fx.api().destroy_context(fx.ctx()) == SSAO_OK);
+    fx.forget_context();
+    CHECK(gl.IsTexture(scene.depth));
+    CHECK(gl.IsTexture(scene.normal));
+    for (const std::string& e : fx.gl_errors()) MESSAGE(e);
+    CHECK(fx.gl_errors().empty());
+}
