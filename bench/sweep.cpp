@@ -79,7 +79,7 @@ std::vector<Config> sweep() {
     const ssao_blur blurs[] = {SSAO_BLUR_NONE, SSAO_BLUR_BOX_4X4, SSAO_BLUR_DEPTH_AWARE};
     for (uint32_t n : {4u, 16u, 64u})
         for (ssao_blur b : blurs) c.push_back(kernel(n, b));
-    // The chapter's configuration as a setting of ours (README, "The chapter's configuration").
+    // The chapter's configuration as a setting of ours (docs/api.md, "Settings": the chapter's configuration).
     Config chapter = kernel(64, SSAO_BLUR_BOX_4X4, SSAO_DISTRIBUTION_ACCELERATING);
     c.push_back(chapter);
 

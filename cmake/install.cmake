@@ -9,7 +9,7 @@
 #   P/share/ssao/models, scenes (the bundled data the tools find beside bin/),
 #     viewer/demo.txt (ssao-viewer --script: a tour of its keys)
 #   P/lib/python3/dist-packages/ssao (the Python package; cmake/python.cmake)
-#   P/share/doc/ssao/README.md, LICENSE, assets-README.md
+#   P/share/doc/ssao/README.md, LICENSE, assets-README.md, docs/*.md (the manuals)
 # Every path inside is relative to P, so the tree may be moved after installing.
 include(CMakePackageConfigHelpers)
 
@@ -38,6 +38,9 @@ install(FILES ${PROJECT_BINARY_DIR}/package/ssao.pc DESTINATION ${CMAKE_INSTALL_
 
 set(SSAO_DOC_DIR ${CMAKE_INSTALL_DATADIR}/doc/ssao)
 install(FILES ${PROJECT_SOURCE_DIR}/README.md ${PROJECT_SOURCE_DIR}/LICENSE DESTINATION ${SSAO_DOC_DIR} COMPONENT runtime)
+# The manuals the README links to (docs/api.md, ...), beside it as in the source tree.
+file(GLOB SSAO_MANUALS ${PROJECT_SOURCE_DIR}/docs/*.md)
+install(FILES ${SSAO_MANUALS} DESTINATION ${SSAO_DOC_DIR}/docs COMPONENT dev)
 
 if(SSAO_BUILD_TOOLS)
   # ssao-reference, -error and -bench only with SSAO_BUILD_REFERENCE; ssao-viewer only where GLFW was found.

@@ -2,9 +2,8 @@
 // ssao_preset sets and, through the DEFAULT row, for what a zeroed
 // ssao_settings resolves to (a user who sets nothing gets the DEFAULT preset).
 // The header's preset comments, the README's preset table and ssao-host's
-// --help are tested against it (tests/unit/test_presets.cpp,
-// tests/host: --help); the rows were picked by ssao-bench's stated rule
-// (README, "Presets").
+// --help are tested against it (tests/host/test_presets_doc.cpp); the rows
+// were picked by ssao-bench's stated rule (README, "Presets").
 #pragma once
 
 #include <ssao/ssao.h>

@@ -1,6 +1,6 @@
 // depth_limit.h - the depth-only limit: the AO an ideal ray-marcher gets from a
 // single depth layer (the reference's own primary hits and face normals), the
-// yardstick for every screen-space estimator. README: "The depth-only limit".
+// yardstick for every screen-space estimator. docs/reference.md: "The depth-only limit".
 //
 // The rule, per pixel P (view-space primary hit, unit face normal n facing the
 // camera) and radius R:

@@ -1,7 +1,7 @@
 // raytracer.h - ground-truth ambient occlusion by ray tracing (Embree 3).
 //
 // V_R(p) = (1/pi) * integral over the hemisphere around n of [no hit within R] cos(theta),
-// estimated with cosine-distributed occlusion rays (README: "Ground truth: the
+// estimated with cosine-distributed occlusion rays (docs/reference.md: "Ground truth: the
 // ray-traced reference").
 // Samples: a Hammersley point set of N points, Cranley-Patterson rotated per
 // pixel (or per call) by a hash of the seed, so results are deterministic for

@@ -6,7 +6,7 @@
 #   3. a TSan build (build-tsan/) of the library and the two-thread test.
 # Any report fails the script (-fno-sanitize-recover=all, halt_on_error).
 # Prints each phase's wall time at the end. Longer fuzzing and soaking: see
-# README, "Reliability" (e.g. SSAO_FUZZ_RUNS=200000 scripts/run-sanitizers.sh).
+# docs/reliability.md (e.g. SSAO_FUZZ_RUNS=200000 scripts/run-sanitizers.sh).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
@@ -53,7 +53,7 @@ step "ASan+UBSan: the CTest suite"
 # Left out (-LE): the tests whose programs are built outside this build and
 # cannot load an instrumented libssao.so (it needs the sanitizer runtime in
 # the executable): the package test's fresh CMake consumers, the Python
-# interpreter (python.*), and the README blocks that run the Python host.
+# interpreter (python.*), and the doc blocks that run the Python host.
 # The library code they reach is reached by the C/C++ tests here.
 LD_PRELOAD=$root/build-asan/keep_modules.so \
   ctest --test-dir build-asan --output-on-failure -j"$jobs" -LE '^(package|python|readme)$'

@@ -73,7 +73,7 @@ int format_bits(GLenum depth_format);
 // in double): |t(d + step) - t(d)| with step = 1/(2^bits-1) or one float ulp
 // (for D32F with a [-1,1] clip range: at least half an ulp of NDC z).
 double depth_step(const glm::dmat4& proj, ssao_clip_range clip, GLenum depth_format, double t);
-// The README's rule-of-thumb estimate of the same ("Depth precision").
+// The rule-of-thumb estimate of the same (docs/hard-cases.md, "Depth precision").
 double design_step(GLenum depth_format, bool reverse_zo, double n, double t);
 // The depth value the format stores for d (round to nearest unorm / float).
 double quantise(double d, GLenum depth_format);

@@ -1,4 +1,4 @@
-// Against the closed forms of V_R (README, "Ground truth"): the wall and the wedge. Hemisphere
+// Against the closed forms of V_R (docs/reference.md, "Ground truth"): the wall and the wedge. Hemisphere
 // SSAO converges to its own limit, not to V_R; the limit is computed here by
 // an independent numerical integral of the estimator's definition over the
 // kernel's continuous distribution (uniform directions on the hemisphere,

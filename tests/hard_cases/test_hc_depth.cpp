@@ -234,7 +234,7 @@ TEST_CASE("depth conventions: a half-pixel jitter leaves the AO profile across t
 TEST_CASE("reconstruction: view positions rebuilt from float depth and a float matrix match the analytic ray-plane hit") {
     // The shader's view_position (float) and ssao_impl::view_position (double,
     // from the float-rounded matrix) against the exact hit, within the depth
-    // format's step at the hit (the README's depth-step table) plus float rounding.
+    // format's step at the hit (docs/hard-cases.md, the depth-step table) plus float rounding.
     const int W = 40, H = 30;
     const Scene scene = hc::to_view(hc::crease_world(), hc::crease_view());
     auto convs = perspective_conventions(double(W) / H, 0.1, 100.0);
@@ -506,7 +506,7 @@ TEST_CASE("depth range: view depths beyond the half-float range (> 65504) give t
     CHECK(fx.gl_errors().empty());
 }
 
-TEST_CASE("depth precision: the README's rule-of-thumb step table against the exact step of each format") {
+TEST_CASE("depth precision: the rule-of-thumb step table of docs/hard-cases.md against the exact step of each format") {
     // The exact view-distance change of one depth step (unorm 1/(2^b - 1) or
     // one float ulp at the stored value) against the table's estimate: the
     // table is a rule of thumb, within a factor of 2.5 wherever it applies

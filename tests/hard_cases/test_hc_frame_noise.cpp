@@ -2,7 +2,7 @@
 // index is bit-stable, index 0 is the fixed pattern of every earlier version
 // bit for bit, and the mean of 16 consecutive indices lands closer to the
 // converged result than any single frame by about the factor a TAA host
-// expects from averaging 16 frames (README "Noise for TAA hosts").
+// expects from averaging 16 frames (docs/api.md, "Noise for TAA hosts").
 #include <doctest/doctest.h>
 
 #include "hc_util.h"

@@ -514,7 +514,7 @@ TEST_CASE("half resolution: at a silhouette no wall pixel takes AO from the obje
 TEST_CASE("half resolution: error against the wall's closed form stays within 0.02 of full resolution's") {
     // Floor and wall meeting at a right angle: V_R at distance d from the
     // wall is 1 - (acos(a) - a sqrt(1 - a^2)) / pi, a = min(d / R, 1)
-    // (README, "Ground truth"). The visibility estimator converges to it.
+    // (docs/reference.md, "Ground truth"). The visibility estimator converges to it.
     testgl::Fixture fx;
     const int W = 128, H = 96;
     const double R = 1.5;

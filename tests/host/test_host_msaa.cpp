@@ -86,7 +86,7 @@ TEST_CASE("--msaa 4 gives about the single-sample AO and --sample-index picks a 
     const auto a = load_exr(one + "/ao.exr", w, h);
     const auto b = load_exr(four + "/ao.exr", w, h);
     const auto c = load_exr(four3 + "/ao.exr", w, h);
-    // Sample 0 and sample 3 lie off the pixel centre (README "MSAA inputs"):
+    // Sample 0 and sample 3 lie off the pixel centre (docs/api.md, "MSAA inputs"):
     // close to the single-sample AO on average, and not all equal to each other.
     CHECK(mean_abs_diff(a, b) < 0.02);
     CHECK(mean_abs_diff(a, c) < 0.02);

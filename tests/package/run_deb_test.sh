@@ -68,6 +68,7 @@ holds libssao-dev "lib/libssao.so"
 holds libssao-dev "lib/cmake/ssao/ssaoConfig.cmake"
 holds libssao-dev "lib/cmake/ssao/ssaoConfigVersion.cmake"
 holds libssao-dev "lib/pkgconfig/ssao.pc"
+holds libssao-dev "share/doc/ssao/docs/api.md"
 lacks libssao-dev "lib/libssao.so.$ssao_version"
 for tool in ssao-host ssao-reference ssao-error ssao-bench ssao-viewer; do holds ssao-tools "bin/$tool"; done
 holds ssao-tools "share/ssao/models/spot-on-ground.glb"

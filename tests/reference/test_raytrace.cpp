@@ -1,4 +1,4 @@
-// The ray tracer against closed forms of V_R (listed in the README, "Ground truth:
+// The ray tracer against closed forms of V_R (listed in docs/reference.md, "Ground truth:
 // the ray-traced reference", Tests),
 // within 4 standard errors (plus a small allowance for finite geometry).
 #include "geometry.h"
