@@ -42,7 +42,8 @@ void StagedOutput::png(const std::string& name, int width, int height, int chann
         throw std::runtime_error("cannot write '" + tmp + "' (disk full or directory not writable?)");
 }
 
-void StagedOutput::exr(const std::string& name, int width, int height, const std::vector<float>& pixels) {
+void StagedOutput::exr(const std::string& name, int width, int height, const std::vector<float>& pixels,
+                       const std::vector<std::pair<std::string, std::string>>& attributes) {
     const std::string tmp = temp_path(name);
     staged_.emplace_back(tmp, (fs::path(dir_) / name).string());
     EXRHeader header;
@@ -58,6 +59,16 @@ void StagedOutput::exr(const std::string& name, int width, int height, const std
     header.pixel_types = &pixel_type;
     header.requested_pixel_types = &pixel_type;
     header.compression_type = TINYEXR_COMPRESSIONTYPE_ZIP;
+    std::vector<EXRAttribute> custom(attributes.size());
+    for (size_t i = 0; i < attributes.size(); ++i) {
+        std::memset(&custom[i], 0, sizeof custom[i]);
+        std::strncpy(custom[i].name, attributes[i].first.c_str(), sizeof custom[i].name - 1);
+        std::strcpy(custom[i].type, "string");
+        custom[i].value = reinterpret_cast<unsigned char*>(const_cast<char*>(attributes[i].second.data()));
+        custom[i].size = static_cast<int>(attributes[i].second.size());
+    }
+    header.num_custom_attributes = static_cast<int>(custom.size());
+    header.custom_attributes = custom.empty() ? nullptr : custom.data();
     float* planes[1] = {const_cast<float*>(pixels.data())};
     image.num_channels = 1;
     image.images = reinterpret_cast<unsigned char**>(planes);

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace image_io {
@@ -20,8 +21,10 @@ public:
 
     // channels 1 (grey) or 3 (RGB), 8 bits. Throws std::runtime_error.
     void png(const std::string& name, int width, int height, int channels, const std::vector<uint8_t>& pixels);
-    // One 32-bit float channel named "Y". Throws std::runtime_error.
-    void exr(const std::string& name, int width, int height, const std::vector<float>& pixels);
+    // One 32-bit float channel named "Y", with `attributes` (name, value) as
+    // string attributes in the header. Throws std::runtime_error.
+    void exr(const std::string& name, int width, int height, const std::vector<float>& pixels,
+             const std::vector<std::pair<std::string, std::string>>& attributes = {});
     // Renames every staged file to its final name. Throws std::runtime_error.
     void commit();
 

@@ -20,6 +20,7 @@
 #include "flags.h"
 #include "image_io.h"
 #include "metrics.h"
+#include "provenance.h"
 
 #include <algorithm>
 #include <cerrno>
@@ -51,12 +52,19 @@ const char* kHelp =
     "  --band K          width in pixels of the silhouette and screen-border bands, 0..256 (default 3)\n"
     "  --csv FILE        append one row per mask to FILE (header written when FILE is new)\n"
     "  --label TEXT      first CSV column (default: TEST's path)\n"
+    "  --allow-mismatch  compare even when the images' headers say they were made with different\n"
+    "                    scenes, sizes, cameras, radii or thicknesses (refused by default)\n"
     "  --help, -h        this text\n"
     "  --version         the version\n"
     "\n"
     "Masks (sky always excluded): all; silhouette = within K px of a depth discontinuity or sky edge;\n"
     "border = within K px of the image edge; interior = the rest. 'ref noise' is the mean reference\n"
-    "standard error and 'noise rms' the RMSE its noise alone would give: errors near it are noise.\n";
+    "standard error and 'noise rms' the RMSE its noise alone would give: errors near it are noise.\n"
+    "\n"
+    "ssao-host and ssao-reference record in their EXR headers what an image was made with (ssao:scene,\n"
+    "size, projection, near, far, depth, eye, target, up, radius, thickness). ssao-error compares the\n"
+    "fields both images carry and refuses a difference, naming the field; an image without them (an\n"
+    "older file, another program) is compared unchecked, with a note.\n";
 
 bool is_dir(const std::string& p) {
     struct stat st;
@@ -78,6 +86,7 @@ static int run(int argc, char** argv) {
     std::vector<std::string> positional;
     std::string stderr_path, depth_path, limit_path, csv_path, label;
     int band = 3;
+    bool allow_mismatch = false;
     // The shared parser (host/flags.h): --flag value and --flag=value alike.
     const flags::Valued valued = {
         {"--ref-stderr", [&](const std::string&, const std::string& v) { stderr_path = v; }},
@@ -88,7 +97,8 @@ static int run(int argc, char** argv) {
         {"--band", [&](const std::string& f, const std::string& v) { band = int(flags::integer(f, v, 0, 256)); }},
     };
     try {
-        switch (flags::walk(argc, argv, valued, {}, [&](const std::string& a) { positional.push_back(a); })) {
+        const flags::Switches switches = {{"--allow-mismatch", [&] { allow_mismatch = true; }}};
+        switch (flags::walk(argc, argv, valued, switches, [&](const std::string& a) { positional.push_back(a); })) {
             case flags::Outcome::Help: std::fputs(kHelp, stdout); return 0;
             case flags::Outcome::Version: std::printf("%s\n", flags::version_line("ssao-error").c_str()); return 0;
             case flags::Outcome::Run: break;
@@ -183,6 +193,43 @@ static int run(int argc, char** argv) {
             limit_se.clear();  // the noise column is optional: without it, "-"
     }
 
+    // The images must show the same thing: compare what their headers record.
+    std::string unchecked;
+    {
+        const std::string prefix = provenance::kPrefix;
+        refio::Attributes test_made, ref_made, limit_made;
+        if (!refio::read_exr_attributes(test_path, prefix, test_made, error) ||
+            !refio::read_exr_attributes(ref_path, prefix, ref_made, error) ||
+            (!limit_path.empty() && !refio::read_exr_attributes(limit_path, prefix, limit_made, error))) {
+            std::fprintf(stderr, "ssao-error: %s\n", error.c_str());
+            return 1;
+        }
+        struct Pair {
+            const std::string* a_path;
+            const refio::Attributes* a;
+            const std::string* b_path;
+            const refio::Attributes* b;
+        };
+        std::vector<Pair> pairs = {{&test_path, &test_made, &ref_path, &ref_made}};
+        if (!limit_path.empty()) pairs.push_back({&limit_path, &limit_made, &ref_path, &ref_made});
+        for (const Pair& p : pairs) {
+            if (p.a->empty() || p.b->empty()) {
+                unchecked += (unchecked.empty() ? "" : ", ") + *(p.a->empty() ? p.a_path : p.b_path);
+                continue;
+            }
+            const auto d = provenance::compare(*p.a, *p.b);
+            if (d && !allow_mismatch) {
+                std::fprintf(stderr,
+                             "ssao-error: %s and %s were made with a different %s: %s vs %s (--allow-mismatch "
+                             "compares them anyway).\n",
+                             p.a_path->c_str(), p.b_path->c_str(), d->field.c_str(), d->a.c_str(), d->b.c_str());
+                return 1;
+            }
+            if (d) std::printf("mismatch   %s: %s vs %s, compared anyway (--allow-mismatch)\n", d->field.c_str(),
+                               d->a.c_str(), d->b.c_str());
+        }
+    }
+
     metrics::Inputs in;
     in.width = rw;
     in.height = rh;
@@ -233,6 +280,9 @@ static int run(int argc, char** argv) {
     std::printf("reference  %s%s%s\n", ref_path.c_str(), se.empty() ? ", no standard-error image" : "",
                 depth.empty() ? ", silhouettes from sky/AO edges" : ", silhouettes from its depth");
     if (!limit.empty()) std::printf("limit      %s\n", limit_path.c_str());
+    if (!unchecked.empty())
+        std::printf("note       %s records no scene and camera (older file or another program): not checked\n",
+                    unchecked.c_str());
     std::printf("bands      %d px\n\n", band);
     std::fputs(metrics::table(stats).c_str(), stdout);
     if (!limit.empty()) {

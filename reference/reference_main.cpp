@@ -22,6 +22,7 @@
 #include "image_io.h"
 #include "locate.h"
 #include "metrics.h"
+#include "provenance.h"
 #include "raytracer.h"
 #include "scene.h"
 
@@ -214,7 +215,8 @@ static int run(int argc, char** argv) {
         case Parse::Error: std::fprintf(stderr, "ssao-reference: %s.\n", error.c_str()); return 2;
         case Parse::Run: break;
     }
-    if (o.scene_path.empty()) o.scene_path = locate::bundled("models/spot-on-ground.glb");
+    const bool bundled_scene = o.scene_path.empty();
+    if (bundled_scene) o.scene_path = scene::default_path();
 
     scene::Scene sc;
     scene::Limits limits;
@@ -224,7 +226,8 @@ static int run(int argc, char** argv) {
         return 1;
     }
     const float aspect = float(o.width) / float(o.height);
-    const camera::Camera cam = camera::apply(sc, camera::choose(sc, aspect), o.cam);
+    camera::Source camera_source = camera::Source::Framed;
+    const camera::Camera cam = camera::initial(sc, aspect, o.cam, bundled_scene, &camera_source);
     // Radius as ssao-host picks it: --radius, else the scene's hint, else 0.05 x the
     // bounding-box diagonal (else the plugin's default 0.5).
     std::string radius_note = "--radius";
@@ -252,7 +255,7 @@ static int run(int argc, char** argv) {
                 sc.mesh.triangle_count(), sc.bounds_min.x, sc.bounds_min.y, sc.bounds_min.z, sc.bounds_max.x,
                 sc.bounds_max.y, sc.bounds_max.z);
     std::printf("camera    %s, eye (%g, %g, %g), target (%g, %g, %g), %s, near %g, far %g\n",
-                (o.cam.eye || o.cam.target) ? "from the flags" : (sc.camera ? "from the scene" : "framed from the bounds"), cam.eye.x, cam.eye.y, cam.eye.z, cam.target.x,
+                (o.cam.eye || o.cam.target) ? "from the flags" : camera::describe(camera_source), cam.eye.x, cam.eye.y, cam.eye.z, cam.target.x,
                 cam.target.y, cam.target.z,
                 cam.orthographic ? ("orthographic half-height " + std::to_string(cam.ortho_half_height)).c_str()
                                  : ("fov " + std::to_string(glm::degrees(cam.yfov)) + " deg").c_str(),
@@ -307,9 +310,13 @@ static int run(int argc, char** argv) {
         written.push_back(p);
         return true;
     };
-    auto exr = [&](const std::string& name, std::vector<refio::Channel> ch) {
+    // What the images were made with, for ssao-error to check (provenance.h).
+    const provenance::Fields made_with = provenance::describe(o.scene_path, o.width, o.height, cam, radius);
+    provenance::Fields limit_made_with = made_with;
+    if (o.limit) limit_made_with = provenance::describe(o.scene_path, o.width, o.height, cam, radius, lo.thickness);
+    auto exr = [&](const std::string& name, std::vector<refio::Channel> ch, const provenance::Fields& attributes = {}) {
         const std::string p = dir + "/" + name;
-        if (!refio::write_exr(p, img.width, img.height, std::move(ch), error)) return false;
+        if (!refio::write_exr(p, img.width, img.height, std::move(ch), error, attributes)) return false;
         written.push_back(p);
         return true;
     };
@@ -325,14 +332,14 @@ static int run(int argc, char** argv) {
             nz[i] = img.normal[i * 3 + 2];
         }
     }
-    bool ok = exr("reference_ao.exr", {{"Y", &img.ao}, {"A", &img.mask}}) &&
+    bool ok = exr("reference_ao.exr", {{"Y", &img.ao}, {"A", &img.mask}}, made_with) &&
               exr("reference_stderr.exr", {{"Y", &img.std_error}});
     ok = ok && png("reference_ao.png", img.ao);
     if (ok && o.dump_buffers)
         ok = exr("reference_depth.exr", {{"Z", &img.depth}}) &&
              exr("reference_normal.exr", {{"R", &nx}, {"G", &ny}, {"B", &nz}});
     if (ok && o.limit)
-        ok = exr("limit_ao.exr", {{"Y", &limit.ao}, {"A", &img.mask}}) &&
+        ok = exr("limit_ao.exr", {{"Y", &limit.ao}, {"A", &img.mask}}, limit_made_with) &&
              exr("limit_stderr.exr", {{"Y", &limit.std_error}}) && png("limit_ao.png", limit.ao);
     if (!ok) {
         undo();

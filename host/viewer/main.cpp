@@ -56,7 +56,7 @@ int run(const viewer::Options& o) {
     std::string error;
     if (!o.script_path.empty() && !viewer::load_script(o.script_path, script, error)) throw std::runtime_error(error);
 
-    const std::string scene_path = o.scene_path.empty() ? run_setup::default_scene_path() : o.scene_path;
+    const std::string scene_path = o.scene_path.empty() ? scene::default_path() : o.scene_path;
     plugin::Library library;
     if (!library.open_default(o.plugin_path, error))
         throw std::runtime_error(error);
@@ -155,7 +155,7 @@ int main(int argc, char** argv) {
         case viewer::Parse::Error:
             std::fprintf(stderr, "ssao-viewer: %s\n", error.c_str());
             return 2;
-        case viewer::Parse::Help: std::fputs(viewer::help_text(run_setup::default_scene_path(), locate::bundled(viewer::kDemoScript)).c_str(), stdout); return 0;
+        case viewer::Parse::Help: std::fputs(viewer::help_text(scene::default_path(), locate::bundled(viewer::kDemoScript)).c_str(), stdout); return 0;
         case viewer::Parse::Version: std::printf("%s\n", flags::version_line("ssao-viewer").c_str()); return 0;
         case viewer::Parse::Run: break;
     }
