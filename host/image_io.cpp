@@ -4,6 +4,7 @@
 #define STB_IMAGE_WRITE_IMPLEMENTATION
 #include <stb/stb_image_write.h>
 
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -16,6 +17,31 @@
 namespace image_io {
 
 namespace fs = std::filesystem;
+
+void check_output_dir(const std::string& dir) {
+    std::error_code ec;
+    if (fs::exists(dir, ec) && !fs::is_directory(dir, ec))
+        throw std::runtime_error("the output path '" + dir + "' exists and is not a directory");
+    // The nearest folder that exists: where the first write (a file, or the
+    // missing folders) will happen.
+    fs::path existing = fs::absolute(dir, ec).lexically_normal();
+    while (!existing.empty() && !fs::exists(existing, ec) && existing != existing.parent_path())
+        existing = existing.parent_path();
+    if (!fs::is_directory(existing, ec))
+        throw std::runtime_error("the output directory '" + dir + "' cannot be created: '" + existing.string() +
+                                 "' is not a directory");
+    // Permission bits do not tell (root, read-only mounts, ACLs): try it.
+    const fs::path probe = existing / (".ssao-write-test-" + std::to_string(getpid()));
+    if (::mkdir(probe.c_str(), 0700) != 0) {
+        const int why = errno;
+        throw std::runtime_error(
+            (existing == fs::absolute(dir, ec).lexically_normal() ? "the output directory '" + dir + "' is not writable"
+                                                                   : "the output directory '" + dir + "' cannot be created in '" +
+                                                                         existing.string() + "'") +
+            " (" + std::strerror(why) + ")");
+    }
+    ::rmdir(probe.c_str());
+}
 
 StagedOutput::StagedOutput(const std::string& dir) : dir_(dir) {
     std::error_code ec;

@@ -11,6 +11,12 @@
 
 namespace image_io {
 
+// Throws std::runtime_error with one sentence unless files can be written to
+// `dir`: it is a writable directory, or it is missing and its nearest existing
+// parent is one (then nothing is created; StagedOutput creates it). Run
+// before rendering, so an unwritable --out fails at once.
+void check_output_dir(const std::string& dir);
+
 class StagedOutput {
 public:
     // Creates `dir` (and its parents) if needed; throws std::runtime_error.

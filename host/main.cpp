@@ -160,13 +160,14 @@ int run(const cli::Options& o) {
     const std::string scene_path = o.scene_path.empty() ? scene::default_path() : o.scene_path;
     {
         std::error_code ec;
-        if (fs::exists(o.out_dir, ec) && !fs::is_directory(o.out_dir, ec))
-            throw RunError("the output path '" + o.out_dir + "' exists and is not a directory");
         if (o.scene_path.empty() && !fs::exists(scene_path, ec))
             throw RunError("the bundled scene '" + scene_path + "' is missing (looked in $SSAO_DATA_DIR, " +
                            "<program>/../share/ssao and, for an uninstalled build, the source tree); " +
                            "pass a .gltf or .glb file");
     }
+    // Before anything is rendered: an unwritable --out would otherwise be
+    // found only when the files are written.
+    image_io::check_output_dir(o.out_dir);
     const bool full = !o.only_ao;
     const bool sheet = o.sheet.value_or(full);
 
@@ -495,7 +496,7 @@ int main(int argc, char** argv) {
     std::string error;
     switch (cli::parse(argc, argv, options, error)) {
         case cli::ParseResult::Error:
-            std::fprintf(stderr, "ssao-host: %s\n", error.c_str());
+            flags::print_error("ssao-host", error);
             return 2;
         case cli::ParseResult::Help: {
             // Defaults come from the plugin itself (a zeroed struct resolved),
@@ -526,12 +527,8 @@ int main(int argc, char** argv) {
         return run(options);
     } catch (const std::exception& e) {
         // One line on stderr, whatever the message (loaders may embed newlines).
-        std::string message = e.what();
-        for (char& c : message)
-            if (c == '\n' || c == '\r') c = ' ';
-        while (!message.empty() && message.back() == ' ') message.pop_back();
         std::fflush(stdout);
-        std::fprintf(stderr, "ssao-host: error: %s\n", message.c_str());
+        flags::print_error("ssao-host", e.what());
         return 1;
     }
 }

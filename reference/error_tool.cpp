@@ -76,7 +76,7 @@ bool is_file(const std::string& p) {
 }
 
 int usage_error(const std::string& m) {
-    std::fprintf(stderr, "ssao-error: %s (see --help).\n", m.c_str());
+    std::fprintf(stderr, "ssao-error: error: %s (see --help).\n", m.c_str());
     return 2;
 }
 
@@ -104,7 +104,7 @@ static int run(int argc, char** argv) {
             case flags::Outcome::Run: break;
         }
     } catch (const flags::Error& e) {
-        std::fprintf(stderr, "ssao-error: %s.\n", e.message.c_str());  // the message names --help already
+        std::fprintf(stderr, "ssao-error: error: %s.\n", e.message.c_str());  // the message names --help already
         return 2;
     }
     if (positional.size() != 2) return usage_error("expected two images, TEST.exr and REF, got " + std::to_string(positional.size()));
@@ -123,40 +123,40 @@ static int run(int argc, char** argv) {
     int tw = 0, th = 0, rw = 0, rh = 0, w = 0, h = 0;
     std::vector<float> test, ref, cover, se, depth;
     if (!refio::read_exr_channel(test_path, {"Y", "R", "AO"}, test, tw, th, error, &channel)) {
-        std::fprintf(stderr, "ssao-error: %s\n", error.c_str());
+        std::fprintf(stderr, "ssao-error: error: %s\n", error.c_str());
         return 1;
     }
     if (!refio::read_exr_channel(ref_path, {"Y"}, ref, rw, rh, error)) {
-        std::fprintf(stderr, "ssao-error: %s\n", error.c_str());
+        std::fprintf(stderr, "ssao-error: error: %s\n", error.c_str());
         return 1;
     }
     if (tw != rw || th != rh) {
-        std::fprintf(stderr, "ssao-error: %s is %dx%d but the reference %s is %dx%d.\n", test_path.c_str(), tw, th,
+        std::fprintf(stderr, "ssao-error: error: %s is %dx%d but the reference %s is %dx%d.\n", test_path.c_str(), tw, th,
                      ref_path.c_str(), rw, rh);
         return 1;
     }
     const bool has_cover = refio::exr_has_channel(ref_path, "A");
     if (has_cover && !refio::read_exr_channel(ref_path, {"A"}, cover, w, h, error)) {
-        std::fprintf(stderr, "ssao-error: %s\n", error.c_str());
+        std::fprintf(stderr, "ssao-error: error: %s\n", error.c_str());
         return 1;
     }
     if (!stderr_path.empty()) {
         if (!refio::read_exr_channel(stderr_path, {"Y"}, se, w, h, error)) {
-            std::fprintf(stderr, "ssao-error: %s\n", error.c_str());
+            std::fprintf(stderr, "ssao-error: error: %s\n", error.c_str());
             return 1;
         }
         if (w != rw || h != rh) {
-            std::fprintf(stderr, "ssao-error: %s is %dx%d, not %dx%d like the reference.\n", stderr_path.c_str(), w, h, rw, rh);
+            std::fprintf(stderr, "ssao-error: error: %s is %dx%d, not %dx%d like the reference.\n", stderr_path.c_str(), w, h, rw, rh);
             return 1;
         }
     }
     if (!depth_path.empty()) {
         if (!refio::read_exr_channel(depth_path, {"Z", "Y", "R"}, depth, w, h, error)) {
-            std::fprintf(stderr, "ssao-error: %s\n", error.c_str());
+            std::fprintf(stderr, "ssao-error: error: %s\n", error.c_str());
             return 1;
         }
         if (w != rw || h != rh) {
-            std::fprintf(stderr, "ssao-error: %s is %dx%d, not %dx%d like the reference.\n", depth_path.c_str(), w, h, rw, rh);
+            std::fprintf(stderr, "ssao-error: error: %s is %dx%d, not %dx%d like the reference.\n", depth_path.c_str(), w, h, rw, rh);
             return 1;
         }
     }
@@ -165,23 +165,23 @@ static int run(int argc, char** argv) {
     std::vector<float> limit, limit_cover, limit_se;
     if (!limit_path.empty()) {
         if (!refio::read_exr_channel(limit_path, {"Y"}, limit, w, h, error)) {
-            std::fprintf(stderr, "ssao-error: %s\n", error.c_str());
+            std::fprintf(stderr, "ssao-error: error: %s\n", error.c_str());
             return 1;
         }
         if (w != rw || h != rh) {
-            std::fprintf(stderr, "ssao-error: %s is %dx%d, not %dx%d like the reference.\n", limit_path.c_str(), w, h, rw, rh);
+            std::fprintf(stderr, "ssao-error: error: %s is %dx%d, not %dx%d like the reference.\n", limit_path.c_str(), w, h, rw, rh);
             return 1;
         }
         if (has_cover && refio::exr_has_channel(limit_path, "A")) {
             if (!refio::read_exr_channel(limit_path, {"A"}, limit_cover, w, h, error)) {
-                std::fprintf(stderr, "ssao-error: %s\n", error.c_str());
+                std::fprintf(stderr, "ssao-error: error: %s\n", error.c_str());
                 return 1;
             }
             size_t differ = 0;
             for (size_t i = 0; i < cover.size(); ++i) differ += (cover[i] > 0.5f) != (limit_cover[i] > 0.5f);
             if (differ > 0) {
                 std::fprintf(stderr,
-                             "ssao-error: %s covers other pixels than the reference (%zu differ): it is not from the "
+                             "ssao-error: error: %s covers other pixels than the reference (%zu differ): it is not from the "
                              "same scene and camera.\n",
                              limit_path.c_str(), differ);
                 return 1;
@@ -201,7 +201,7 @@ static int run(int argc, char** argv) {
         if (!refio::read_exr_attributes(test_path, prefix, test_made, error) ||
             !refio::read_exr_attributes(ref_path, prefix, ref_made, error) ||
             (!limit_path.empty() && !refio::read_exr_attributes(limit_path, prefix, limit_made, error))) {
-            std::fprintf(stderr, "ssao-error: %s\n", error.c_str());
+            std::fprintf(stderr, "ssao-error: error: %s\n", error.c_str());
             return 1;
         }
         struct Pair {
@@ -220,7 +220,7 @@ static int run(int argc, char** argv) {
             const auto d = provenance::compare(*p.a, *p.b);
             if (d && !allow_mismatch) {
                 std::fprintf(stderr,
-                             "ssao-error: %s and %s were made with a different %s: %s vs %s (--allow-mismatch "
+                             "ssao-error: error: %s and %s were made with a different %s: %s vs %s (--allow-mismatch "
                              "compares them anyway).\n",
                              p.a_path->c_str(), p.b_path->c_str(), d->field.c_str(), d->a.c_str(), d->b.c_str());
                 return 1;
@@ -248,18 +248,18 @@ static int run(int argc, char** argv) {
         for (size_t i = 0; i < cover.size(); ++i) covered[i] = cover[i] > 0.5f;
     }
     auto refuse = [](const std::string& path, const std::string& why) {
-        std::fprintf(stderr, "ssao-error: %s: %s; it is not an AO image in [0, 1].\n", path.c_str(), why.c_str());
+        std::fprintf(stderr, "ssao-error: error: %s: %s; it is not an AO image in [0, 1].\n", path.c_str(), why.c_str());
         return 1;
     };
     if (const std::string why = aocheck::check_values(ref, rw, has_cover ? &covered : nullptr); !why.empty())
         return refuse(ref_path, why);
     metrics::Masks masks;
     if (!metrics::build_masks(in, masks, error)) {
-        std::fprintf(stderr, "ssao-error: %s.\n", error.c_str());
+        std::fprintf(stderr, "ssao-error: error: %s.\n", error.c_str());
         return 1;
     }
     if (std::find(masks.geometry.begin(), masks.geometry.end(), uint8_t(1)) == masks.geometry.end()) {
-        std::fprintf(stderr, "ssao-error: %s has no pixel to compare: all of it is sky (A = 0%s).\n", ref_path.c_str(),
+        std::fprintf(stderr, "ssao-error: error: %s has no pixel to compare: all of it is sky (A = 0%s).\n", ref_path.c_str(),
                      depth.empty() ? "" : ", or no finite depth");
         return 1;
     }
@@ -272,7 +272,7 @@ static int run(int argc, char** argv) {
     metrics::Split split;
     if (!metrics::compute(in, stats, error) ||
         (!limit.empty() && !metrics::compute_split(in, limit, limit_se.empty() ? nullptr : &limit_se, split, error))) {
-        std::fprintf(stderr, "ssao-error: %s.\n", error.c_str());
+        std::fprintf(stderr, "ssao-error: error: %s.\n", error.c_str());
         return 1;
     }
 
@@ -295,13 +295,13 @@ static int run(int argc, char** argv) {
         const bool fresh = !is_file(csv_path);
         std::ofstream csv(csv_path, std::ios::app);
         if (!csv) {
-            std::fprintf(stderr, "ssao-error: cannot write %s.\n", csv_path.c_str());
+            std::fprintf(stderr, "ssao-error: error: cannot write %s.\n", csv_path.c_str());
             return 1;
         }
         if (fresh) csv << metrics::csv_header();
         csv << (limit.empty() ? metrics::csv_rows(stats, label) : metrics::csv_rows(split, label));
         if (!csv) {
-            std::fprintf(stderr, "ssao-error: cannot write %s.\n", csv_path.c_str());
+            std::fprintf(stderr, "ssao-error: error: cannot write %s.\n", csv_path.c_str());
             return 1;
         }
     }
@@ -314,9 +314,9 @@ int main(int argc, char** argv) {
     try {
         return run(argc, argv);
     } catch (const std::bad_alloc&) {
-        std::fputs("ssao-error: out of memory (the images are too large for this machine).\n", stderr);
+        std::fputs("ssao-error: error: out of memory (the images are too large for this machine).\n", stderr);
     } catch (const std::exception& e) {
-        std::fprintf(stderr, "ssao-error: unexpected failure (%s).\n", e.what());
+        std::fprintf(stderr, "ssao-error: error: unexpected failure (%s).\n", e.what());
     }
     return 1;
 }

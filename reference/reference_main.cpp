@@ -89,7 +89,9 @@ std::string help_text() {
     "                     extras.ssao.radius, else 0.05 x the bounding-box diagonal)\n"
     "  --samples N        occlusion rays per pixel, 1..1048576 (default 1024)\n"
     "  --seed N           sample-pattern seed, 0..4294967295 (default 1)\n"
-    "  --eye x,y,z        camera position (default: the scene's camera, else framed from the bounds)\n"
+    "  --eye x,y,z        camera position (default as ssao-host: the scene's camera, else framed from\n"
+    "                     the bounds; without a scene argument, the bundled view of the cow, eye\n"
+    "                     2.3,1.6,-2.6 and target 0,0.65,0)\n"
     "  --target x,y,z     point the camera looks at\n"
     "  --fov DEG          vertical field of view in degrees, (0, 180)\n"
     "  --near N           near plane distance, > 0\n"
@@ -116,7 +118,9 @@ std::string help_text() {
     "Writes DIR/reference_ao.exr (Y = AO, A = coverage: 0 for sky, where Y = 1),\n"
     "DIR/reference_stderr.exr (Y = standard error of the mean per pixel) and DIR/reference_ao.png.\n"
     "AO is V_R: the cosine-weighted fraction of the hemisphere around the face normal with no hit\n"
-    "within the radius. Pixel centres, row 0 at the top, rays from inverse(projection * view).\n";
+    "within the radius. Pixel centres, row 0 at the top, rays from inverse(projection * view).\n"
+    "reference_ao.exr and limit_ao.exr record the scene, size, camera, radius (and the limit's\n"
+    "thickness) in their headers; ssao-error refuses to compare images whose records differ.\n";
 }
 
 enum class Parse { Run, Help, Version, Error };
@@ -212,7 +216,7 @@ static int run(int argc, char** argv) {
     switch (parse(argc, argv, o, error)) {
         case Parse::Help: std::fputs(help_text().c_str(), stdout); return 0;
         case Parse::Version: std::printf("%s\n", flags::version_line("ssao-reference").c_str()); return 0;
-        case Parse::Error: std::fprintf(stderr, "ssao-reference: %s.\n", error.c_str()); return 2;
+        case Parse::Error: std::fprintf(stderr, "ssao-reference: error: %s.\n", error.c_str()); return 2;
         case Parse::Run: break;
     }
     const bool bundled_scene = o.scene_path.empty();
@@ -222,7 +226,7 @@ static int run(int argc, char** argv) {
     scene::Limits limits;
     limits.allow_outside_files = o.allow_outside_files;
     if (!scene::load(o.scene_path, sc, error, limits)) {
-        std::fprintf(stderr, "ssao-reference: %s\n", error.c_str());
+        std::fprintf(stderr, "ssao-reference: error: %s\n", error.c_str());
         return 1;
     }
     const float aspect = float(o.width) / float(o.height);
@@ -242,13 +246,13 @@ static int run(int argc, char** argv) {
     }
 
     if (!make_dirs(o.out_dir, error)) {
-        std::fprintf(stderr, "ssao-reference: %s\n", error.c_str());
+        std::fprintf(stderr, "ssao-reference: error: %s\n", error.c_str());
         return 1;
     }
 
     raytrace::Tracer tracer(sc.mesh);
     if (!tracer.ok()) {
-        std::fprintf(stderr, "ssao-reference: the ray tracer could not be built: %s.\n", tracer.error().c_str());
+        std::fprintf(stderr, "ssao-reference: error: the ray tracer could not be built: %s.\n", tracer.error().c_str());
         return 1;
     }
     std::printf("scene     %s: %zu triangles, bounds (%g, %g, %g) .. (%g, %g, %g)\n", o.scene_path.c_str(),
@@ -274,7 +278,7 @@ static int run(int argc, char** argv) {
     ro.progress = !o.quiet;
     raytrace::Image img;
     if (!tracer.render(cam, ro, img, error)) {
-        std::fprintf(stderr, "ssao-reference: %s.\n", error.c_str());
+        std::fprintf(stderr, "ssao-reference: error: %s.\n", error.c_str());
         return 1;
     }
 
@@ -293,7 +297,7 @@ static int run(int argc, char** argv) {
                     lo.directions, depth_limit::kReplicas);
         std::fflush(stdout);
         if (!depth_limit::compute(cam, img, lo, limit, error)) {
-            std::fprintf(stderr, "ssao-reference: %s.\n", error.c_str());
+            std::fprintf(stderr, "ssao-reference: error: %s.\n", error.c_str());
             return 1;
         }
     }
@@ -343,7 +347,7 @@ static int run(int argc, char** argv) {
              exr("limit_stderr.exr", {{"Y", &limit.std_error}}) && png("limit_ao.png", limit.ao);
     if (!ok) {
         undo();
-        std::fprintf(stderr, "ssao-reference: %s\n", error.c_str());
+        std::fprintf(stderr, "ssao-reference: error: %s\n", error.c_str());
         return 1;
     }
 
@@ -399,9 +403,9 @@ int main(int argc, char** argv) {
     try {
         return run(argc, argv);
     } catch (const std::bad_alloc&) {
-        std::fputs("ssao-reference: out of memory (the image size or the scene is too large for this machine).\n", stderr);
+        std::fputs("ssao-reference: error: out of memory (the image size or the scene is too large for this machine).\n", stderr);
     } catch (const std::exception& e) {
-        std::fprintf(stderr, "ssao-reference: unexpected failure (%s).\n", e.what());
+        std::fprintf(stderr, "ssao-reference: error: unexpected failure (%s).\n", e.what());
     }
     return 1;
 }
