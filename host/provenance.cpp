@@ -6,12 +6,20 @@
 namespace provenance {
 namespace {
 
-// Six significant digits: what both tools compute from the same inputs
+// Six significant digits (the stream's default): what both tools compute from the same inputs
 // agrees to far more, and the values stay readable in a header dump.
 std::string num(double v) {
     if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
     std::ostringstream s;
     s << v;
+    return s.str();
+}
+
+// Five digits: the default 0.7854 rad and --fov 45 both read "45".
+std::string fov(float radians) {
+    std::ostringstream s;
+    s.precision(5);
+    s << glm::degrees(double(radians));
     return s.str();
 }
 
@@ -31,13 +39,13 @@ Fields describe(const std::string& scene_path, int width, int height, const came
         {p + "scene", file_name(scene_path)},
         {p + "size", std::to_string(width) + "x" + std::to_string(height)},
         {p + "projection", c.orthographic ? "orthographic half-height " + num(c.ortho_half_height)
-                                          : "perspective fov " + num(glm::degrees(double(c.yfov))) + " deg"},
-        {p + "near", num(c.znear)},
-        {p + "far", num(c.zfar)},
-        {p + "depth", c.reverse_z ? "reverse-Z [0,1]" : c.zero_to_one ? "[0,1]" : "[-1,1]"},
+                                          : "perspective fov " + fov(c.yfov) + " deg"},
         {p + "eye", vec(c.eye)},
         {p + "target", vec(c.target)},
         {p + "up", vec(c.up)},
+        {p + "near", num(c.znear)},
+        {p + "far", num(c.zfar)},
+        {p + "depth", c.reverse_z ? "reverse-Z [0,1]" : c.zero_to_one ? "[0,1]" : "[-1,1]"},
         {p + "radius", num(radius)},
     };
     if (thickness) f.emplace_back(p + "thickness", num(*thickness));

@@ -29,7 +29,9 @@ struct Difference {
     std::string a, b;    // the two values
 };
 
-// The first field present in both `a` and `b` whose values differ. A field
+// The first field present in both `a` and `b` whose values differ, in
+// describe()'s order (what was chosen before what follows from it: the eye
+// before the near plane fitted to it). A field
 // only one of them has (thickness, say) is not compared.
 std::optional<Difference> compare(const Fields& a, const Fields& b);
 
