@@ -45,7 +45,7 @@ check "ssao-error --lable: did you mean --label?" expect_usage_error "$error" "d
 check "ssao-bench --frmes: did you mean --frames?" expect_usage_error "$bench" "did you mean --frames?" --frmes 3
 check "ssao-host --zzzzzz: no guess" bash -c '! "$1" --zzzzzz 2>&1 | grep -q "did you mean"' _ "$host"
 if [ -n "$viewer" ]; then
-  check "ssao-viewer --bogus: one line, '''ssao-viewer: error: '''" bash -c \
+  check "ssao-viewer --bogus: the line starts ssao-viewer: error:" bash -c \
     '"$1" --bogus 2>&1 >/dev/null | grep -q "^ssao-viewer: error: unknown flag"' _ "$viewer"
   check "ssao-viewer --widht: did you mean --width?" expect_usage_error "$viewer" "did you mean --width?" --widht 9
   # One list of preset names: ssao-host took chapter, ssao-viewer refused it.
