@@ -2,7 +2,6 @@
 // ssao-host and ssao-viewer start from the same scene, settings and camera.
 #include "run_setup.h"
 
-#include "locate.h"
 
 #include <cfloat>
 #include <cmath>
