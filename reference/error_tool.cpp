@@ -194,7 +194,7 @@ static int run(int argc, char** argv) {
     }
 
     // The images must show the same thing: compare what their headers record.
-    std::string unchecked;
+    std::vector<std::string> bare;   // images that record nothing: compared unchecked
     {
         const std::string prefix = provenance::kPrefix;
         refio::Attributes test_made, ref_made, limit_made;
@@ -214,7 +214,8 @@ static int run(int argc, char** argv) {
         if (!limit_path.empty()) pairs.push_back({&limit_path, &limit_made, &ref_path, &ref_made});
         for (const Pair& p : pairs) {
             if (p.a->empty() || p.b->empty()) {
-                unchecked += (unchecked.empty() ? "" : ", ") + *(p.a->empty() ? p.a_path : p.b_path);
+                for (const auto& [path, made] : {std::make_pair(p.a_path, p.a), std::make_pair(p.b_path, p.b)})
+                    if (made->empty() && std::find(bare.begin(), bare.end(), *path) == bare.end()) bare.push_back(*path);
                 continue;
             }
             const auto d = provenance::compare(*p.a, *p.b);
@@ -280,9 +281,9 @@ static int run(int argc, char** argv) {
     std::printf("reference  %s%s%s\n", ref_path.c_str(), se.empty() ? ", no standard-error image" : "",
                 depth.empty() ? ", silhouettes from sky/AO edges" : ", silhouettes from its depth");
     if (!limit.empty()) std::printf("limit      %s\n", limit_path.c_str());
-    if (!unchecked.empty())
+    for (const std::string& path : bare)
         std::printf("note       %s records no scene and camera (older file or another program): not checked\n",
-                    unchecked.c_str());
+                    path.c_str());
     std::printf("bands      %d px\n\n", band);
     std::fputs(metrics::table(stats).c_str(), stdout);
     if (!limit.empty()) {
