@@ -20,7 +20,7 @@ int main(int argc, char** argv) {
     bench::Options o;
     std::string error;
     switch (bench::parse(argc, argv, o, error)) {
-        case bench::Parse::Error: std::fprintf(stderr, "ssao-bench: %s\n", error.c_str()); return 2;
+        case bench::Parse::Error: std::fprintf(stderr, "ssao-bench: error: %s\n", error.c_str()); return 2;
         case bench::Parse::Help: std::fputs(bench::help_text().c_str(), stdout); return 0;
         case bench::Parse::Version: std::printf("%s\n", flags::version_line("ssao-bench").c_str()); return 0;
         case bench::Parse::Run: break;
@@ -39,7 +39,7 @@ int main(int argc, char** argv) {
             }
         bench::write_report(o, rows);
     } catch (const std::exception& e) {
-        std::fprintf(stderr, "ssao-bench: %s\n", e.what());
+        std::fprintf(stderr, "ssao-bench: error: %s\n", e.what());
         return 1;
     }
     return 0;

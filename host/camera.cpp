@@ -118,6 +118,29 @@ Camera apply(const scene::Scene& s, Camera c, const Overrides& o) {
     return c;
 }
 
+const glm::vec3 kBundledEye(2.3f, 1.6f, -2.6f), kBundledTarget(0.0f, 0.65f, 0.0f);
+
+Camera initial(const scene::Scene& s, float aspect, const Overrides& o, bool bundled_scene, Source* source) {
+    Overrides ov = o;
+    Source from = s.camera ? Source::Scene : Source::Framed;
+    if (bundled_scene && !ov.eye && !ov.target && !ov.ortho_half_height) {
+        ov.eye = kBundledEye;
+        ov.target = kBundledTarget;
+        from = Source::Bundled;
+    }
+    if (source) *source = from;
+    return apply(s, choose(s, aspect), ov);
+}
+
+const char* describe(Source s) {
+    switch (s) {
+        case Source::Scene: return "the scene's camera";
+        case Source::Framed: return "framed from the bounds";
+        case Source::Bundled: return "the bundled view of the cow";
+    }
+    return "?";
+}
+
 glm::mat4 view_matrix(const Camera& c) {
     glm::vec3 f = c.target - c.eye;
     if (!(glm::length(f) > 0.0f)) f = glm::vec3(0.0f, 0.0f, -1.0f);

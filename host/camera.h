@@ -40,6 +40,23 @@ struct Overrides {
 // were not given, near and far are refitted to the scene's bounds (as choose does).
 Camera apply(const scene::Scene& s, Camera c, const Overrides& o);
 
+// Where the starting camera came from.
+enum class Source { Scene, Framed, Bundled };
+
+// The bundled scene's three-quarter view of the cow (its bounds are dominated
+// by the 8 x 8 ground, so framing them shows a small cow).
+extern const glm::vec3 kBundledEye, kBundledTarget;
+
+// The camera every tool starts from (ssao-host, ssao-reference, ssao-viewer):
+// the scene's camera, else one framed from its bounds; but for the bundled
+// scene (`bundled_scene`: no scene argument given) without --eye, --target or
+// --ortho, the bundled view kBundledEye -> kBundledTarget. Then the overrides.
+// `source` (optional) receives which of the three it was.
+Camera initial(const scene::Scene& s, float aspect, const Overrides& o, bool bundled_scene, Source* source = nullptr);
+
+// "the scene's camera", "framed from the bounds" or "the bundled view of the cow".
+const char* describe(Source s);
+
 glm::mat4 view_matrix(const Camera& c);
 // Column-major GL projection honouring orthographic, reverse_z, zero_to_one and
 // an infinite zfar.

@@ -44,9 +44,6 @@ const std::vector<std::pair<const char*, ssao_output_format>> kOutputs = {
     {"r8", SSAO_OUTPUT_R8}, {"r16f", SSAO_OUTPUT_R16F}};
 const std::vector<std::pair<const char*, ssao_method>> kMethods = {
     {"kernel", SSAO_METHOD_KERNEL}, {"visibility", SSAO_METHOD_VISIBILITY}};
-const std::vector<std::pair<const char*, ssao_preset>> kPresets = {
-    {"low", SSAO_PRESET_LOW}, {"medium", SSAO_PRESET_MEDIUM}, {"high", SSAO_PRESET_HIGH}, {"ultra", SSAO_PRESET_ULTRA},
-    {"chapter", SSAO_PRESET_CHAPTER}};
 const std::vector<std::pair<const char*, DepthFormat>> kDepths = {
     {"d16", DepthFormat::D16}, {"d24", DepthFormat::D24}, {"d32f", DepthFormat::D32F}};
 
@@ -136,7 +133,10 @@ ParseResult parse(int argc, const char* const* argv, Options& o, std::string& er
         {"--only", [&](const std::string& f, const std::string& v) {
              o.only_ao = parse_choice<bool>(f, v, {{"ao", true}, {"all", false}});
          }},
-        {"--preset", [&](const std::string& f, const std::string& v) { o.preset = parse_choice(f, v, kPresets); }},
+        {"--preset", [&](const std::string& f, const std::string& v) {
+             o.preset = preset_text::parse(v);
+             if (!o.preset) fail(f + " expects one of " + preset_text::choices() + ", got " + quoted(v));
+         }},
         {"--samples", [&](const std::string& f, const std::string& v) {
              o.samples = static_cast<int>(flags::integer(f, v, 1, SSAO_MAX_SAMPLES));
          }},
@@ -263,7 +263,9 @@ std::string help_text(const ssao_settings* d, const std::string& default_scene, 
          "  --allow-outside-files   let the scene's buffer URIs name files outside its folder (absolute\n"
          "                          paths, '..', symbolic links leading out); refused by default\n"
          "\n"
-         "Camera (default: the scene's camera, else framed from the scene bounds)\n"
+         "Camera (default: the scene's camera, else framed from the scene bounds; without a scene argument,\n"
+         "the bundled view of the cow, eye 2.3,1.6,-2.6 and target 0,0.65,0. ssao-reference and ssao-viewer\n"
+         "start from the same camera; ao.exr records it for ssao-error)\n"
          "  --eye x,y,z --target x,y,z\n"
          "  --fov DEG               vertical field of view, (0, 180)\n"
          "  --near N --far F        clip planes; --far inf for an infinite far plane\n"

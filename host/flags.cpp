@@ -3,8 +3,10 @@
 #include <ssao/ssao.h>
 #include <ssao_project_version.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <limits>
 #include <sstream>
@@ -85,6 +87,57 @@ void check_normal_float(const std::string& flag, const std::string& text, double
     }
 }
 
+namespace {
+
+size_t edit_distance(const std::string& a, const std::string& b) {
+    std::vector<size_t> row(b.size() + 1);
+    for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
+    for (size_t i = 1; i <= a.size(); ++i) {
+        size_t diagonal = row[0];
+        row[0] = i;
+        for (size_t j = 1; j <= b.size(); ++j) {
+            const size_t above = row[j];
+            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+            diagonal = above;
+        }
+    }
+    return row[b.size()];
+}
+
+}  // namespace
+
+std::string suggestion(const std::string& unknown, const std::vector<std::string>& known) {
+    std::vector<std::string> prefixed;
+    for (const auto& k : known)
+        if (k.size() > unknown.size() && k.compare(0, unknown.size(), unknown) == 0) prefixed.push_back(k);
+    // "--" or "-" alone is a prefix of everything: not a guess.
+    // Several: the shortest when the others extend it (--rad: --radius, not --radius-pixels).
+    std::sort(prefixed.begin(), prefixed.end(), [](const std::string& a, const std::string& b) { return a.size() < b.size(); });
+    const bool nested = std::all_of(prefixed.begin(), prefixed.end(),
+                                    [&](const std::string& k) { return !prefixed.empty() && k.rfind(prefixed[0], 0) == 0; });
+    if (!prefixed.empty() && nested && unknown.size() > 2) return prefixed[0];
+    size_t best = 3;
+    std::vector<std::string> closest;
+    for (const auto& k : known) {
+        const size_t d = edit_distance(unknown, k);
+        if (d < best) {
+            best = d;
+            closest = {k};
+        } else if (d == best) {
+            closest.push_back(k);
+        }
+    }
+    return closest.size() == 1 ? closest[0] : std::string();
+}
+
+void print_error(const std::string& tool, const std::string& message) {
+    std::string m = message;
+    for (char& c : m)
+        if (c == '\n' || c == '\r') c = ' ';
+    while (!m.empty() && m.back() == ' ') m.pop_back();
+    std::fprintf(stderr, "%s: error: %s\n", tool.c_str(), m.c_str());
+}
+
 Outcome walk(int argc, const char* const* argv, const Valued& valued, const Switches& switches,
              const Positional& positional) {
     bool help = false, version = false;
@@ -113,7 +166,14 @@ Outcome walk(int argc, const char* const* argv, const Valued& valued, const Swit
                 continue;
             }
             auto h = valued.find(arg);
-            if (h == valued.end()) fail("unknown flag " + quoted(arg) + " (see --help)");
+            if (h == valued.end()) {
+                std::vector<std::string> known = {"--help", "--version"};
+                for (const auto& v : valued) known.push_back(v.first);
+                for (const auto& w : switches) known.push_back(w.first);
+                const std::string guess = suggestion(arg, known);
+                fail("unknown flag " + quoted(arg) + (guess.empty() ? "" : "; did you mean " + guess + "?") +
+                     " (see --help)");
+            }
             if (!has_value) {
                 if (i + 1 >= argc) fail(arg + " needs a value");
                 value = argv[++i];

@@ -9,6 +9,7 @@
 #include <functional>
 #include <map>
 #include <string>
+#include <vector>
 
 namespace flags {
 
@@ -45,12 +46,22 @@ enum class Outcome {
 
 // Walks argv[1..]: valued flags take the next argument or "=value", switches
 // take none; anything else goes to `positional` (an empty Positional refuses
-// it). --help wins over --version. Throws Error.
+// it). --help wins over --version. An unknown flag is refused with the
+// tool's closest flag suggested (suggestion()). Throws Error.
 Outcome walk(int argc, const char* const* argv, const Valued& valued, const Switches& switches,
              const Positional& positional);
 // The same, for tools whose one optional positional argument is a scene file.
 Outcome walk(int argc, const char* const* argv, const Valued& valued, const Switches& switches,
              std::string& scene_path);
+
+// The flag of `known` that `unknown` most likely meant: the only one it is a
+// prefix of, else the only one within 2 edits (insert, delete, replace a
+// character); empty when none or several are that close.
+std::string suggestion(const std::string& unknown, const std::vector<std::string>& known);
+
+// Every tool's error line on stderr: "TOOL: error: MESSAGE\n", the message's
+// line breaks made spaces so that it stays one line.
+void print_error(const std::string& tool, const std::string& message);
 
 // "TOOL 1.0.0 (C ABI 1.0)": the project version from CMake's project() and
 // the interface version of include/ssao/ssao.h. Ends without a newline.

@@ -4,6 +4,7 @@
 #define STB_IMAGE_WRITE_IMPLEMENTATION
 #include <stb/stb_image_write.h>
 
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -16,6 +17,31 @@
 namespace image_io {
 
 namespace fs = std::filesystem;
+
+void check_output_dir(const std::string& dir) {
+    std::error_code ec;
+    if (fs::exists(dir, ec) && !fs::is_directory(dir, ec))
+        throw std::runtime_error("the output path '" + dir + "' exists and is not a directory");
+    // The nearest folder that exists: where the first write (a file, or the
+    // missing folders) will happen.
+    fs::path existing = fs::absolute(dir, ec).lexically_normal();
+    while (!existing.empty() && !fs::exists(existing, ec) && existing != existing.parent_path())
+        existing = existing.parent_path();
+    if (!fs::is_directory(existing, ec))
+        throw std::runtime_error("the output directory '" + dir + "' cannot be created: '" + existing.string() +
+                                 "' is not a directory");
+    // Permission bits do not tell (root, read-only mounts, ACLs): try it.
+    const fs::path probe = existing / (".ssao-write-test-" + std::to_string(getpid()));
+    if (::mkdir(probe.c_str(), 0700) != 0) {
+        const int why = errno;
+        throw std::runtime_error(
+            (existing == fs::absolute(dir, ec).lexically_normal() ? "the output directory '" + dir + "' is not writable"
+                                                                   : "the output directory '" + dir + "' cannot be created in '" +
+                                                                         existing.string() + "'") +
+            " (" + std::strerror(why) + ")");
+    }
+    ::rmdir(probe.c_str());
+}
 
 StagedOutput::StagedOutput(const std::string& dir) : dir_(dir) {
     std::error_code ec;
@@ -42,7 +68,8 @@ void StagedOutput::png(const std::string& name, int width, int height, int chann
         throw std::runtime_error("cannot write '" + tmp + "' (disk full or directory not writable?)");
 }
 
-void StagedOutput::exr(const std::string& name, int width, int height, const std::vector<float>& pixels) {
+void StagedOutput::exr(const std::string& name, int width, int height, const std::vector<float>& pixels,
+                       const std::vector<std::pair<std::string, std::string>>& attributes) {
     const std::string tmp = temp_path(name);
     staged_.emplace_back(tmp, (fs::path(dir_) / name).string());
     EXRHeader header;
@@ -58,6 +85,16 @@ void StagedOutput::exr(const std::string& name, int width, int height, const std
     header.pixel_types = &pixel_type;
     header.requested_pixel_types = &pixel_type;
     header.compression_type = TINYEXR_COMPRESSIONTYPE_ZIP;
+    std::vector<EXRAttribute> custom(attributes.size());
+    for (size_t i = 0; i < attributes.size(); ++i) {
+        std::memset(&custom[i], 0, sizeof custom[i]);
+        std::strncpy(custom[i].name, attributes[i].first.c_str(), sizeof custom[i].name - 1);
+        std::strcpy(custom[i].type, "string");
+        custom[i].value = reinterpret_cast<unsigned char*>(const_cast<char*>(attributes[i].second.data()));
+        custom[i].size = static_cast<int>(attributes[i].second.size());
+    }
+    header.num_custom_attributes = static_cast<int>(custom.size());
+    header.custom_attributes = custom.empty() ? nullptr : custom.data();
     float* planes[1] = {const_cast<float*>(pixels.data())};
     image.num_channels = 1;
     image.images = reinterpret_cast<unsigned char**>(planes);

@@ -6,9 +6,16 @@
 
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace image_io {
+
+// Throws std::runtime_error with one sentence unless files can be written to
+// `dir`: it is a writable directory, or it is missing and its nearest existing
+// parent is one (then nothing is created; StagedOutput creates it). Run
+// before rendering, so an unwritable --out fails at once.
+void check_output_dir(const std::string& dir);
 
 class StagedOutput {
 public:
@@ -20,8 +27,10 @@ public:
 
     // channels 1 (grey) or 3 (RGB), 8 bits. Throws std::runtime_error.
     void png(const std::string& name, int width, int height, int channels, const std::vector<uint8_t>& pixels);
-    // One 32-bit float channel named "Y". Throws std::runtime_error.
-    void exr(const std::string& name, int width, int height, const std::vector<float>& pixels);
+    // One 32-bit float channel named "Y", with `attributes` (name, value) as
+    // string attributes in the header. Throws std::runtime_error.
+    void exr(const std::string& name, int width, int height, const std::vector<float>& pixels,
+             const std::vector<std::pair<std::string, std::string>>& attributes = {});
     // Renames every staged file to its final name. Throws std::runtime_error.
     void commit();
 

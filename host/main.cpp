@@ -14,6 +14,7 @@
 #include "modes.h"
 #include "plugin_loader.h"
 #include "preset_text.h"
+#include "provenance.h"
 #include "run_setup.h"
 #include "scene.h"
 
@@ -156,16 +157,17 @@ uint64_t bytes_needed(int w, int h, bool full, bool sheet) {
 // ------------------------------------------------------------------- run
 int run(const cli::Options& o) {
     const int W = o.width, H = o.height;
-    const std::string scene_path = o.scene_path.empty() ? run_setup::default_scene_path() : o.scene_path;
+    const std::string scene_path = o.scene_path.empty() ? scene::default_path() : o.scene_path;
     {
         std::error_code ec;
-        if (fs::exists(o.out_dir, ec) && !fs::is_directory(o.out_dir, ec))
-            throw RunError("the output path '" + o.out_dir + "' exists and is not a directory");
         if (o.scene_path.empty() && !fs::exists(scene_path, ec))
             throw RunError("the bundled scene '" + scene_path + "' is missing (looked in $SSAO_DATA_DIR, " +
                            "<program>/../share/ssao and, for an uninstalled build, the source tree); " +
                            "pass a .gltf or .glb file");
     }
+    // Before anything is rendered: an unwritable --out would otherwise be
+    // found only when the files are written.
+    image_io::check_output_dir(o.out_dir);
     const bool full = !o.only_ao;
     const bool sheet = o.sheet.value_or(full);
 
@@ -192,8 +194,8 @@ int run(const cli::Options& o) {
     std::string radius_note;
     const ssao_settings settings = run_setup::build_settings(api, o, sc, radius_note);
     const float aspect = static_cast<float>(W) / static_cast<float>(H);
-    bool camera_from_scene = false;
-    const camera::Camera cam = run_setup::build_camera(o, sc, aspect, camera_from_scene);
+    camera::Source camera_source = camera::Source::Framed;
+    const camera::Camera cam = run_setup::build_camera(o, sc, aspect, camera_source);
     const glm::mat4 view = camera::view_matrix(cam);
     const glm::mat4 projection = camera::projection_matrix(cam, aspect);
     for (int i = 0; i < 16; ++i)
@@ -416,7 +418,11 @@ int run(const cli::Options& o) {
     // Write everything under temporary names, then rename them all.
     image_io::StagedOutput files(o.out_dir);
     files.png("ao.png", W, H, 1, to_bytes(ao));
-    files.exr("ao.exr", W, H, ao);
+    // What the picture was made with, for ssao-error to check against a reference.
+    files.exr("ao.exr", W, H, ao,
+              provenance::describe(scene_path, W, H, cam, settings.radius,
+                                   settings.method == SSAO_METHOD_VISIBILITY ? std::optional<double>(settings.thickness)
+                                                                             : std::nullopt));
     if (full) {
         files.png("lit_ao.png", W, H, 3, lit_ao);
         files.png("lit_no_ao.png", W, H, 3, lit_no_ao);
@@ -439,7 +445,7 @@ int run(const cli::Options& o) {
                 : o.normal_space == cli::NormalSpace::World ? "world" : "view",
                 o.normal_format == cli::NormalFormat::RGBA8 ? "rgba8" : "rgba16f");
     std::printf("  camera: %s, %s, eye %s, target %s, near %s, far %s%s\n",
-                (std::string(camera_from_scene ? "the scene's" : "framed from the bounds") +
+                (std::string(camera::describe(camera_source)) +
                  (o.cam.eye || o.cam.target || o.cam.fov_deg || o.cam.znear || o.cam.zfar || o.cam.ortho_half_height || o.cam.reverse_z
                       ? " with flag overrides"
                       : ""))
@@ -490,7 +496,7 @@ int main(int argc, char** argv) {
     std::string error;
     switch (cli::parse(argc, argv, options, error)) {
         case cli::ParseResult::Error:
-            std::fprintf(stderr, "ssao-host: %s\n", error.c_str());
+            flags::print_error("ssao-host", error);
             return 2;
         case cli::ParseResult::Help: {
             // Defaults come from the plugin itself (a zeroed struct resolved),
@@ -509,7 +515,7 @@ int main(int argc, char** argv) {
                     have = library.api().preset_settings(preset_text::kPresetOrder[i], &presets[i]) == SSAO_OK;
                 }
             }
-            std::fputs(cli::help_text(have ? &defaults : nullptr, run_setup::default_scene_path(), have ? presets : nullptr)
+            std::fputs(cli::help_text(have ? &defaults : nullptr, scene::default_path(), have ? presets : nullptr)
                            .c_str(),
                        stdout);
             return 0;
@@ -521,12 +527,8 @@ int main(int argc, char** argv) {
         return run(options);
     } catch (const std::exception& e) {
         // One line on stderr, whatever the message (loaders may embed newlines).
-        std::string message = e.what();
-        for (char& c : message)
-            if (c == '\n' || c == '\r') c = ' ';
-        while (!message.empty() && message.back() == ' ') message.pop_back();
         std::fflush(stdout);
-        std::fprintf(stderr, "ssao-host: error: %s\n", message.c_str());
+        flags::print_error("ssao-host", e.what());
         return 1;
     }
 }

@@ -44,4 +44,16 @@ const char* name(ssao_preset p) {
     }
 }
 
+std::optional<ssao_preset> parse(const std::string& text) {
+    for (const ssao_preset p : kPresetOrder)
+        if (text == name(p)) return p;
+    return std::nullopt;
+}
+
+std::string choices() {
+    std::string list;
+    for (const ssao_preset p : kPresetOrder) list += std::string(list.empty() ? "" : "|") + name(p);
+    return list;
+}
+
 }  // namespace preset_text

@@ -7,6 +7,7 @@
 
 #include <ssao/ssao.h>
 
+#include <optional>
 #include <string>
 
 namespace preset_text {
@@ -20,5 +21,12 @@ constexpr int kPresetCount = 5;
 
 // "low", "medium", "high", "ultra", "chapter" (DEFAULT: "medium").
 const char* name(ssao_preset preset);
+
+// The preset a --preset NAME means (every tool's list: kPresetOrder's names);
+// empty for any other text.
+std::optional<ssao_preset> parse(const std::string& name);
+
+// "low|medium|high|ultra|chapter", for messages and help texts.
+std::string choices();
 
 }  // namespace preset_text

@@ -2,7 +2,6 @@
 // ssao-host and ssao-viewer start from the same scene, settings and camera.
 #include "run_setup.h"
 
-#include "locate.h"
 
 #include <cfloat>
 #include <cmath>
@@ -20,10 +19,6 @@ std::string fmt(double v) {
 }
 
 }  // namespace
-
-// The bundled scene: <prefix>/share/ssao beside an installed program, the
-// source tree's assets/ for an uninstalled build (locate::data_dir).
-std::string default_scene_path() { return locate::bundled("models/spot-on-ground.glb"); }
 
 // Precedence: flags > scene hints > preset > plugin defaults. The radius is
 // scene-scaled (scene::ao_radius: the scene's hint, else 0.05 x its diagonal).
@@ -127,19 +122,8 @@ ssao_settings build_settings(const ssao_api& api, const cli::Options& o, const s
     return resolved;
 }
 
-const glm::vec3 kBundledEye(2.3f, 1.6f, -2.6f), kBundledTarget(0.0f, 0.65f, 0.0f);
-
-camera::Camera build_camera(const cli::Options& o, const scene::Scene& sc, float aspect, bool& from_scene) {
-    from_scene = sc.camera.has_value();
-    camera::Overrides ov = o.cam;
-    // The bundled scene's bounds are dominated by its 8 x 8 ground, so framing
-    // them shows a small cow: without a scene argument and without camera
-    // flags, look at the cow from a three-quarter view instead.
-    if (o.scene_path.empty() && !ov.eye && !ov.target && !ov.ortho_half_height) {
-        ov.eye = kBundledEye;
-        ov.target = kBundledTarget;
-    }
-    const camera::Camera c = camera::apply(sc, camera::choose(sc, aspect), ov);
+camera::Camera build_camera(const cli::Options& o, const scene::Scene& sc, float aspect, camera::Source& source) {
+    const camera::Camera c = camera::initial(sc, aspect, o.cam, o.scene_path.empty(), &source);
     if (!(glm::length(c.target - c.eye) > 0.0f)) throw Error("the camera's eye and target are the same point");
     if (c.orthographic && std::isinf(c.zfar)) throw Error("an orthographic camera needs a finite far plane");
     if (!c.orthographic && !(c.znear > 0.0f)) throw Error("the near plane " + fmt(c.znear) + " must be > 0");

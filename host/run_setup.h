@@ -22,21 +22,13 @@ struct Error : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
-// The scene used when none is given (assets/models/spot-on-ground.glb).
-std::string default_scene_path();
-
 // The resolved settings. Precedence: flags > scene hints > preset > plugin
 // defaults; the radius is scene-scaled (scene::ao_radius). `radius_note` says
 // where the radius came from. Throws Error.
 ssao_settings build_settings(const ssao_api& api, const cli::Options& o, const scene::Scene& sc, std::string& radius_note);
 
-// The bundled scene's three-quarter view of the cow (its bounds are dominated
-// by the 8 x 8 ground, so framing them shows a small cow).
-extern const glm::vec3 kBundledEye, kBundledTarget;
-
-// The scene's camera or one framed from its bounds (the bundled view for the
-// bundled scene without camera flags), with the flags' overrides; validated.
-// `from_scene` tells whether the glTF had a camera. Throws Error.
-camera::Camera build_camera(const cli::Options& o, const scene::Scene& sc, float aspect, bool& from_scene);
+// camera::initial for these options (the bundled view when no scene was
+// given), validated. `source` receives where it came from. Throws Error.
+camera::Camera build_camera(const cli::Options& o, const scene::Scene& sc, float aspect, camera::Source& source);
 
 }  // namespace run_setup

@@ -9,6 +9,7 @@
 
 #include "gltf_files.h"
 #include "input_file.h"
+#include "locate.h"
 
 #include <cstdio>
 
@@ -487,7 +488,18 @@ void read_hints(const tinygltf::Value& extras, AoHints& h) {
     if (!h.blur && s.Has("blur") && s.Get("blur").IsString()) h.blur = s.Get("blur").Get<std::string>();
 }
 
+// A JSON object: its first byte after an optional UTF-8 byte order mark and
+// white space is '{'.
+bool looks_like_json(const std::vector<unsigned char>& bytes) {
+    size_t i = 0;
+    if (bytes.size() >= 3 && bytes[0] == 0xEF && bytes[1] == 0xBB && bytes[2] == 0xBF) i = 3;
+    while (i < bytes.size() && (bytes[i] == ' ' || bytes[i] == '\t' || bytes[i] == '\n' || bytes[i] == '\r')) ++i;
+    return i < bytes.size() && bytes[i] == '{';
+}
+
 }  // namespace
+
+std::string default_path() { return locate::bundled("models/spot-on-ground.glb"); }
 
 bool load(const std::string& path, Scene& out, std::string& error, const Limits& limits) {
     error.clear();
@@ -515,6 +527,13 @@ bool load_from_memory(const std::vector<unsigned char>& bytes, const std::string
             error = path + ": the file " + why + ".";
             return false;
         }
+    }
+    // Anything else (an .obj, a PNG) would reach tinygltf's JSON parser and
+    // come back as a raw parse error: say what the tools read instead.
+    if (!binary && !looks_like_json(bytes)) {
+        error = path + ": not a glTF scene; the tools read glTF 2.0 only (a .gltf JSON file or a .glb binary)" +
+                (ends_with_ci(path, ".gltf") ? std::string() : ", converted with e.g. Blender or obj2gltf") + ".";
+        return false;
     }
     // The JSON text: all of a .gltf, the first chunk of a .glb (check_glb
     // has checked its length against the file).

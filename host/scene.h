@@ -64,6 +64,11 @@ struct AoRadius {
 constexpr float kAoRadiusPerDiagonal = 0.05f;
 std::optional<AoRadius> ao_radius(const Scene& s);
 
+// The scene every tool uses when none is given: the bundled
+// models/spot-on-ground.glb (locate::bundled). With it and no camera flags the
+// tools start from camera::kBundledEye (camera::initial).
+std::string default_path();
+
 // Loads .gltf or .glb. On failure returns false and sets `error` to one
 // sentence naming the problem (missing file, malformed JSON, truncated glb,
 // accessor past its buffer, non-triangle primitive, nothing to draw, ...).

@@ -20,6 +20,7 @@
 #include "flags.h"
 #include "image_io.h"
 #include "metrics.h"
+#include "provenance.h"
 
 #include <algorithm>
 #include <cerrno>
@@ -51,12 +52,19 @@ const char* kHelp =
     "  --band K          width in pixels of the silhouette and screen-border bands, 0..256 (default 3)\n"
     "  --csv FILE        append one row per mask to FILE (header written when FILE is new)\n"
     "  --label TEXT      first CSV column (default: TEST's path)\n"
+    "  --allow-mismatch  compare even when the images' headers say they were made with different\n"
+    "                    scenes, sizes, cameras, radii or thicknesses (refused by default)\n"
     "  --help, -h        this text\n"
     "  --version         the version\n"
     "\n"
     "Masks (sky always excluded): all; silhouette = within K px of a depth discontinuity or sky edge;\n"
     "border = within K px of the image edge; interior = the rest. 'ref noise' is the mean reference\n"
-    "standard error and 'noise rms' the RMSE its noise alone would give: errors near it are noise.\n";
+    "standard error and 'noise rms' the RMSE its noise alone would give: errors near it are noise.\n"
+    "\n"
+    "ssao-host and ssao-reference record in their EXR headers what an image was made with (ssao:scene,\n"
+    "size, projection, near, far, depth, eye, target, up, radius, thickness). ssao-error compares the\n"
+    "fields both images carry and refuses a difference, naming the field; an image without them (an\n"
+    "older file, another program) is compared unchecked, with a note.\n";
 
 bool is_dir(const std::string& p) {
     struct stat st;
@@ -68,7 +76,7 @@ bool is_file(const std::string& p) {
 }
 
 int usage_error(const std::string& m) {
-    std::fprintf(stderr, "ssao-error: %s (see --help).\n", m.c_str());
+    std::fprintf(stderr, "ssao-error: error: %s (see --help).\n", m.c_str());
     return 2;
 }
 
@@ -78,6 +86,7 @@ static int run(int argc, char** argv) {
     std::vector<std::string> positional;
     std::string stderr_path, depth_path, limit_path, csv_path, label;
     int band = 3;
+    bool allow_mismatch = false;
     // The shared parser (host/flags.h): --flag value and --flag=value alike.
     const flags::Valued valued = {
         {"--ref-stderr", [&](const std::string&, const std::string& v) { stderr_path = v; }},
@@ -88,13 +97,14 @@ static int run(int argc, char** argv) {
         {"--band", [&](const std::string& f, const std::string& v) { band = int(flags::integer(f, v, 0, 256)); }},
     };
     try {
-        switch (flags::walk(argc, argv, valued, {}, [&](const std::string& a) { positional.push_back(a); })) {
+        const flags::Switches switches = {{"--allow-mismatch", [&] { allow_mismatch = true; }}};
+        switch (flags::walk(argc, argv, valued, switches, [&](const std::string& a) { positional.push_back(a); })) {
             case flags::Outcome::Help: std::fputs(kHelp, stdout); return 0;
             case flags::Outcome::Version: std::printf("%s\n", flags::version_line("ssao-error").c_str()); return 0;
             case flags::Outcome::Run: break;
         }
     } catch (const flags::Error& e) {
-        std::fprintf(stderr, "ssao-error: %s.\n", e.message.c_str());  // the message names --help already
+        std::fprintf(stderr, "ssao-error: error: %s.\n", e.message.c_str());  // the message names --help already
         return 2;
     }
     if (positional.size() != 2) return usage_error("expected two images, TEST.exr and REF, got " + std::to_string(positional.size()));
@@ -113,40 +123,40 @@ static int run(int argc, char** argv) {
     int tw = 0, th = 0, rw = 0, rh = 0, w = 0, h = 0;
     std::vector<float> test, ref, cover, se, depth;
     if (!refio::read_exr_channel(test_path, {"Y", "R", "AO"}, test, tw, th, error, &channel)) {
-        std::fprintf(stderr, "ssao-error: %s\n", error.c_str());
+        std::fprintf(stderr, "ssao-error: error: %s\n", error.c_str());
         return 1;
     }
     if (!refio::read_exr_channel(ref_path, {"Y"}, ref, rw, rh, error)) {
-        std::fprintf(stderr, "ssao-error: %s\n", error.c_str());
+        std::fprintf(stderr, "ssao-error: error: %s\n", error.c_str());
         return 1;
     }
     if (tw != rw || th != rh) {
-        std::fprintf(stderr, "ssao-error: %s is %dx%d but the reference %s is %dx%d.\n", test_path.c_str(), tw, th,
+        std::fprintf(stderr, "ssao-error: error: %s is %dx%d but the reference %s is %dx%d.\n", test_path.c_str(), tw, th,
                      ref_path.c_str(), rw, rh);
         return 1;
     }
     const bool has_cover = refio::exr_has_channel(ref_path, "A");
     if (has_cover && !refio::read_exr_channel(ref_path, {"A"}, cover, w, h, error)) {
-        std::fprintf(stderr, "ssao-error: %s\n", error.c_str());
+        std::fprintf(stderr, "ssao-error: error: %s\n", error.c_str());
         return 1;
     }
     if (!stderr_path.empty()) {
         if (!refio::read_exr_channel(stderr_path, {"Y"}, se, w, h, error)) {
-            std::fprintf(stderr, "ssao-error: %s\n", error.c_str());
+            std::fprintf(stderr, "ssao-error: error: %s\n", error.c_str());
             return 1;
         }
         if (w != rw || h != rh) {
-            std::fprintf(stderr, "ssao-error: %s is %dx%d, not %dx%d like the reference.\n", stderr_path.c_str(), w, h, rw, rh);
+            std::fprintf(stderr, "ssao-error: error: %s is %dx%d, not %dx%d like the reference.\n", stderr_path.c_str(), w, h, rw, rh);
             return 1;
         }
     }
     if (!depth_path.empty()) {
         if (!refio::read_exr_channel(depth_path, {"Z", "Y", "R"}, depth, w, h, error)) {
-            std::fprintf(stderr, "ssao-error: %s\n", error.c_str());
+            std::fprintf(stderr, "ssao-error: error: %s\n", error.c_str());
             return 1;
         }
         if (w != rw || h != rh) {
-            std::fprintf(stderr, "ssao-error: %s is %dx%d, not %dx%d like the reference.\n", depth_path.c_str(), w, h, rw, rh);
+            std::fprintf(stderr, "ssao-error: error: %s is %dx%d, not %dx%d like the reference.\n", depth_path.c_str(), w, h, rw, rh);
             return 1;
         }
     }
@@ -155,23 +165,23 @@ static int run(int argc, char** argv) {
     std::vector<float> limit, limit_cover, limit_se;
     if (!limit_path.empty()) {
         if (!refio::read_exr_channel(limit_path, {"Y"}, limit, w, h, error)) {
-            std::fprintf(stderr, "ssao-error: %s\n", error.c_str());
+            std::fprintf(stderr, "ssao-error: error: %s\n", error.c_str());
             return 1;
         }
         if (w != rw || h != rh) {
-            std::fprintf(stderr, "ssao-error: %s is %dx%d, not %dx%d like the reference.\n", limit_path.c_str(), w, h, rw, rh);
+            std::fprintf(stderr, "ssao-error: error: %s is %dx%d, not %dx%d like the reference.\n", limit_path.c_str(), w, h, rw, rh);
             return 1;
         }
         if (has_cover && refio::exr_has_channel(limit_path, "A")) {
             if (!refio::read_exr_channel(limit_path, {"A"}, limit_cover, w, h, error)) {
-                std::fprintf(stderr, "ssao-error: %s\n", error.c_str());
+                std::fprintf(stderr, "ssao-error: error: %s\n", error.c_str());
                 return 1;
             }
             size_t differ = 0;
             for (size_t i = 0; i < cover.size(); ++i) differ += (cover[i] > 0.5f) != (limit_cover[i] > 0.5f);
             if (differ > 0) {
                 std::fprintf(stderr,
-                             "ssao-error: %s covers other pixels than the reference (%zu differ): it is not from the "
+                             "ssao-error: error: %s covers other pixels than the reference (%zu differ): it is not from the "
                              "same scene and camera.\n",
                              limit_path.c_str(), differ);
                 return 1;
@@ -181,6 +191,44 @@ static int run(int argc, char** argv) {
         if (limit_path.size() >= 12 && limit_path.compare(limit_path.size() - 12, 12, "limit_ao.exr") == 0 &&
             is_file(se_path) && (!refio::read_exr_channel(se_path, {"Y"}, limit_se, w, h, error) || w != rw || h != rh))
             limit_se.clear();  // the noise column is optional: without it, "-"
+    }
+
+    // The images must show the same thing: compare what their headers record.
+    std::vector<std::string> bare;   // images that record nothing: compared unchecked
+    {
+        const std::string prefix = provenance::kPrefix;
+        refio::Attributes test_made, ref_made, limit_made;
+        if (!refio::read_exr_attributes(test_path, prefix, test_made, error) ||
+            !refio::read_exr_attributes(ref_path, prefix, ref_made, error) ||
+            (!limit_path.empty() && !refio::read_exr_attributes(limit_path, prefix, limit_made, error))) {
+            std::fprintf(stderr, "ssao-error: error: %s\n", error.c_str());
+            return 1;
+        }
+        struct Pair {
+            const std::string* a_path;
+            const refio::Attributes* a;
+            const std::string* b_path;
+            const refio::Attributes* b;
+        };
+        std::vector<Pair> pairs = {{&test_path, &test_made, &ref_path, &ref_made}};
+        if (!limit_path.empty()) pairs.push_back({&limit_path, &limit_made, &ref_path, &ref_made});
+        for (const Pair& p : pairs) {
+            if (p.a->empty() || p.b->empty()) {
+                for (const auto& [path, made] : {std::make_pair(p.a_path, p.a), std::make_pair(p.b_path, p.b)})
+                    if (made->empty() && std::find(bare.begin(), bare.end(), *path) == bare.end()) bare.push_back(*path);
+                continue;
+            }
+            const auto d = provenance::compare(*p.a, *p.b);
+            if (d && !allow_mismatch) {
+                std::fprintf(stderr,
+                             "ssao-error: error: %s and %s were made with a different %s: %s vs %s (--allow-mismatch "
+                             "compares them anyway).\n",
+                             p.a_path->c_str(), p.b_path->c_str(), d->field.c_str(), d->a.c_str(), d->b.c_str());
+                return 1;
+            }
+            if (d) std::printf("mismatch   %s: %s vs %s, compared anyway (--allow-mismatch)\n", d->field.c_str(),
+                               d->a.c_str(), d->b.c_str());
+        }
     }
 
     metrics::Inputs in;
@@ -201,18 +249,18 @@ static int run(int argc, char** argv) {
         for (size_t i = 0; i < cover.size(); ++i) covered[i] = cover[i] > 0.5f;
     }
     auto refuse = [](const std::string& path, const std::string& why) {
-        std::fprintf(stderr, "ssao-error: %s: %s; it is not an AO image in [0, 1].\n", path.c_str(), why.c_str());
+        std::fprintf(stderr, "ssao-error: error: %s: %s; it is not an AO image in [0, 1].\n", path.c_str(), why.c_str());
         return 1;
     };
     if (const std::string why = aocheck::check_values(ref, rw, has_cover ? &covered : nullptr); !why.empty())
         return refuse(ref_path, why);
     metrics::Masks masks;
     if (!metrics::build_masks(in, masks, error)) {
-        std::fprintf(stderr, "ssao-error: %s.\n", error.c_str());
+        std::fprintf(stderr, "ssao-error: error: %s.\n", error.c_str());
         return 1;
     }
     if (std::find(masks.geometry.begin(), masks.geometry.end(), uint8_t(1)) == masks.geometry.end()) {
-        std::fprintf(stderr, "ssao-error: %s has no pixel to compare: all of it is sky (A = 0%s).\n", ref_path.c_str(),
+        std::fprintf(stderr, "ssao-error: error: %s has no pixel to compare: all of it is sky (A = 0%s).\n", ref_path.c_str(),
                      depth.empty() ? "" : ", or no finite depth");
         return 1;
     }
@@ -225,7 +273,7 @@ static int run(int argc, char** argv) {
     metrics::Split split;
     if (!metrics::compute(in, stats, error) ||
         (!limit.empty() && !metrics::compute_split(in, limit, limit_se.empty() ? nullptr : &limit_se, split, error))) {
-        std::fprintf(stderr, "ssao-error: %s.\n", error.c_str());
+        std::fprintf(stderr, "ssao-error: error: %s.\n", error.c_str());
         return 1;
     }
 
@@ -233,6 +281,9 @@ static int run(int argc, char** argv) {
     std::printf("reference  %s%s%s\n", ref_path.c_str(), se.empty() ? ", no standard-error image" : "",
                 depth.empty() ? ", silhouettes from sky/AO edges" : ", silhouettes from its depth");
     if (!limit.empty()) std::printf("limit      %s\n", limit_path.c_str());
+    for (const std::string& path : bare)
+        std::printf("note       %s records no scene and camera (older file or another program): not checked\n",
+                    path.c_str());
     std::printf("bands      %d px\n\n", band);
     std::fputs(metrics::table(stats).c_str(), stdout);
     if (!limit.empty()) {
@@ -245,13 +296,13 @@ static int run(int argc, char** argv) {
         const bool fresh = !is_file(csv_path);
         std::ofstream csv(csv_path, std::ios::app);
         if (!csv) {
-            std::fprintf(stderr, "ssao-error: cannot write %s.\n", csv_path.c_str());
+            std::fprintf(stderr, "ssao-error: error: cannot write %s.\n", csv_path.c_str());
             return 1;
         }
         if (fresh) csv << metrics::csv_header();
         csv << (limit.empty() ? metrics::csv_rows(stats, label) : metrics::csv_rows(split, label));
         if (!csv) {
-            std::fprintf(stderr, "ssao-error: cannot write %s.\n", csv_path.c_str());
+            std::fprintf(stderr, "ssao-error: error: cannot write %s.\n", csv_path.c_str());
             return 1;
         }
     }
@@ -264,9 +315,9 @@ int main(int argc, char** argv) {
     try {
         return run(argc, argv);
     } catch (const std::bad_alloc&) {
-        std::fputs("ssao-error: out of memory (the images are too large for this machine).\n", stderr);
+        std::fputs("ssao-error: error: out of memory (the images are too large for this machine).\n", stderr);
     } catch (const std::exception& e) {
-        std::fprintf(stderr, "ssao-error: unexpected failure (%s).\n", e.what());
+        std::fprintf(stderr, "ssao-error: error: unexpected failure (%s).\n", e.what());
     }
     return 1;
 }

@@ -44,7 +44,8 @@ std::string exr_message(const char* err) {
 
 }  // namespace
 
-bool write_exr(const std::string& path, int width, int height, std::vector<Channel> channels, std::string& error) {
+bool write_exr(const std::string& path, int width, int height, std::vector<Channel> channels, std::string& error,
+               const Attributes& attributes) {
     if (width <= 0 || height <= 0 || channels.empty()) {
         error = "cannot write " + path + ": empty image.";
         return false;
@@ -80,6 +81,16 @@ bool write_exr(const std::string& path, int width, int height, std::vector<Chann
     header.pixel_types = types.data();
     header.requested_pixel_types = types.data();
     header.compression_type = TINYEXR_COMPRESSIONTYPE_ZIP;
+    std::vector<EXRAttribute> custom(attributes.size());
+    for (size_t i = 0; i < attributes.size(); ++i) {
+        std::memset(&custom[i], 0, sizeof custom[i]);
+        std::strncpy(custom[i].name, attributes[i].first.c_str(), sizeof custom[i].name - 1);
+        std::strcpy(custom[i].type, "string");
+        custom[i].value = reinterpret_cast<unsigned char*>(const_cast<char*>(attributes[i].second.data()));
+        custom[i].size = int(attributes[i].second.size());
+    }
+    header.num_custom_attributes = int(custom.size());
+    header.custom_attributes = custom.empty() ? nullptr : custom.data();
     const char* err = nullptr;
     const int rc = SaveEXRImageToFile(&image, &header, path.c_str(), &err);
     if (rc != TINYEXR_SUCCESS) {
@@ -141,6 +152,22 @@ bool has_channel(const std::string& path, const std::string& name) {
     for (int c = 0; c < x.header.num_channels; ++c)
         if (name == x.header.channels[c].name) return true;
     return false;
+}
+
+bool read_attributes(const std::string& path, const std::string& prefix, Attributes& out, std::string& error) {
+    LoadedExr x;
+    if (!parse_header(path, x, error)) return false;
+    out.clear();
+    for (int i = 0; i < x.header.num_custom_attributes; ++i) {
+        const EXRAttribute& a = x.header.custom_attributes[i];
+        if (std::strcmp(a.type, "string") != 0 || std::string(a.name).rfind(prefix, 0) != 0) continue;
+        std::string value;
+        if (a.value && a.size > 0) value.assign(reinterpret_cast<const char*>(a.value), size_t(a.size));
+        // An EXR string may end in a NUL written by other programs.
+        while (!value.empty() && value.back() == '\0') value.pop_back();
+        out.emplace_back(a.name, value);
+    }
+    return true;
 }
 
 bool read_channel(const std::string& path, const std::vector<std::string>& preferred, std::vector<float>& out,
@@ -215,6 +242,15 @@ bool exr_has_channel(const std::string& path, const std::string& name) {
     try {
         return has_channel(path, name);
     } catch (const std::exception&) {
+        return false;
+    }
+}
+
+bool read_exr_attributes(const std::string& path, const std::string& prefix, Attributes& out, std::string& error) {
+    try {
+        return read_attributes(path, prefix, out, error);
+    } catch (const std::exception& e) {
+        error = path + ": a malformed EXR made the reader fail (" + e.what() + ").";
         return false;
     }
 }

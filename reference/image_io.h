@@ -4,6 +4,7 @@
 #pragma once
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace refio {
@@ -13,9 +14,19 @@ struct Channel {
     const std::vector<float>* data;  // width * height values
 };
 
+// (name, value) string attributes of an EXR header.
+using Attributes = std::vector<std::pair<std::string, std::string>>;
+
 // Writes a scanline EXR, 32-bit float, ZIP-compressed (channels are stored
-// sorted by name, as OpenEXR requires). Returns false with `error` set.
-bool write_exr(const std::string& path, int width, int height, std::vector<Channel> channels, std::string& error);
+// sorted by name, as OpenEXR requires), with `attributes` as string
+// attributes in its header. Returns false with `error` set.
+bool write_exr(const std::string& path, int width, int height, std::vector<Channel> channels, std::string& error,
+               const Attributes& attributes = {});
+
+// The string attributes of the EXR at `path` whose names start with `prefix`
+// (in the header's order). Returns false with `error` set when the file
+// cannot be read as an EXR.
+bool read_exr_attributes(const std::string& path, const std::string& prefix, Attributes& out, std::string& error);
 
 // Reads one channel of an EXR as float: the first of `preferred` the file
 // has, else its first channel. `used` (optional) receives the channel's name.

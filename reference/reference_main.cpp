@@ -22,6 +22,7 @@
 #include "image_io.h"
 #include "locate.h"
 #include "metrics.h"
+#include "provenance.h"
 #include "raytracer.h"
 #include "scene.h"
 
@@ -88,7 +89,9 @@ std::string help_text() {
     "                     extras.ssao.radius, else 0.05 x the bounding-box diagonal)\n"
     "  --samples N        occlusion rays per pixel, 1..1048576 (default 1024)\n"
     "  --seed N           sample-pattern seed, 0..4294967295 (default 1)\n"
-    "  --eye x,y,z        camera position (default: the scene's camera, else framed from the bounds)\n"
+    "  --eye x,y,z        camera position (default as ssao-host: the scene's camera, else framed from\n"
+    "                     the bounds; without a scene argument, the bundled view of the cow, eye\n"
+    "                     2.3,1.6,-2.6 and target 0,0.65,0)\n"
     "  --target x,y,z     point the camera looks at\n"
     "  --fov DEG          vertical field of view in degrees, (0, 180)\n"
     "  --near N           near plane distance, > 0\n"
@@ -115,7 +118,9 @@ std::string help_text() {
     "Writes DIR/reference_ao.exr (Y = AO, A = coverage: 0 for sky, where Y = 1),\n"
     "DIR/reference_stderr.exr (Y = standard error of the mean per pixel) and DIR/reference_ao.png.\n"
     "AO is V_R: the cosine-weighted fraction of the hemisphere around the face normal with no hit\n"
-    "within the radius. Pixel centres, row 0 at the top, rays from inverse(projection * view).\n";
+    "within the radius. Pixel centres, row 0 at the top, rays from inverse(projection * view).\n"
+    "reference_ao.exr and limit_ao.exr record the scene, size, camera, radius (and the limit's\n"
+    "thickness) in their headers; ssao-error refuses to compare images whose records differ.\n";
 }
 
 enum class Parse { Run, Help, Version, Error };
@@ -211,20 +216,22 @@ static int run(int argc, char** argv) {
     switch (parse(argc, argv, o, error)) {
         case Parse::Help: std::fputs(help_text().c_str(), stdout); return 0;
         case Parse::Version: std::printf("%s\n", flags::version_line("ssao-reference").c_str()); return 0;
-        case Parse::Error: std::fprintf(stderr, "ssao-reference: %s.\n", error.c_str()); return 2;
+        case Parse::Error: std::fprintf(stderr, "ssao-reference: error: %s.\n", error.c_str()); return 2;
         case Parse::Run: break;
     }
-    if (o.scene_path.empty()) o.scene_path = locate::bundled("models/spot-on-ground.glb");
+    const bool bundled_scene = o.scene_path.empty();
+    if (bundled_scene) o.scene_path = scene::default_path();
 
     scene::Scene sc;
     scene::Limits limits;
     limits.allow_outside_files = o.allow_outside_files;
     if (!scene::load(o.scene_path, sc, error, limits)) {
-        std::fprintf(stderr, "ssao-reference: %s\n", error.c_str());
+        std::fprintf(stderr, "ssao-reference: error: %s\n", error.c_str());
         return 1;
     }
     const float aspect = float(o.width) / float(o.height);
-    const camera::Camera cam = camera::apply(sc, camera::choose(sc, aspect), o.cam);
+    camera::Source camera_source = camera::Source::Framed;
+    const camera::Camera cam = camera::initial(sc, aspect, o.cam, bundled_scene, &camera_source);
     // Radius as ssao-host picks it: --radius, else the scene's hint, else 0.05 x the
     // bounding-box diagonal (else the plugin's default 0.5).
     std::string radius_note = "--radius";
@@ -239,20 +246,20 @@ static int run(int argc, char** argv) {
     }
 
     if (!make_dirs(o.out_dir, error)) {
-        std::fprintf(stderr, "ssao-reference: %s\n", error.c_str());
+        std::fprintf(stderr, "ssao-reference: error: %s\n", error.c_str());
         return 1;
     }
 
     raytrace::Tracer tracer(sc.mesh);
     if (!tracer.ok()) {
-        std::fprintf(stderr, "ssao-reference: the ray tracer could not be built: %s.\n", tracer.error().c_str());
+        std::fprintf(stderr, "ssao-reference: error: the ray tracer could not be built: %s.\n", tracer.error().c_str());
         return 1;
     }
     std::printf("scene     %s: %zu triangles, bounds (%g, %g, %g) .. (%g, %g, %g)\n", o.scene_path.c_str(),
                 sc.mesh.triangle_count(), sc.bounds_min.x, sc.bounds_min.y, sc.bounds_min.z, sc.bounds_max.x,
                 sc.bounds_max.y, sc.bounds_max.z);
     std::printf("camera    %s, eye (%g, %g, %g), target (%g, %g, %g), %s, near %g, far %g\n",
-                (o.cam.eye || o.cam.target) ? "from the flags" : (sc.camera ? "from the scene" : "framed from the bounds"), cam.eye.x, cam.eye.y, cam.eye.z, cam.target.x,
+                (o.cam.eye || o.cam.target) ? "from the flags" : camera::describe(camera_source), cam.eye.x, cam.eye.y, cam.eye.z, cam.target.x,
                 cam.target.y, cam.target.z,
                 cam.orthographic ? ("orthographic half-height " + std::to_string(cam.ortho_half_height)).c_str()
                                  : ("fov " + std::to_string(glm::degrees(cam.yfov)) + " deg").c_str(),
@@ -271,7 +278,7 @@ static int run(int argc, char** argv) {
     ro.progress = !o.quiet;
     raytrace::Image img;
     if (!tracer.render(cam, ro, img, error)) {
-        std::fprintf(stderr, "ssao-reference: %s.\n", error.c_str());
+        std::fprintf(stderr, "ssao-reference: error: %s.\n", error.c_str());
         return 1;
     }
 
@@ -290,7 +297,7 @@ static int run(int argc, char** argv) {
                     lo.directions, depth_limit::kReplicas);
         std::fflush(stdout);
         if (!depth_limit::compute(cam, img, lo, limit, error)) {
-            std::fprintf(stderr, "ssao-reference: %s.\n", error.c_str());
+            std::fprintf(stderr, "ssao-reference: error: %s.\n", error.c_str());
             return 1;
         }
     }
@@ -307,9 +314,13 @@ static int run(int argc, char** argv) {
         written.push_back(p);
         return true;
     };
-    auto exr = [&](const std::string& name, std::vector<refio::Channel> ch) {
+    // What the images were made with, for ssao-error to check (provenance.h).
+    const provenance::Fields made_with = provenance::describe(o.scene_path, o.width, o.height, cam, radius);
+    provenance::Fields limit_made_with = made_with;
+    if (o.limit) limit_made_with = provenance::describe(o.scene_path, o.width, o.height, cam, radius, lo.thickness);
+    auto exr = [&](const std::string& name, std::vector<refio::Channel> ch, const provenance::Fields& attributes = {}) {
         const std::string p = dir + "/" + name;
-        if (!refio::write_exr(p, img.width, img.height, std::move(ch), error)) return false;
+        if (!refio::write_exr(p, img.width, img.height, std::move(ch), error, attributes)) return false;
         written.push_back(p);
         return true;
     };
@@ -325,18 +336,18 @@ static int run(int argc, char** argv) {
             nz[i] = img.normal[i * 3 + 2];
         }
     }
-    bool ok = exr("reference_ao.exr", {{"Y", &img.ao}, {"A", &img.mask}}) &&
+    bool ok = exr("reference_ao.exr", {{"Y", &img.ao}, {"A", &img.mask}}, made_with) &&
               exr("reference_stderr.exr", {{"Y", &img.std_error}});
     ok = ok && png("reference_ao.png", img.ao);
     if (ok && o.dump_buffers)
         ok = exr("reference_depth.exr", {{"Z", &img.depth}}) &&
              exr("reference_normal.exr", {{"R", &nx}, {"G", &ny}, {"B", &nz}});
     if (ok && o.limit)
-        ok = exr("limit_ao.exr", {{"Y", &limit.ao}, {"A", &img.mask}}) &&
+        ok = exr("limit_ao.exr", {{"Y", &limit.ao}, {"A", &img.mask}}, limit_made_with) &&
              exr("limit_stderr.exr", {{"Y", &limit.std_error}}) && png("limit_ao.png", limit.ao);
     if (!ok) {
         undo();
-        std::fprintf(stderr, "ssao-reference: %s\n", error.c_str());
+        std::fprintf(stderr, "ssao-reference: error: %s\n", error.c_str());
         return 1;
     }
 
@@ -392,9 +403,9 @@ int main(int argc, char** argv) {
     try {
         return run(argc, argv);
     } catch (const std::bad_alloc&) {
-        std::fputs("ssao-reference: out of memory (the image size or the scene is too large for this machine).\n", stderr);
+        std::fputs("ssao-reference: error: out of memory (the image size or the scene is too large for this machine).\n", stderr);
     } catch (const std::exception& e) {
-        std::fprintf(stderr, "ssao-reference: unexpected failure (%s).\n", e.what());
+        std::fprintf(stderr, "ssao-reference: error: unexpected failure (%s).\n", e.what());
     }
     return 1;
 }

@@ -29,7 +29,7 @@ glm::vec3 direction(float yaw, float pitch) {
 Controls::Controls(const ssao_api& api, cli::Options base, const scene::Scene& scene, float aspect)
     : api_(api), base_(std::move(base)), scene_(scene) {
     choose_preset(base_.preset);
-    bool from_scene = false;
+    camera::Source from_scene = camera::Source::Framed;
     start_ = camera_ = run_setup::build_camera(base_, scene_, aspect, from_scene);
     const float diagonal = glm::length(scene_.bounds_max - scene_.bounds_min);
     speed_ = kSpeedPerDiagonal * (diagonal > 0.0f && std::isfinite(diagonal) ? diagonal : 1.0f);
@@ -157,7 +157,7 @@ void Controls::reset_camera() {
 
 void Controls::set_aspect(float aspect) {
     if (moved_) return;
-    bool from_scene = false;
+    camera::Source from_scene = camera::Source::Framed;
     start_ = camera_ = run_setup::build_camera(base_, scene_, aspect, from_scene);
 }
 

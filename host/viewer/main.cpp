@@ -56,13 +56,15 @@ int run(const viewer::Options& o) {
     std::string error;
     if (!o.script_path.empty() && !viewer::load_script(o.script_path, script, error)) throw std::runtime_error(error);
 
-    const std::string scene_path = o.scene_path.empty() ? run_setup::default_scene_path() : o.scene_path;
+    const std::string scene_path = o.scene_path.empty() ? scene::default_path() : o.scene_path;
     plugin::Library library;
     if (!library.open_default(o.plugin_path, error))
         throw std::runtime_error(error);
     const ssao_api& api = library.api();
     scene::Scene sc;
-    if (!scene::load(scene_path, sc, error)) throw std::runtime_error("cannot load the scene: " + error);
+    scene::Limits limits;
+    limits.allow_outside_files = o.allow_outside_files;
+    if (!scene::load(scene_path, sc, error, limits)) throw std::runtime_error("cannot load the scene: " + error);
     if (sc.mesh.triangle_count() == 0) throw std::runtime_error("'" + scene_path + "' has nothing to draw (no triangles)");
 
     cli::Options base;
@@ -153,9 +155,9 @@ int main(int argc, char** argv) {
     std::string error;
     switch (viewer::parse(argc, argv, options, error)) {
         case viewer::Parse::Error:
-            std::fprintf(stderr, "ssao-viewer: %s\n", error.c_str());
+            flags::print_error("ssao-viewer", error);
             return 2;
-        case viewer::Parse::Help: std::fputs(viewer::help_text(run_setup::default_scene_path(), locate::bundled(viewer::kDemoScript)).c_str(), stdout); return 0;
+        case viewer::Parse::Help: std::fputs(viewer::help_text(scene::default_path(), locate::bundled(viewer::kDemoScript)).c_str(), stdout); return 0;
         case viewer::Parse::Version: std::printf("%s\n", flags::version_line("ssao-viewer").c_str()); return 0;
         case viewer::Parse::Run: break;
     }
@@ -163,11 +165,8 @@ int main(int argc, char** argv) {
         return run(options);
     } catch (const std::exception& e) {
         // One line on stderr, whatever the message.
-        std::string message = e.what();
-        for (char& c : message)
-            if (c == '\n' || c == '\r') c = ' ';
         std::fflush(stdout);
-        std::fprintf(stderr, "ssao-viewer: error: %s\n", message.c_str());
+        flags::print_error("ssao-viewer", e.what());
         return 1;
     }
 }

@@ -1,20 +1,9 @@
 #include "options.h"
 
 #include "flags.h"
+#include "preset_text.h"
 
 namespace viewer {
-
-namespace {
-
-std::optional<ssao_preset> preset_named(const std::string& v) {
-    if (v == "low") return SSAO_PRESET_LOW;
-    if (v == "medium") return SSAO_PRESET_MEDIUM;
-    if (v == "high") return SSAO_PRESET_HIGH;
-    if (v == "ultra") return SSAO_PRESET_ULTRA;
-    return std::nullopt;
-}
-
-}  // namespace
 
 Parse parse(int argc, const char* const* argv, Options& o, std::string& error) {
     const flags::Valued valued = {
@@ -25,8 +14,8 @@ Parse parse(int argc, const char* const* argv, Options& o, std::string& error) {
              o.plugin_path = v;
          }},
         {"--preset", [&](const std::string& f, const std::string& v) {
-             o.preset = preset_named(v);
-             if (!o.preset) flags::fail(f + " " + flags::quoted(v) + " is not low|medium|high|ultra");
+             o.preset = preset_text::parse(v);
+             if (!o.preset) flags::fail(f + " expects one of " + preset_text::choices() + ", got " + flags::quoted(v));
          }},
         {"--script", [&](const std::string& f, const std::string& v) {
              if (v.empty()) flags::fail(f + " needs a file");
@@ -39,7 +28,8 @@ Parse parse(int argc, const char* const* argv, Options& o, std::string& error) {
          }},
     };
     try {
-        switch (flags::walk(argc, argv, valued, {}, o.scene_path)) {
+        const flags::Switches switches = {{"--allow-outside-files", [&] { o.allow_outside_files = true; }}};
+        switch (flags::walk(argc, argv, valued, switches, o.scene_path)) {
             case flags::Outcome::Help: return Parse::Help;
             case flags::Outcome::Version: return Parse::Version;
             case flags::Outcome::Run: break;
@@ -56,14 +46,20 @@ std::string help_text(const std::string& default_scene, const std::string& demo_
            "\n"
            "usage: ssao-viewer [SCENE.gltf|SCENE.glb] [flags]\n"
            "  SCENE                glTF scene (default: " + default_scene + ")\n"
+           "                       Camera: the scene's camera, else framed from its bounds; without a scene\n"
+           "                       argument, the bundled view of the cow (eye 2.3,1.6,-2.6, target 0,0.65,0),\n"
+           "                       the first frame being ssao-host's picture\n"
            "  --width N            window width in pixels (default 800)\n"
            "  --height N           window height in pixels (default 600)\n"
-           "  --preset NAME        start from low|medium|high|ultra (default: the plugin's defaults, as ssao-host)\n"
+           "  --preset NAME        start from " + preset_text::choices() + " (default: the plugin's defaults, as\n"
+           "                       ssao-host)\n"
            "  --plugin PATH        libssao.so to load (default: $SSAO_PLUGIN, then the same places as ssao-host)\n"
            "  --script FILE        timed key presses and resizes (lines 'FRAME KEY', 'FRAME hold KEY N',\n"
            "                       'FRAME resize W H', 'FRAME memory', 'FRAME quit'; frames count from 0);\n"
            "                       each event is printed as it happens. A tour of the keys: " + demo_script + "\n"
            "  --frames N           exit after N frames\n"
+           "  --allow-outside-files  let the scene's buffer URIs name files outside its folder (absolute\n"
+           "                       paths, '..', symbolic links leading out); refused by default\n"
            "  --screenshot-dir DIR where F12 writes frame-NNNNN.png (default: the current folder)\n"
            "  --help, -h           this text\n"
            "  --version            the version\n"

@@ -16,6 +16,7 @@ struct Options {
     std::string script_path;         // --script: timed key presses
     long frames = 0;                 // --frames: exit after this many frames (0 = run until closed)
     std::string screenshot_dir = "."; // where F12 writes
+    bool allow_outside_files = false; // the scene's buffer URIs may leave its folder (scene_limits.h)
 };
 
 enum class Parse { Run, Help, Version, Error };

@@ -50,6 +50,7 @@ const char* preset_name(const std::optional<ssao_preset>& p) {
         case SSAO_PRESET_MEDIUM: return "MEDIUM";
         case SSAO_PRESET_HIGH: return "HIGH";
         case SSAO_PRESET_ULTRA: return "ULTRA";
+        case SSAO_PRESET_CHAPTER: return "CHAPTER";
         default: return "DEFAULT";
     }
 }

@@ -1,11 +1,12 @@
 #!/usr/bin/env bash
-# The four tools behave alike (CTest: cli.common_flags):
-#   test_common_flags.sh HOST REFERENCE ERROR BENCH
+# The tools behave alike (CTest: cli.common_flags):
+#   test_common_flags.sh HOST REFERENCE ERROR BENCH [VIEWER]
 # --version and --help exit 0; an unknown flag or a missing value exits 2 with
-# one line on stderr naming the flag; --flag=value and --flag value give the
-# same result (identical output files, or the same message for a bad value).
+# one line on stderr, "TOOL: error: ...", naming the flag and the flag it most
+# likely meant; --flag=value and --flag value give the same result (identical
+# output files, or the same message for a bad value).
 set -uo pipefail
-host=$1 reference=$2 error=$3 bench=$4
+host=$1 reference=$2 error=$3 bench=$4 viewer=${5:-}
 work=$(mktemp -d /tmp/ssao-cli.XXXXXX)
 trap 'rm -rf "$work"' EXIT
 failures=0
@@ -32,7 +33,28 @@ for tool in "$host" "$reference" "$error" "$bench"; do
   check "$name -h is --help" bash -c 'cmp -s <("$1" -h) <("$1" --help)' _ "$tool"
   check "$name --bogus: exit 2, one line naming it" expect_usage_error "$tool" --bogus --bogus
   check "$name --bogus=1: exit 2, one line naming it" expect_usage_error "$tool" --bogus --bogus=1
+  check "$name --bogus: the line starts '$name: error: '" bash -c '"$1" --bogus 2>&1 >/dev/null | grep -q "^$2: error: unknown flag"' _ "$tool" "$name"
+  check "$name --verison: did you mean --version?" expect_usage_error "$tool" "unknown flag '--verison'; did you mean --version?" --verison
+  check "$name --hel: did you mean --help? (a unique prefix)" expect_usage_error "$tool" "did you mean --help?" --hel
 done
+# A misspelling of each tool's own flags (within two edits, or a unique prefix).
+check "ssao-host --radus: did you mean --radius?" expect_usage_error "$host" "did you mean --radius?" --radus 0.3
+check "ssao-host --rad: did you mean --radius? (not --radius-pixels)" expect_usage_error "$host" "did you mean --radius?" --rad 0.3
+check "ssao-reference --samles: did you mean --samples?" expect_usage_error "$reference" "did you mean --samples?" --samles 8
+check "ssao-error --lable: did you mean --label?" expect_usage_error "$error" "did you mean --label?" a.exr b.exr --lable x
+check "ssao-bench --frmes: did you mean --frames?" expect_usage_error "$bench" "did you mean --frames?" --frmes 3
+check "ssao-host --zzzzzz: no guess" bash -c '! "$1" --zzzzzz 2>&1 | grep -q "did you mean"' _ "$host"
+if [ -n "$viewer" ]; then
+  check "ssao-viewer --bogus: the line starts ssao-viewer: error:" bash -c \
+    '"$1" --bogus 2>&1 >/dev/null | grep -q "^ssao-viewer: error: unknown flag"' _ "$viewer"
+  check "ssao-viewer --widht: did you mean --width?" expect_usage_error "$viewer" "did you mean --width?" --widht 9
+  # One list of preset names: ssao-host took chapter, ssao-viewer refused it.
+  check "ssao-viewer --preset chapter is accepted (stops later, for want of a display)" bash -c \
+    '! env -u DISPLAY -u WAYLAND_DISPLAY "$1" --preset chapter 2>&1 | grep -q -- --preset' _ "$viewer"
+fi
+check "ssao-host and ssao-viewer name the same presets" bash -c \
+  '"$1" --preset x 2>&1 | grep -q "low|medium|high|ultra|chapter" &&
+   { [ -z "$2" ] || "$2" --preset x 2>&1 | grep -q "low|medium|high|ultra|chapter"; }' _ "$host" "$viewer"
 
 # A valued flag without its value, and a bad value in both spellings (same message).
 check "ssao-host --width (no value): exit 2" expect_usage_error "$host" --width --width

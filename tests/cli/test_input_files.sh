@@ -42,6 +42,14 @@ for tool in "$host" "$reference" "$bench"; do
   check "$name /dev/zero: one line, exit 1, not read" expect_error 1 "not a regular file but a character device" "$tool" /dev/zero --out "$out"
   check "$name a directory: one line, exit 1" expect_error 1 "not a regular file but a directory" "$tool" "$work/folder.gltf" --out "$out"
 done
+# Not glTF at all: said so, not tinygltf's JSON parse error.
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n' >"$work/model.obj"
+for tool in "$host" "$reference" "$bench"; do
+  name=$(basename "$tool")
+  check "$name model.obj: 'not a glTF scene', one line, exit 1" \
+    expect_error 1 "model.obj: not a glTF scene; the tools read glTF 2.0 only" "$tool" "$work/model.obj" --out "$out"
+  check "$name model.obj: no JSON parser message" bash -c '! grep -qi "parse_error\\|exception\\|tinygltf" "$1/stderr"' _ "$work"
+done
 [ ! -e "$out" ] || { echo "FAILED  a refused scene left $out behind"; failures=$((failures + 1)); }
 
 # One triangle whose 36-byte buffer is named by URI.
@@ -91,11 +99,27 @@ check "ssao-host --plugin FIFO: one line, exit 1, no hang" \
 check "ssao-bench --plugin FIFO: one line, exit 1, no hang" \
   expect_error 1 "not a regular file but a FIFO" "$bench" --plugin "$work/fifo.gltf" --out "$out"
 
+# An output folder that cannot be written is refused before anything is
+# rendered (root writes through permission bits, so /sys stands in for one).
+check "ssao-host --out in an unwritable folder: one line, exit 1, before rendering" \
+  expect_error 1 "the output directory '/sys/ssao-out' cannot be created in '/sys'" "$host" --out /sys/ssao-out
+check "ssao-host --out in an unwritable folder: nothing rendered (no report)" bash -c '! grep -q "GPU times" "$1/stdout"' _ "$work"
+mkdir -p "$work/readonly"; chmod 0555 "$work/readonly"
+if ! touch "$work/readonly/probe" 2>/dev/null; then
+  check "ssao-host --out READ-ONLY: 'is not writable', exit 1" \
+    expect_error 1 "the output directory '$work/readonly' is not writable" "$host" --out "$work/readonly"
+fi
+chmod 0755 "$work/readonly"
+
 # ssao-error: a FIFO as either image, a directory, a device.
 "$reference" --width 8 --height 8 --samples 4 --quiet --out "$work/ref" >/dev/null
 check "ssao-error FIFO REF: one line, exit 1, no hang" expect_error 1 "not a regular file but a FIFO" "$error" "$work/fifo.exr" "$work/ref"
 check "ssao-error TEST FIFO: one line, exit 1, no hang" expect_error 1 "not a regular file but a FIFO" "$error" "$work/ref/reference_ao.exr" "$work/fifo.exr"
 check "ssao-error /dev/zero: one line, exit 1" expect_error 1 "not a regular file but a character device" "$error" /dev/zero "$work/ref"
+check "ssao-error a missing image: 'cannot open the file (No such file or directory)'" \
+  expect_error 1 "missing.exr: cannot open the file (No such file or directory)." "$error" "$work/missing.exr" "$work/ref"
+check "ssao-error a text file: 'not an OpenEXR file'" \
+  expect_error 1 "model.obj: not an OpenEXR file." "$error" "$work/model.obj" "$work/ref"
 
 # Flag values the plugin would refuse, refused while parsing (exit 2: no
 # plugin, scene or GL setup has happened), each naming its flag.

@@ -83,6 +83,9 @@ TEST_CASE("ssao-reference: bad input fails with one message and writes nothing")
         {kModel + " --eye 1,2", "--eye expects three comma-separated numbers"},
         {kModel + " --eye 1,1,1 --target 1,1,1", "same point"},
         {kModel + " --bogus", "unknown flag '--bogus'"},
+        {kModel + " --radus 0.3", "unknown flag '--radus'; did you mean --radius? (see --help)"},
+        {kModel + " --thick 0.3", "unknown flag '--thick'; did you mean --thickness? (see --help)"},
+        {std::string(SSAO_TEST_MODELS_DIR), "not a regular file but a directory"},
         {kModel + " --width", "--width needs a value"},
         {kModel + " other.glb", "more than one scene file"},
         {kModel + " --width 16384 --height 16384 --samples 1048576", "absurdly large"},
@@ -101,7 +104,7 @@ TEST_CASE("ssao-reference: bad input fails with one message and writes nothing")
         INFO(c.args << " -> " << r.output);
         CHECK(r.code != 0);
         CHECK(r.output.find(c.expect) != std::string::npos);
-        CHECK(r.output.find("ssao-reference: ") == 0);
+        CHECK(r.output.find("ssao-reference: error: ") == 0);
         CHECK(std::count(r.output.begin(), r.output.end(), '\n') == 1);
         CHECK_FALSE(fs::exists(out));
     }
@@ -142,7 +145,7 @@ TEST_CASE("ssao-reference: an image too large for the memory limit is one messag
                       " --width 16384 --height 16384 --samples 1 --quiet --out " + out);
     INFO(r.output);
     CHECK(r.code == 1);
-    CHECK(r.output.find("ssao-reference: out of memory") != std::string::npos);
+    CHECK(r.output.find("ssao-reference: error: out of memory") != std::string::npos);
     CHECK_FALSE(fs::exists(fs::path(out) / "reference_ao.exr"));
 #endif
 }
@@ -320,7 +323,7 @@ TEST_CASE("ssao-error refuses images that are not AO, and a reference with nothi
         INFO(r.output);
         CHECK(r.code == 1);
         CHECK(r.output.find(c.expect) != std::string::npos);
-        CHECK(r.output.rfind("ssao-error: ", 0) == 0);
+        CHECK(r.output.rfind("ssao-error: error: ", 0) == 0);
         CHECK(std::count(r.output.begin(), r.output.end(), '\n') == 1);
     }
     // Sky pixels of the test are not compared, so not judged.
@@ -355,13 +358,15 @@ TEST_CASE("ssao-error on a FIFO, a directory or a damaged EXR: one line, exit 1,
         {ref + " " + fifo, fifo + ": not a regular file but a FIFO (named pipe)."},
         {"/dev/zero " + ref, "/dev/zero: not a regular file but a character device."},
         {text + " " + ref, text + ": not an OpenEXR file."},
+        // Missing and not EXR are told apart.
+        {text + ".missing " + ref, text + ".missing: cannot open the file (No such file or directory)."},
         {truncated + " " + ref, truncated + ": "},
     };
     for (const Case& c : cases) {
         const Run r = run("timeout -s KILL 20 " + kErr + " " + c.args);
         INFO(c.args << " -> " << r.output);
         CHECK(r.code == 1);
-        CHECK(r.output.find("ssao-error: " + c.expect) == 0);
+        CHECK(r.output.find("ssao-error: error: " + c.expect) == 0);
         CHECK(std::count(r.output.begin(), r.output.end(), '\n') == 1);
     }
 }
@@ -373,7 +378,7 @@ TEST_CASE("ssao-reference: a scene that is a FIFO, or whose buffer leaves its fo
     const std::string out = (dir.path / "out").string();
     Run r = run("timeout -s KILL 20 " + kRef + " " + fifo + " --quiet --out " + out);
     CHECK(r.code == 1);
-    CHECK(r.output == "ssao-reference: " + fifo + ": not a regular file but a FIFO (named pipe).\n");
+    CHECK(r.output == "ssao-reference: error: " + fifo + ": not a regular file but a FIFO (named pipe).\n");
     // One triangle whose 36-byte buffer lies beside the scene's folder.
     fs::create_directories(dir.path / "scene");
     const float pos[9] = {0, 0, 0, 1, 0, 0, 0, 0, -1};
@@ -387,7 +392,7 @@ TEST_CASE("ssao-reference: a scene that is a FIFO, or whose buffer leaves its fo
                             "\"min\":[0,0,-1],\"max\":[1,0,0]}]}";
     r = run(kRef + " " + scene + " --quiet --width 4 --height 4 --samples 1 --out " + out);
     CHECK(r.code == 1);
-    CHECK(r.output == "ssao-reference: " + scene +
+    CHECK(r.output == "ssao-reference: error: " + scene +
                           ": buffer 0's URI '../tri.bin' names a file outside the scene's folder; "
                           "--allow-outside-files allows it.\n");
     CHECK_FALSE(fs::exists(out));
@@ -395,6 +400,95 @@ TEST_CASE("ssao-reference: a scene that is a FIFO, or whose buffer leaves its fo
     INFO(r.output);
     CHECK(r.code == 0);
     CHECK(fs::exists(fs::path(out) / "reference_ao.exr"));
+}
+
+TEST_CASE("ssao-reference: a file that is not glTF is named as such, not as a JSON parse error") {
+    TempDir dir;
+    const std::string obj = (dir.path / "model.obj").string();
+    std::ofstream(obj) << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+    const std::string png = (dir.path / "picture.gltf").string();
+    std::ofstream(png, std::ios::binary) << "\x89PNG\r\n\x1a\n";
+    for (const std::string& path : {obj, png}) {
+        const Run r = run(kRef + " " + path + " --quiet --out " + (dir.path / "out").string());
+        INFO(r.output);
+        CHECK(r.code == 1);
+        CHECK(r.output.rfind("ssao-reference: error: " + path + ": not a glTF scene; the tools read glTF 2.0 only", 0) == 0);
+        CHECK(r.output.find("json") == std::string::npos);
+        CHECK(std::count(r.output.begin(), r.output.end(), '\n') == 1);
+    }
+}
+
+TEST_CASE("ssao-error refuses images made with another camera, radius or size, naming the field; --allow-mismatch compares") {
+    TempDir dir;
+    auto reference = [&](const std::string& name, const std::string& flags) {
+        const std::string out = (dir.path / name).string();
+        const Run r = run(kRef + " --width 24 --height 16 --samples 4 --quiet --out " + out + " " + flags);
+        INFO(r.output);
+        REQUIRE(r.code == 0);
+        return out;
+    };
+    const std::string base = reference("base", "");
+    const std::string again = reference("again", "--seed 7");   // another seed: the same view
+    const std::string eye = reference("eye", "--eye 3,2,-3");
+    const std::string radius = reference("radius", "--radius 0.25");
+    const std::string ortho = reference("ortho", "--ortho 1.5");
+    const std::string test = base + "/reference_ao.exr";
+
+    // What the header records (scene by file name, camera, radius).
+    refio::Attributes made;
+    std::string err;
+    REQUIRE(refio::read_exr_attributes(test, "ssao:", made, err));
+    auto field = [&](const std::string& name) {
+        for (const auto& a : made)
+            if (a.first == "ssao:" + name) return a.second;
+        return std::string("(none)");
+    };
+    CHECK(field("scene") == "spot-on-ground.glb");
+    CHECK(field("size") == "24x16");
+    CHECK(field("eye") == "2.3,1.6,-2.6");        // the bundled view, as ssao-host's default
+    CHECK(field("target") == "0,0.65,0");
+    CHECK(field("projection") == "perspective fov 45 deg");
+    CHECK(field("depth") == "[-1,1]");
+    CHECK(field("thickness") == "(none)");
+
+    const Run same = run(kErr + " " + test + " " + again);
+    INFO(same.output);
+    CHECK(same.code == 0);
+    CHECK(same.output.find("note") == std::string::npos);
+
+    struct Case {
+        std::string ref, line;
+    };
+    const Case cases[] = {
+        // Before: compared, PSNR printed, exit 0.
+        {eye, "ssao-error: error: " + test + " and " + eye + "/reference_ao.exr were made with a different eye: "
+              "2.3,1.6,-2.6 vs 3,2,-3 (--allow-mismatch compares them anyway).\n"},
+        {radius, "ssao-error: error: " + test + " and " + radius + "/reference_ao.exr were made with a different "
+                 "radius: 0.57418 vs 0.25 (--allow-mismatch compares them anyway).\n"},
+        {ortho, "ssao-error: error: " + test + " and " + ortho + "/reference_ao.exr were made with a different "
+                "projection: perspective fov 45 deg vs orthographic half-height 1.5 (--allow-mismatch compares them anyway).\n"},
+    };
+    for (const Case& c : cases) {
+        const Run r = run(kErr + " " + test + " " + c.ref);
+        CHECK(r.code == 1);
+        CHECK(r.output == c.line);
+        const Run allowed = run(kErr + " " + test + " " + c.ref + " --allow-mismatch");
+        INFO(allowed.output);
+        CHECK(allowed.code == 0);
+        CHECK(allowed.output.rfind("mismatch   ", 0) == 0);
+        CHECK(allowed.output.find("all ") != std::string::npos);
+    }
+
+    // An image without the record (another program, an older file): compared, with a note.
+    std::vector<float> y;
+    int w = 0, h = 0;
+    REQUIRE(refio::read_exr_channel(test, {"Y"}, y, w, h, err));
+    const std::string bare = (dir.path / "bare.exr").string();
+    REQUIRE(refio::write_exr(bare, w, h, {{"Y", &y}}, err));
+    const Run note = run(kErr + " " + bare + " " + eye);
+    INFO(note.output);
+    CHECK(note.code == 0);
+    CHECK(note.output.find("note       " + bare + " records no scene and camera") != std::string::npos);
 }
 
 }  // TEST_SUITE

@@ -419,3 +419,42 @@ TEST_CASE("--help is complete and names the demo script it ships") {
     const std::string path = r.out.substr(at + 20, r.out.find('\n', at) - at - 20);
     CHECK(fs::equivalent(path, SSAO_DEMO_SCRIPT));
 }
+
+TEST_CASE("a directory, a non-glTF file, a misspelled flag: one line each, before any window") {
+    const std::string dir = fresh_dir("refusals");
+    const std::string folder = dir + "/folder.glb", obj = dir + "/model.obj";
+    fs::create_directories(folder);
+    std::ofstream(obj) << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+    struct Case {
+        std::vector<std::string> args;
+        int code;
+        std::string line;
+    };
+    const Case cases[] = {
+        // Before: "cannot read the file."
+        {{folder}, 1, "ssao-viewer: error: cannot load the scene: " + folder + ": not a regular file but a directory."},
+        // Before: tinygltf's raw JSON parse error.
+        {{obj}, 1, "ssao-viewer: error: cannot load the scene: " + obj +
+                       ": not a glTF scene; the tools read glTF 2.0 only (a .gltf JSON file or a .glb binary), "
+                       "converted with e.g. Blender or obj2gltf."},
+        {{"--widht", "64"}, 2, "ssao-viewer: error: unknown flag '--widht'; did you mean --width? (see --help)"},
+        // Before: chapter was refused here but taken by ssao-host.
+        {{"--preset", "best"}, 2, "ssao-viewer: error: --preset expects one of low|medium|high|ultra|chapter, got 'best'"},
+    };
+    for (const Case& c : cases) {
+        const Run r = run("env -u DISPLAY", kViewer, c.args, dir);
+        INFO(r.err);
+        CHECK(r.exit_code == c.code);
+        REQUIRE(r.err_lines().size() == 1);
+        CHECK(r.err_lines()[0] == c.line);
+    }
+    // --preset chapter and --allow-outside-files are taken (the run then stops for want of a display).
+    const Run r = run("env -u DISPLAY -u WAYLAND_DISPLAY", kViewer, {"--preset", "chapter", "--allow-outside-files"}, dir);
+    CHECK(r.exit_code == 1);
+    REQUIRE(r.err_lines().size() == 1);
+    CHECK(r.err_lines()[0].rfind("ssao-viewer: error: cannot open a display (", 0) == 0);
+    const Run help = run("", kViewer, {"--help"}, dir);
+    CHECK(help.out.find("--allow-outside-files") != std::string::npos);
+    CHECK(help.out.find("low|medium|high|ultra|chapter") != std::string::npos);
+    CHECK(help.out.find("the bundled view of the cow") != std::string::npos);
+}

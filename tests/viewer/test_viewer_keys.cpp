@@ -177,11 +177,11 @@ TEST_CASE("the first frame's settings and camera are ssao-host's") {
     const ssao_settings expected = run_setup::build_settings(f.api(), host, f.scene, note);
     CHECK(std::memcmp(&c.state().settings, &expected, sizeof expected) == 0);
     CHECK(c.state().ssao);
-    bool from_scene = false;
+    camera::Source from_scene = camera::Source::Framed;
     const camera::Camera cam = run_setup::build_camera(host, f.scene, 4.0f / 3.0f, from_scene);
     CHECK(c.camera().eye == cam.eye);
     CHECK(c.camera().target == cam.target);
-    CHECK(c.camera().eye == run_setup::kBundledEye);
+    CHECK(c.camera().eye == camera::kBundledEye);
 }
 
 TEST_CASE("E R T Y U set the mode sheet's fields and keep the rest") {

@@ -1,0 +1,47 @@
+#!/usr/bin/env bash
+# ssao-host and ssao-reference start from one camera, and ssao-error checks it
+# (CTest: cli.same_view):
+#   test_same_view.sh HOST REFERENCE ERROR
+# Without a scene argument both use the bundled view of the cow, so their
+# images compare (all-pixels PSNR above 20 dB; two different cameras gave
+# 15.9 dB with exit 0). An ao.exr made from another eye, radius or size is
+# refused naming the field, unless --allow-mismatch.
+set -uo pipefail
+host=$1 reference=$2 error=$3
+work=$(mktemp -d /tmp/ssao-same-view.XXXXXX)
+trap 'rm -rf "$work"' EXIT
+failures=0
+check() {  # check DESCRIPTION COMMAND...: the command must succeed
+  local what=$1; shift
+  if "$@"; then echo "ok      $what"; else echo "FAILED  $what"; failures=$((failures + 1)); fi
+}
+small=(--width 64 --height 48)
+"$host" "${small[@]}" --only ao --frames 1 --out "$work/host" >"$work/host.log" 2>&1 || { cat "$work/host.log"; exit 1; }
+"$reference" "${small[@]}" --samples 32 --quiet --out "$work/ref" >"$work/ref.log" 2>&1 || { cat "$work/ref.log"; exit 1; }
+"$host" "${small[@]}" --only ao --frames 1 --eye 3,2,-3 --out "$work/eye" >/dev/null 2>&1
+"$host" "${small[@]}" --only ao --frames 1 --radius 0.3 --out "$work/radius" >/dev/null 2>&1
+
+check "both print the bundled view of the cow" bash -c \
+  'grep -q "camera: the bundled view of the cow, .*eye (2.3, 1.6, -2.6), target (0, 0.65, 0)" "$1/host.log" &&
+   grep -q "camera    the bundled view of the cow, eye (2.3, 1.6, -2.6), target (0, 0.65, 0)" "$1/ref.log"' _ "$work"
+"$error" "$work/host/ao.exr" "$work/ref" >"$work/error.log" 2>&1; code=$?
+check "ssao-error host vs reference, defaults: exit 0, no note, PSNR (all) above 20 dB ($(grep '^all' "$work/error.log"))" \
+  bash -c '[ "$1" -eq 0 ] && ! grep -q "^note" "$2" && awk '\''$1 == "all" { ok = ($4 + 0 > 20) } END { exit !ok }'\'' "$2"' \
+  _ "$code" "$work/error.log"
+
+expect_refused() {  # expect_refused TEST LINE: exit 1, stderr exactly LINE
+  "$error" "$1" "$work/ref" >"$work/stdout" 2>"$work/stderr"
+  local code=$?
+  [ "$code" -eq 1 ] && [ "$(cat "$work/stderr")" = "$2" ] ||
+    { echo "  exit $code: $(cat "$work/stderr")"; return 1; }
+}
+check "another --eye: refused, naming eye and both values" expect_refused "$work/eye/ao.exr" \
+  "ssao-error: error: $work/eye/ao.exr and $work/ref/reference_ao.exr were made with a different eye: 3,2,-3 vs 2.3,1.6,-2.6 (--allow-mismatch compares them anyway)."
+check "another --radius: refused, naming radius and both values" expect_refused "$work/radius/ao.exr" \
+  "ssao-error: error: $work/radius/ao.exr and $work/ref/reference_ao.exr were made with a different radius: 0.3 vs 0.57418 (--allow-mismatch compares them anyway)."
+check "--allow-mismatch compares them anyway, saying so" bash -c \
+  '"$1" "$2/eye/ao.exr" "$2/ref" --allow-mismatch | grep -q "^mismatch   eye: 3,2,-3 vs 2.3,1.6,-2.6, compared anyway"' \
+  _ "$error" "$work"
+
+[ "$failures" -eq 0 ] && echo "same view: all passed" || echo "same view: $failures FAILED"
+exit $((failures > 0))
