@@ -15,6 +15,7 @@ target_compile_options(ssao_host_gl PRIVATE ${SSAO_WARNINGS})
 add_library(ssao_host_app STATIC
   ${CMAKE_CURRENT_LIST_DIR}/cli.cpp
   ${CMAKE_CURRENT_LIST_DIR}/preset_text.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/report_text.cpp
   ${CMAKE_CURRENT_LIST_DIR}/debug_view_text.cpp
   ${CMAKE_CURRENT_LIST_DIR}/run_setup.cpp
   ${CMAKE_CURRENT_LIST_DIR}/composite.cpp

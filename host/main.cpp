@@ -15,6 +15,7 @@
 #include "plugin_loader.h"
 #include "preset_text.h"
 #include "provenance.h"
+#include "report_text.h"
 #include "run_setup.h"
 #include "scene.h"
 
@@ -454,16 +455,11 @@ int run(const cli::Options& o) {
                                  : ("perspective fov " + fmt(glm::degrees(cam.yfov)) + " deg").c_str(),
                 fmt(cam.eye).c_str(), fmt(cam.target).c_str(), fmt(cam.znear).c_str(),
                 std::isinf(cam.zfar) ? "inf" : fmt(cam.zfar).c_str(), cam.reverse_z ? ", reverse-Z [0,1]" : "");
-    std::printf("  ssao: %u samples, radius %s (%s), bias %s, kernel %s, distribution %s, rotation %s, blur %s "
-                "(radius %u), strength %s, power %s, output %s, method %s%s\n",
-                settings.sample_count, fmt(settings.radius).c_str(), radius_note.c_str(), fmt(settings.bias).c_str(),
-                cli::name(settings.kernel_shape), cli::name(settings.distribution), cli::name(settings.rotation),
-                cli::name(settings.blur), settings.blur_radius,
+    std::printf("  ssao: %s, radius %s (%s), bias %s, rotation %s, strength %s, power %s, output %s\n",
+                report_text::estimator(settings).c_str(), fmt(settings.radius).c_str(), radius_note.c_str(),
+                fmt(settings.bias).c_str(), cli::name(settings.rotation),
                 settings.strength == SSAO_STRENGTH_OFF ? "0 (off)" : fmt(settings.strength).c_str(),
-                fmt(settings.power).c_str(), cli::name(settings.output_format), cli::name(settings.method),
-                settings.method == SSAO_METHOD_VISIBILITY
-                    ? (" (steps " + std::to_string(settings.step_count) + ", thickness " + fmt(settings.thickness) + ")").c_str()
-                    : "");
+                fmt(settings.power).c_str(), cli::name(settings.output_format));
     // Printed only when one of them is on, so other runs print what they always did.
     if (settings.fade_end > 0.0f || settings.radius_pixels > 0.0f || o.frame_index != 0 || o.accumulate > 1) {
         std::printf("  ssao 1.2: fade %s, radius pixels %s, frame index %u, accumulate %d\n",
@@ -478,9 +474,8 @@ int run(const cli::Options& o) {
     if (o.debug_view != SSAO_DEBUG_VIEW_NONE)
         std::printf("  debug view: %s (one more execute, debug_view.png)\n", debug_view_text::name(o.debug_view));
     if (timings.available)
-        std::printf("  GPU times (frame %llu of %d): ao %.3f ms, blur %.3f ms, total %.3f ms\n",
-                    static_cast<unsigned long long>(timings.frame), o.frames, timings.ao_ms, timings.blur_ms,
-                    timings.total_ms);
+        std::printf("  GPU times (frame %llu of %d): %s\n", static_cast<unsigned long long>(timings.frame), o.frames,
+                    report_text::pass_times(timings).c_str());
     else
         std::printf("  GPU times: n/a (no timer results after %d frames)\n", o.frames);
     const fs::path out_abs = fs::absolute(o.out_dir).lexically_normal();

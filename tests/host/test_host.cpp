@@ -229,6 +229,15 @@ TEST_CASE("the bundled scene renders every file and the report") {
     CHECK(r.out.find("5,858 triangles") != std::string::npos);
     CHECK(r.out.find("GPU times") != std::string::npos);
     CHECK(r.out.find(fs::absolute(dir).lexically_normal().string()) != std::string::npos);
+    // The report names what the DEFAULT preset runs, and each pass under its
+    // own name: the upsample is not a blur, and no blur runs.
+    CHECK(r.out.find("ssao: visibility, 8 directions x 4 steps, half resolution, no blur, thickness ") !=
+          std::string::npos);
+    CHECK(r.out.find("kernel hemisphere") == std::string::npos);
+    CHECK(r.out.find("downsample ") != std::string::npos);
+    CHECK(r.out.find("ao ") != std::string::npos);
+    CHECK(r.out.find("upsample ") != std::string::npos);
+    CHECK(r.out.find("blur x") == std::string::npos);
 
     const Image ao = load_exr(dir + "/ao.exr");
     CHECK(ao.w == 128);
