@@ -626,9 +626,10 @@ TEST_CASE("--method, --thickness and --steps reach the plugin") {
 
     const auto kernel = render("method_kernel", {"--method", "kernel"});
     const auto vis = render("method_visibility", {"--method", "visibility"});
-    CHECK(kernel.second.find("method kernel") != std::string::npos);
+    CHECK(kernel.second.find("ssao: kernel, ") != std::string::npos);
     std::ostringstream summary;
-    summary << "method visibility (steps " << d.step_count << ", thickness " << d.thickness << ")";
+    summary << "ssao: visibility, " << d.sample_count << " directions x " << d.step_count << " steps, "
+            << "half resolution, no blur, thickness " << d.thickness << ",";
     CHECK(vis.second.find(summary.str()) != std::string::npos);
     const Diff km = compare(kernel.first, vis.first);
     MESSAGE("kernel vs visibility: mean |diff| " << km.mean << ", max " << km.max);
@@ -644,7 +645,7 @@ TEST_CASE("--method, --thickness and --steps reach the plugin") {
 
     // Steps: a different march, a different image.
     const auto one_step = render("method_one_step", {"--method", "visibility", "--steps", "1"});
-    CHECK(one_step.second.find("method visibility (steps 1,") != std::string::npos);
+    CHECK(one_step.second.find(" x 1 steps,") != std::string::npos);
     CHECK(compare(vis.first, one_step.first).mean > 1e-3);
 
     // Thickness: a height field (huge thickness) blocks everything the
@@ -667,13 +668,13 @@ TEST_CASE("scene hints set the AO settings and flags override them") {
     const Run r = run_host({kData + "/hinted.gltf", "--out", dir, "--width", "48", "--height", "48", "--only", "ao"});
     INFO("stdout: " << r.out << "\nstderr: " << r.err);
     REQUIRE(r.exit_code == 0);
-    CHECK(r.out.find("8 samples, radius 0.75 (scene hint)") != std::string::npos);
-    CHECK(r.out.find("blur box") != std::string::npos);
+    CHECK(r.out.find("8 directions x 4 steps, half resolution, 4x4 box blur") != std::string::npos);
+    CHECK(r.out.find("radius 0.75 (scene hint)") != std::string::npos);
     const Run r2 = run_host({kData + "/hinted.gltf", "--out", dir, "--width", "48", "--height", "48", "--only", "ao",
                              "--samples", "4", "--radius", "0.3", "--blur", "none"});
     REQUIRE(r2.exit_code == 0);
-    CHECK(r2.out.find("4 samples, radius 0.3 (--radius)") != std::string::npos);
-    CHECK(r2.out.find("blur none") != std::string::npos);
+    CHECK(r2.out.find("4 directions x 4 steps, half resolution, no blur") != std::string::npos);
+    CHECK(r2.out.find("radius 0.3 (--radius)") != std::string::npos);
     // Without hints the radius follows the scene's size.
     const Run r3 = run_host({kData + "/nested.gltf", "--out", dir, "--width", "48", "--height", "48", "--only", "ao"});
     REQUIRE(r3.exit_code == 0);

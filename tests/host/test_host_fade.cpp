@@ -87,7 +87,8 @@ TEST_CASE("fade and radius-in-pixels hints in glTF extras set the settings, and 
     REQUIRE(r.exit_code == 0);
     CHECK(r.out.find("ssao 1.2: fade 2.5..9, radius pixels 12, frame index 0, accumulate 1") != std::string::npos);
     // The other hints still apply beside them.
-    CHECK(r.out.find("8 samples, radius 0.75 (scene hint)") != std::string::npos);
+    CHECK(r.out.find("8 directions x 4 steps") != std::string::npos);
+    CHECK(r.out.find("radius 0.75 (scene hint)") != std::string::npos);
     const Run f = run_host(with({scene, "--out", dir, "--fade-start", "1", "--fade-end", "4", "--radius-pixels", "5"}, kSmall));
     INFO("stdout: " << f.out << "\nstderr: " << f.err);
     REQUIRE(f.exit_code == 0);

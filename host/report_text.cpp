@@ -1,0 +1,53 @@
+#include "report_text.h"
+
+#include "cli.h"
+#include "preset_text.h"
+
+#include <cstdio>
+
+namespace report_text {
+
+namespace {
+
+std::string ms(const char* name, double v) {
+    char buffer[64];
+    std::snprintf(buffer, sizeof buffer, "%s %.3f ms", name, v);
+    return buffer;
+}
+
+// The names of the debug groups (docs/api.md, "Debugger names"), so the printed
+// times and a GPU debugger's capture say the same.
+const char* pass_name(uint32_t kind) {
+    switch (kind) {
+        case SSAO_PASS_AO: return "ao";
+        case SSAO_PASS_BLUR_X: return "blur x";
+        case SSAO_PASS_BLUR_Y: return "blur y";
+        case SSAO_PASS_CLEAR: return "clear";
+        case SSAO_PASS_DOWNSAMPLE: return "downsample";
+        case SSAO_PASS_UPSAMPLE: return "upsample";
+        default: return "pass";
+    }
+}
+
+}  // namespace
+
+std::string estimator(const ssao_settings& s) {
+    std::string words = preset_text::describe(s);
+    char buffer[64];
+    if (s.method == SSAO_METHOD_VISIBILITY) {
+        std::snprintf(buffer, sizeof buffer, ", thickness %.4g", static_cast<double>(s.thickness));
+        words += buffer;
+    } else {
+        words += std::string(", kernel ") + cli::name(s.kernel_shape);
+    }
+    return words;
+}
+
+std::string pass_times(const ssao_timings& t) {
+    std::string line;
+    for (uint32_t i = 0; i < t.pass_count && i < SSAO_MAX_PASSES; ++i)
+        line += ms(pass_name(t.pass_kind[i]), t.pass_ms[i]) + ", ";
+    return line + ms("total", t.total_ms);
+}
+
+}  // namespace report_text
