@@ -258,7 +258,7 @@ std::string help_text(const ssao_settings* d, const std::string& default_scene, 
          "  --width N, --height N   image size, 1..16384 (default 800 x 600)\n"
          "  --frames N              plugin executions before reading GPU times, 1..1000 (default 8)\n"
          "  --plugin PATH           libssao.so to load (default $SSAO_PLUGIN, else ../lib/libssao.so.1 beside\n"
-         "                          the program, else the build tree's, else the system's; README \"Finding the plugin\")\n"
+         "                          the program, else the build tree's, else the system's; docs/install.md, \"Finding the plugin\")\n"
          "  --gl33                  ask for a GL 3.3 core context (default 4.5 core)\n"
          "  --allow-outside-files   let the scene's buffer URIs name files outside its folder (absolute\n"
          "                          paths, '..', symbolic links leading out); refused by default\n"

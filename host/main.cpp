@@ -1,6 +1,6 @@
 // ssao-host: renders a glTF scene headless, runs the SSAO plugin (seen only
 // through include/ssao/ssao.h and dlopen) and writes pictures with and without
-// ambient occlusion. See the README, section "ssao-host".
+// ambient occlusion. See docs/tools.md, "ssao-host".
 #include "camera.h"
 #include "cli.h"
 #include "composite.h"

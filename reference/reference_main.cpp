@@ -102,7 +102,7 @@ std::string help_text() {
     "  --dump-buffers     also write reference_depth.exr and reference_normal.exr\n"
     "  --limit            also write the depth-only limit: limit_ao.exr (Y, A as reference_ao.exr),\n"
     "                     limit_stderr.exr and limit_ao.png - the AO of an ideal ray-marcher over\n"
-    "                     this image's single depth layer (README: \"The depth-only limit\")\n"
+    "                     this image's single depth layer (docs/reference.md, \"The depth-only limit\")\n"
     "  --thickness T|inf  with --limit: a point behind the depth layer by less than T (view depth,\n"
     "                     scene units) is blocked, > 0 (default " + flags_num(depth_limit::kDefaultThicknessOfR) +
     " x R; inf: a height field)\n"

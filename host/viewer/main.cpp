@@ -1,6 +1,6 @@
 // ssao-viewer: the SSAO plugin on a glTF scene in a window, driven by the
 // reference demo's keys. The same scene loader, G-buffer, lighting and plugin
-// (through dlopen and the C ABI) as ssao-host; see the README, "ssao-viewer".
+// (through dlopen and the C ABI) as ssao-host; see docs/tools.md, "ssao-viewer".
 #include "controls.h"
 #include "image_io.h"
 #include "locate.h"

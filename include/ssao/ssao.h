@@ -240,7 +240,7 @@ typedef enum ssao_method {
                                      each marched to radius in step_count jittered steps; a step is
                                      blocked when it lies behind the depth buffer by less than
                                      thickness. Converges to the cosine-weighted open fraction of the
-                                     hemisphere that one depth layer can show (README, "Estimators") */
+                                     hemisphere that one depth layer can show (docs/benchmark.md, "Estimators") */
     SSAO_METHOD_MAX_ENUM = 0x7fffffff  /* not a value: keeps the enum 32 bits wide */
 } ssao_method;
 
@@ -248,7 +248,7 @@ typedef enum ssao_method {
  * resolution a downsample pass picks one real texel of each 2x2 (4x4) block of
  * the viewport (never an average of depths), the sampling pass and the blur
  * run on that grid, and a depth-aware upsample writes every viewport pixel
- * (README, "Half resolution"). */
+ * (docs/api.md, "Half resolution"). */
 typedef enum ssao_resolution {
     SSAO_RESOLUTION_DEFAULT = 0,  /* the method's default: the DEFAULT preset's (half) for its method */
     SSAO_RESOLUTION_FULL = 1,     /* one AO sample per viewport pixel */
@@ -463,7 +463,7 @@ typedef enum ssao_pass {
     /* Where KHR_debug is present each pass runs inside a debug group named
      * "ssao: ao", "ssao: blur x", "ssao: blur y", "ssao: clear",
      * "ssao: downsample" or "ssao: upsample", all inside one group "ssao"
-     * (see the README, "Debugger names"). */
+     * (see docs/api.md, "Debugger names"). */
     SSAO_PASS_MAX_ENUM = 0x7fffffff  /* not a value: keeps the enum 32 bits wide */
 } ssao_pass;
 
