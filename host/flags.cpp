@@ -17,21 +17,24 @@ namespace flags {
 void fail(const std::string& message) { throw Error{message}; }
 
 std::string quoted(const std::string& s) {
-    // Control characters escaped: an argument with a line break must not
-    // make a usage error two lines.
-    std::string out = "'";
-    for (const char ch : s) {
-        const auto c = static_cast<unsigned char>(ch);
+    return "'" + printable(s) + "'";
+}
+
+std::string printable(const std::string& s, size_t max_shown) {
+    std::string out;
+    for (size_t i = 0; i < s.size() && i < max_shown; ++i) {
+        const auto c = static_cast<unsigned char>(s[i]);
         if (c < 0x20 || c == 0x7f) {
             static const char hex[] = "0123456789abcdef";
             out += "\\x";
             out += hex[c >> 4];
             out += hex[c & 15];
         } else {
-            out += ch;
+            out += static_cast<char>(c);
         }
     }
-    return out + "'";
+    if (s.size() > max_shown) out += "...";
+    return out;
 }
 
 double number(const std::string& flag, const std::string& text, bool allow_inf) {

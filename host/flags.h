@@ -18,7 +18,10 @@ struct Error {
     std::string message;
 };
 [[noreturn]] void fail(const std::string& message);
-// 's' for messages, its control characters written \xNN (one line always).
+// `s` fit for a one-line message: control characters written \xNN, and at
+// most `max_shown` bytes of it, then "..." (a URI can be megabytes long).
+std::string printable(const std::string& s, size_t max_shown = std::string::npos);
+// 's' for messages: printable(s) in quotes.
 std::string quoted(const std::string& s);
 
 // A finite number ("inf" too when allowed).

@@ -1,18 +1,10 @@
 // gltf_files.cpp - see gltf_files.h.
 #include "gltf_files.h"
 
+#include "flags.h"
 #include "input_file.h"
 
-#if defined(__GNUC__)
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wshadow"
-#pragma GCC diagnostic ignored "-Wunused-parameter"
-#pragma GCC diagnostic ignored "-Wpedantic"
-#endif
-#include <tiny_gltf.h>
-#if defined(__GNUC__)
-#pragma GCC diagnostic pop
-#endif
+#include "tiny_gltf_quiet.h"
 
 #include <nlohmann/json.hpp>
 
@@ -26,26 +18,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// A URI or a path made from one, fit for a one-line message: control
-// characters escaped, and cut short (a URI can be megabytes long).
-std::string printable(const std::string& s, size_t max_shown = 160) {
-    std::string out;
-    for (size_t i = 0; i < s.size() && i < max_shown; ++i) {
-        const auto c = static_cast<unsigned char>(s[i]);
-        if (c < 0x20 || c == 0x7f) {
-            static const char hex[] = "0123456789abcdef";
-            out += "\\x";
-            out += hex[c >> 4];
-            out += hex[c & 15];
-        } else {
-            out += static_cast<char>(c);
-        }
-    }
-    if (s.size() > max_shown) out += "...";
-    return out;
-}
-
-std::string quote_uri(const std::string& s) { return "'" + printable(s) + "'"; }
+// A URI for a one-line message: escaped and cut short.
+std::string quote_uri(const std::string& s) { return "'" + flags::printable(s, 160) + "'"; }
 
 unsigned char from_hex(unsigned char c) {
     if (c >= '0' && c <= '9') return static_cast<unsigned char>(c - '0');
@@ -213,7 +187,7 @@ bool GltfFiles::read(const std::string& uri, std::vector<unsigned char>& out) {
     const uint64_t length = b.lengths[b.reads++];
     input_file::File file;
     std::string why;
-    if (!file.open(b.path, why)) return refuse(which + " -> " + printable(why, 8192));
+    if (!file.open(b.path, why)) return refuse(which + " -> " + flags::printable(why, 8192));
     // tinygltf takes a buffer file only at exactly its byteLength: anything
     // else is refused before it is read, without saying the file's size.
     if (file.size() != length)
@@ -221,7 +195,7 @@ bool GltfFiles::read(const std::string& uri, std::vector<unsigned char>& out) {
                       " bytes its byteLength declares.");
     if (length > budget_left_)
         return refuse(which + " takes the scene's buffer files past their budget of " + input_file::size_text(budget_) + ".");
-    if (!file.read_all(length, out, why)) return refuse(which + " -> " + printable(why, 8192));
+    if (!file.read_all(length, out, why)) return refuse(which + " -> " + flags::printable(why, 8192));
     if (out.size() != length)
         return refuse(which + " names a file whose size is not the " + std::to_string(length) +
                       " bytes its byteLength declares.");

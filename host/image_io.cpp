@@ -1,5 +1,7 @@
 #include "image_io.h"
 
+#include "exr_attributes.h"
+
 #include <tinyexr.h>
 #define STB_IMAGE_WRITE_IMPLEMENTATION
 #include <stb/stb_image_write.h>
@@ -85,14 +87,7 @@ void StagedOutput::exr(const std::string& name, int width, int height, const std
     header.pixel_types = &pixel_type;
     header.requested_pixel_types = &pixel_type;
     header.compression_type = TINYEXR_COMPRESSIONTYPE_ZIP;
-    std::vector<EXRAttribute> custom(attributes.size());
-    for (size_t i = 0; i < attributes.size(); ++i) {
-        std::memset(&custom[i], 0, sizeof custom[i]);
-        std::strncpy(custom[i].name, attributes[i].first.c_str(), sizeof custom[i].name - 1);
-        std::strcpy(custom[i].type, "string");
-        custom[i].value = reinterpret_cast<unsigned char*>(const_cast<char*>(attributes[i].second.data()));
-        custom[i].size = static_cast<int>(attributes[i].second.size());
-    }
+    std::vector<EXRAttribute> custom = exr_attributes::strings(attributes);
     header.num_custom_attributes = static_cast<int>(custom.size());
     header.custom_attributes = custom.empty() ? nullptr : custom.data();
     float* planes[1] = {const_cast<float*>(pixels.data())};

@@ -1,5 +1,7 @@
 #include "image_io.h"
 
+#include "exr_attributes.h"
+
 #include "input_file.h"
 
 #include <tinyexr.h>
@@ -81,14 +83,7 @@ bool write_exr(const std::string& path, int width, int height, std::vector<Chann
     header.pixel_types = types.data();
     header.requested_pixel_types = types.data();
     header.compression_type = TINYEXR_COMPRESSIONTYPE_ZIP;
-    std::vector<EXRAttribute> custom(attributes.size());
-    for (size_t i = 0; i < attributes.size(); ++i) {
-        std::memset(&custom[i], 0, sizeof custom[i]);
-        std::strncpy(custom[i].name, attributes[i].first.c_str(), sizeof custom[i].name - 1);
-        std::strcpy(custom[i].type, "string");
-        custom[i].value = reinterpret_cast<unsigned char*>(const_cast<char*>(attributes[i].second.data()));
-        custom[i].size = int(attributes[i].second.size());
-    }
+    std::vector<EXRAttribute> custom = exr_attributes::strings(attributes);
     header.num_custom_attributes = int(custom.size());
     header.custom_attributes = custom.empty() ? nullptr : custom.data();
     const char* err = nullptr;

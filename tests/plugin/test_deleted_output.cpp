@@ -6,12 +6,13 @@
 #include <doctest/doctest.h>
 
 #include "gl_fixture.h"
+#include "crease_textures.h"
 #include "test_scenes.h"
 
 #include <string>
 #include <vector>
 
-using testscenes::crease_scene;
+using testscenes::CreaseTextures;
 using testscenes::kFov;
 using testscenes::make;
 
@@ -20,17 +21,8 @@ namespace {
 constexpr int kSize = 32;
 constexpr int kSmallW = 24, kSmallH = 20;  // the size-change viewport
 
-struct Scene {
-    GLuint depth = 0, normal = 0;
-    ssao_inputs in{};
-    explicit Scene(testgl::Fixture& fx) {
-        const auto proj = analytic::perspective(kFov, 1.0, 0.1, 100.0);
-        const analytic::GBuffer g = analytic::render(crease_scene(), proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, kSize, kSize);
-        depth = fx.make_depth(GL_DEPTH_COMPONENT32F, kSize, kSize, g.depth);
-        normal = fx.make_normals(GL_RGBA16F, kSize, kSize, g.normal);
-        in = fx.inputs(depth, normal, proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE);
-        fx.settings(make(8, SSAO_BLUR_DEFAULT));
-    }
+struct Scene : CreaseTextures {
+    explicit Scene(testgl::Fixture& fx) : CreaseTextures(fx, kSize) { fx.settings(make(8, SSAO_BLUR_DEFAULT)); }
     ssao_inputs small() const {
         ssao_inputs s = in;
         s.viewport[0] = 3;

@@ -7,6 +7,7 @@
 
 #include "debug_groups.h"
 #include "gl_fixture.h"
+#include "crease_textures.h"
 #include "gl_state_snapshot.h"
 #include "other_context.h"
 #include "test_scenes.h"
@@ -17,7 +18,7 @@
 #include <vector>
 
 using testgl::OtherContext;
-using testscenes::crease_scene;
+using testscenes::CreaseTextures;
 using testscenes::kFov;
 using testscenes::make;
 
@@ -26,16 +27,8 @@ namespace {
 constexpr int kSize = 32;
 
 // The crease scene's G-buffer, uploaded on the fixture's (current) context.
-struct Scene {
-    GLuint depth = 0, normal = 0;
-    ssao_inputs in{};
-    explicit Scene(testgl::Fixture& fx) {
-        const auto proj = analytic::perspective(kFov, 1.0, 0.1, 100.0);
-        const analytic::GBuffer g = analytic::render(crease_scene(), proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, kSize, kSize);
-        depth = fx.make_depth(GL_DEPTH_COMPONENT32F, kSize, kSize, g.depth);
-        normal = fx.make_normals(GL_RGBA16F, kSize, kSize, g.normal);
-        in = fx.inputs(depth, normal, proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE);
-    }
+struct Scene : CreaseTextures {
+    explicit Scene(testgl::Fixture& fx) : CreaseTextures(fx, kSize) {}
 };
 
 // Names 1..255 that are objects of a kind in the current context.
