@@ -44,8 +44,10 @@ struct ssao_context {
     GLuint vao = 0, fbo = 0, ubo_frame = 0, ubo_kernel = 0, noise_texture = 0, sampler = 0;
     // The vertex array's label, unique in the process (empty without
     // KHR_debug): how execute recognises the creating GL context
-    // (context_identity.cpp).
+    // (context_identity.cpp). The output texture's label carries the same
+    // number, so a second context's output is never taken for this one's.
     std::string vao_label;
+    std::string output_label;
 
     // The plan's intermediate textures, each with the size and format it was
     // last allocated at, and the plugin-owned output (resources.cpp). They

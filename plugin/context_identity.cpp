@@ -12,9 +12,9 @@ namespace ssao_impl {
 namespace {
 
 // Distinct for every context of the process, whichever thread creates it.
-std::string unique_vertex_array_label() {
+unsigned long long unique_number() {
     static std::atomic<unsigned long long> next{1};
-    return std::string(kLabelVertexArray) + " " + std::to_string(next.fetch_add(1));
+    return next.fetch_add(1);
 }
 
 }  // namespace
@@ -27,8 +27,10 @@ void mark_creating_context(ssao_context& ctx) {
     gl.GetIntegerv(GL_VERTEX_ARRAY_BINDING, &host_vao);
     gl.BindVertexArray(ctx.vao);
     gl.BindVertexArray(static_cast<GLuint>(host_vao));
+    const std::string number = std::to_string(unique_number());
+    ctx.output_label = std::string(kLabelOutput) + " " + number;
     if (ctx.debug.available && ctx.gl.GetObjectLabel) {
-        ctx.vao_label = unique_vertex_array_label();
+        ctx.vao_label = std::string(kLabelVertexArray) + " " + number;
         label_object(ctx, GL_VERTEX_ARRAY, ctx.vao, ctx.vao_label.c_str());
     }
 }

@@ -24,7 +24,7 @@ constexpr const char* kLabelSampler = "ssao: sampler";
 constexpr const char* kLabelFrameBlock = "ssao: frame constants";
 constexpr const char* kLabelKernelBlock = "ssao: kernel";
 constexpr const char* kLabelNoise = "ssao: noise";
-constexpr const char* kLabelOutput = "ssao: output";
+constexpr const char* kLabelOutput = "ssao: output";  // + " <n>", the vertex array's number
 constexpr const char* kLabelTimer = "ssao: timer";
 // Intermediates are "ssao: intermediate <i>" (resources.cpp).
 

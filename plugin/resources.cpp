@@ -76,7 +76,8 @@ GLenum PlanTextures::target_of(const TexRef& ref) const {
 }
 
 bool owned_output_alive(const ssao_context& ctx) {
-    return ctx.output != 0 && ctx.gl.IsTexture(ctx.output) && has_label(ctx, GL_TEXTURE, ctx.output, kLabelOutput);
+    return ctx.output != 0 && ctx.gl.IsTexture(ctx.output) &&
+           has_label(ctx, GL_TEXTURE, ctx.output, ctx.output_label.c_str());
 }
 
 void forget_deleted_output(ssao_context& ctx) {
@@ -102,7 +103,8 @@ ssao_status update_resources(ssao_context& ctx, const FramePlan& plan, const Ana
     }
     const bool new_output = output_stale(ctx, plan);
     if (new_output) {
-        allocate(ctx, ctx.output, plan.output_format, plan.output_width, plan.output_height, kLabelOutput);
+        allocate(ctx, ctx.output, plan.output_format, plan.output_width, plan.output_height,
+                 ctx.output_label.c_str());
         ctx.output_width = plan.output_width;
         ctx.output_height = plan.output_height;
         ctx.output_format = plan.output_format;

@@ -25,7 +25,7 @@ struct PlanTextures {
 
 // Whether ctx.output still names the library's output texture: the host may
 // have deleted it (glIsTexture false), and a texture of the host's may have
-// taken the name since (its label is not "ssao: output"; only told apart with
+// taken the name since (its label is not this context's "ssao: output <n>"; told apart only with
 // KHR_debug). Queries only.
 bool owned_output_alive(const ssao_context& ctx);
 

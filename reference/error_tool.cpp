@@ -53,7 +53,7 @@ const char* kHelp =
     "  --csv FILE        append one row per mask to FILE (header written when FILE is new)\n"
     "  --label TEXT      first CSV column (default: TEST's path)\n"
     "  --allow-mismatch  compare even when the images' headers say they were made with different\n"
-    "                    scenes, sizes, cameras, radii or thicknesses (refused by default)\n"
+    "                    scenes, sizes, cameras or radii (refused by default)\n"
     "  --help, -h        this text\n"
     "  --version         the version\n"
     "\n"
@@ -63,8 +63,9 @@ const char* kHelp =
     "\n"
     "ssao-host and ssao-reference record in their EXR headers what an image was made with (ssao:scene,\n"
     "size, projection, near, far, depth, eye, target, up, radius, thickness). ssao-error compares the\n"
-    "fields both images carry and refuses a difference, naming the field; an image without them (an\n"
-    "older file, another program) is compared unchecked, with a note.\n";
+    "fields both images carry (TEST and the limit against the reference; thickness, which the\n"
+    "reference has not, is recorded but not compared) and refuses a difference, naming the field; an\n"
+    "image without them (an older file, another program) is compared unchecked, with a note.\n";
 
 bool is_dir(const std::string& p) {
     struct stat st;
@@ -210,6 +211,10 @@ static int run(int argc, char** argv) {
             const std::string* b_path;
             const refio::Attributes* b;
         };
+        // Both against the reference, so TEST and the limit agree too on every
+        // field all three carry. Thickness is not compared: the reference has
+        // none, and the split measures an estimator's own thickness against
+        // the limit's T (a different one is a finding, not a mistake).
         std::vector<Pair> pairs = {{&test_path, &test_made, &ref_path, &ref_made}};
         if (!limit_path.empty()) pairs.push_back({&limit_path, &limit_made, &ref_path, &ref_made});
         for (const Pair& p : pairs) {
@@ -223,11 +228,15 @@ static int run(int argc, char** argv) {
                 std::fprintf(stderr,
                              "ssao-error: error: %s and %s were made with a different %s: %s vs %s (--allow-mismatch "
                              "compares them anyway).\n",
-                             p.a_path->c_str(), p.b_path->c_str(), d->field.c_str(), d->a.c_str(), d->b.c_str());
+                             flags::printable(*p.a_path, 160).c_str(), flags::printable(*p.b_path, 160).c_str(),
+                             flags::printable(d->field, 160).c_str(), flags::printable(d->a, 160).c_str(),
+                             flags::printable(d->b, 160).c_str());
                 return 1;
             }
-            if (d) std::printf("mismatch   %s: %s vs %s, compared anyway (--allow-mismatch)\n", d->field.c_str(),
-                               d->a.c_str(), d->b.c_str());
+            if (d)
+                std::printf("mismatch   %s: %s vs %s, compared anyway (--allow-mismatch)\n",
+                            flags::printable(d->field, 160).c_str(), flags::printable(d->a, 160).c_str(),
+                            flags::printable(d->b, 160).c_str());
         }
     }
 

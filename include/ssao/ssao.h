@@ -30,7 +30,9 @@
  * - Functions return an ssao_status. No function aborts, throws or prints;
  *   when a context is given, ssao_api.last_error(ctx) holds a sentence on the
  *   most recent failure of that context. A failing call changes nothing (no
- *   settings applied, no GL state changed, no output written).
+ *   settings applied, no GL state changed, no output written), with one
+ *   exception: destroy_context always frees the context, even when it returns
+ *   SSAO_ERROR_WRONG_CONTEXT; never call it twice on the same context.
  *
  * Threading and lifetime
  * - A context belongs to the one GL context that was current at
@@ -53,8 +55,9 @@
  * - The texture returned for plugin-owned output stays valid until the next
  *   execute that changes the viewport size or output format, or destroy_context.
  *   If the host deletes it, the next execute notices (glIsTexture, and with
- *   KHR_debug its "ssao: output" label, so a host texture that reused the
- *   name is left alone) and makes a new one; destroy_context then deletes
+ *   KHR_debug its "ssao: output <n>" label, n unique to the ssao_context, so
+ *   a host texture or another context's output that reused the name is left
+ *   alone) and makes a new one; destroy_context then deletes
  *   only a texture that is still the library's.
  * - destroy_context deletes every GL object the library made; call it while
  *   the GL context is still current (after that context is gone it only
