@@ -65,7 +65,10 @@ bool GltfFiles::plan(const unsigned char* json, size_t size, const std::string& 
 
     std::error_code ec;
     fs::path folder = fs::path(scene_path).parent_path();
-    folder = fs::weakly_canonical(fs::absolute(folder.empty() ? fs::path(".") : folder, ec), ec);
+    folder = fs::absolute(folder.empty() ? fs::path(".") : folder, ec);
+    if (!ec) folder = fs::weakly_canonical(folder, ec);
+    // An empty folder would hold every path (inside() compares components).
+    if (!ec && folder.empty()) ec = std::make_error_code(std::errc::no_such_file_or_directory);
     if (ec) {
         error = scene_path + ": cannot resolve the scene's folder (" + ec.message() + ").";
         return false;

@@ -59,6 +59,13 @@ bool File::open(const std::string& path, std::string& error) {
         error = path + ": not a regular file but " + kind_text(st.st_mode) + ".";
         return false;
     }
+    // A regular file now: reads block as usual (some file systems answer
+    // EAGAIN to a non-blocking read).
+    const int flags = ::fcntl(fd_, F_GETFL);
+    if (flags < 0 || ::fcntl(fd_, F_SETFL, flags & ~O_NONBLOCK) != 0) {
+        error = path + ": cannot read the file (" + std::strerror(errno) + ").";
+        return false;
+    }
     size_ = st.st_size > 0 ? uint64_t(st.st_size) : 0;
     return true;
 }
