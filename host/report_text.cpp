@@ -15,21 +15,21 @@ std::string ms(const char* name, double v) {
     return buffer;
 }
 
-// The names of the debug groups (docs/api.md, "Debugger names"), so the printed
-// times and a GPU debugger's capture say the same.
-const char* pass_name(uint32_t kind) {
+}  // namespace
+
+// The debug groups' names, so the printed times and a GPU debugger's capture
+// say the same.
+const char* pass_name(uint32_t kind, bool brief) {
     switch (kind) {
         case SSAO_PASS_AO: return "ao";
         case SSAO_PASS_BLUR_X: return "blur x";
         case SSAO_PASS_BLUR_Y: return "blur y";
         case SSAO_PASS_CLEAR: return "clear";
-        case SSAO_PASS_DOWNSAMPLE: return "downsample";
-        case SSAO_PASS_UPSAMPLE: return "upsample";
+        case SSAO_PASS_DOWNSAMPLE: return brief ? "down" : "downsample";
+        case SSAO_PASS_UPSAMPLE: return brief ? "up" : "upsample";
         default: return "pass";
     }
 }
-
-}  // namespace
 
 std::string estimator(const ssao_settings& s) {
     std::string words = preset_text::describe(s);

@@ -13,6 +13,10 @@ namespace report_text {
 // reads: thickness for visibility, the kernel's shape for the kernel).
 std::string estimator(const ssao_settings& resolved);
 
+// A pass's name: its debug group's ("downsample", docs/api.md "Debugger
+// names"), or with `brief` the viewer overlay's shorter one ("down").
+const char* pass_name(uint32_t kind, bool brief = false);
+
 // "downsample 1.2 ms, ao 30.1 ms, upsample 13.7 ms, total 45.0 ms": each pass
 // under its debug-group name, in the order it ran.
 std::string pass_times(const ssao_timings& timings);

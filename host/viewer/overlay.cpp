@@ -4,6 +4,7 @@
 #include "debug_view_text.h"
 #include "gl_util.h"
 #include "modes.h"
+#include "report_text.h"
 
 #include <stb/stb_easy_font.h>
 
@@ -65,20 +66,6 @@ std::string printf_string(const char* format, ...) {
     return buffer;
 }
 
-const char* pass_name(uint32_t kind) {
-    switch (kind) {
-        case SSAO_PASS_AO: return "ao";
-        case SSAO_PASS_BLUR_X: return "blur x";
-        case SSAO_PASS_BLUR_Y: return "blur y";
-        case SSAO_PASS_CLEAR: return "clear";
-#ifdef SSAO_SETTINGS_SIZE_1_0   // interface 1.1: the reduced-resolution passes
-        case SSAO_PASS_DOWNSAMPLE: return "down";
-        case SSAO_PASS_UPSAMPLE: return "up";
-#endif
-        default: return "pass";
-    }
-}
-
 #ifdef SSAO_SETTINGS_SIZE_1_0
 const char* resolution_name(ssao_resolution r) {
     switch (r) {
@@ -95,12 +82,12 @@ std::string gpu_line(const ssao_timings& t) {
 #ifdef SSAO_MAX_PASSES   // interface 1.1 timings: every pass on its own
     if (t.pass_count > 0 && t.pass_count <= SSAO_MAX_PASSES) {
         for (uint32_t i = 0; i < t.pass_count; ++i)
-            line += printf_string(" %s %.3f ", pass_name(t.pass_kind[i]), t.pass_ms[i]);
+            line += printf_string(" %s %.3f ", report_text::pass_name(t.pass_kind[i], true), t.pass_ms[i]);
         return line + printf_string(" total %.3f", t.total_ms);
     }
 #endif
     // 1.0 timings: the sampling pass and the blur passes together.
-    return line + printf_string(" %s %.3f  blur %.3f  total %.3f", pass_name(SSAO_PASS_AO), t.ao_ms, t.blur_ms, t.total_ms);
+    return line + printf_string(" %s %.3f  blur %.3f  total %.3f", report_text::pass_name(SSAO_PASS_AO, true), t.ao_ms, t.blur_ms, t.total_ms);
 }
 
 constexpr int kMargin = 2;   // font pixels around the text on its dark band

@@ -7,13 +7,7 @@
 # output files, or the same message for a bad value).
 set -uo pipefail
 host=$1 reference=$2 error=$3 bench=$4 viewer=${5:-}
-work=$(mktemp -d /tmp/ssao-cli.XXXXXX)
-trap 'rm -rf "$work"' EXIT
-failures=0
-check() {  # check DESCRIPTION COMMAND...: the command must succeed
-  local what=$1; shift
-  if "$@"; then echo "ok      $what"; else echo "FAILED  $what"; failures=$((failures + 1)); fi
-}
+. "$(dirname "$0")/checks.sh"
 
 # expect_usage_error TOOL FLAG ARGS...: exit 2, exactly one stderr line, naming FLAG.
 expect_usage_error() {
@@ -90,5 +84,4 @@ check "ssao-error --band=2 and --band 2 print the same table" bash -c '
   cmp -s <("$1" "$2/r1/reference_ao.exr" "$2/r1" --band=2 --label=x) <("$1" "$2/r1/reference_ao.exr" "$2/r1" --band 2 --label x)' \
   _ "$error" "$work"
 
-[ "$failures" -eq 0 ] && echo "common flags: all passed" || echo "common flags: $failures FAILED"
-exit $((failures > 0))
+finish "common flags"

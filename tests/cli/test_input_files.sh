@@ -10,13 +10,7 @@
 # --msaa that is no power of two) while parsing: exit 2, before any setup.
 set -uo pipefail
 host=$1 reference=$2 error=$3 bench=$4
-work=$(mktemp -d /tmp/ssao-input-files.XXXXXX)
-trap 'rm -rf "$work"' EXIT
-failures=0
-check() {  # check DESCRIPTION COMMAND...: the command must succeed
-  local what=$1; shift
-  if "$@"; then echo "ok      $what"; else echo "FAILED  $what"; failures=$((failures + 1)); fi
-}
+. "$(dirname "$0")/checks.sh"
 
 # expect_error CODE TEXT TOOL ARGS...: within 20 s, exit CODE with exactly one
 # stderr line containing TEXT (besides ssao-bench's progress lines, "scene X at WxH").
@@ -142,5 +136,4 @@ fi
 check "ssao-host --fov 1e-3 still renders" "$host" --fov 1e-3 --width 16 --height 16 --frames 1 --only ao --out "$work/fov" >/dev/null
 [ ! -e "$out" ] || { echo "FAILED  a refused run left $out behind"; failures=$((failures + 1)); }
 
-[ "$failures" -eq 0 ] && echo "input files: all passed" || echo "input files: $failures FAILED"
-exit $((failures > 0))
+finish "input files"

@@ -8,13 +8,7 @@
 # refused naming the field, unless --allow-mismatch.
 set -uo pipefail
 host=$1 reference=$2 error=$3
-work=$(mktemp -d /tmp/ssao-same-view.XXXXXX)
-trap 'rm -rf "$work"' EXIT
-failures=0
-check() {  # check DESCRIPTION COMMAND...: the command must succeed
-  local what=$1; shift
-  if "$@"; then echo "ok      $what"; else echo "FAILED  $what"; failures=$((failures + 1)); fi
-}
+. "$(dirname "$0")/checks.sh"
 small=(--width 64 --height 48)
 "$host" "${small[@]}" --only ao --frames 1 --out "$work/host" >"$work/host.log" 2>&1 || { cat "$work/host.log"; exit 1; }
 "$reference" "${small[@]}" --samples 32 --quiet --out "$work/ref" >"$work/ref.log" 2>&1 || { cat "$work/ref.log"; exit 1; }
@@ -43,5 +37,4 @@ check "--allow-mismatch compares them anyway, saying so" bash -c \
   '"$1" "$2/eye/ao.exr" "$2/ref" --allow-mismatch | grep -q "^mismatch   eye: 3,2,-3 vs 2.3,1.6,-2.6, compared anyway"' \
   _ "$error" "$work"
 
-[ "$failures" -eq 0 ] && echo "same view: all passed" || echo "same view: $failures FAILED"
-exit $((failures > 0))
+finish "same view"

@@ -1,7 +1,17 @@
 # Checks shared by the package tests (sourced by run_package_test.sh and
 # run_deb_test.sh): an installed tree at a prefix P, wherever it came from
 # (cmake --install, or Debian packages extracted with dpkg-deb -x).
-# Needs: $here (this folder), $work (a scratch folder), $build, $source, fail, step.
+# Sourced as `. checks.sh BUILD_DIR SOURCE_DIR` after setting $here (this
+# folder) and $test_name (for messages); sets $build, $source, $work (a scratch
+# folder, removed on exit), fail and step, and clears the variables through
+# which a run could reach the build tree.
+build=$(cd "$1" && pwd)
+source=$(cd "$2" && pwd)
+work=$(mktemp -d /tmp/ssao-package.XXXXXX)
+trap 'rm -rf "$work"' EXIT
+fail() { echo "$test_name: $*" >&2; exit 1; }
+step() { echo "== $*"; }
+unset SSAO_PLUGIN SSAO_DATA_DIR PYTHONPATH
 
 # The version every file of the package states: project(ssao VERSION ...).
 ssao_version=$(sed -n 's/^project(ssao VERSION \([0-9.]*\).*/\1/p' "$source/CMakeLists.txt")

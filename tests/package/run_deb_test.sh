@@ -8,15 +8,9 @@
 # render with the extracted plugin, the Python package finds the extracted
 # library, and the find_package and pkg-config consumers build and run.
 set -euo pipefail
-build=$(cd "$1" && pwd)
-source=$(cd "$2" && pwd)
 here=$(cd "$(dirname "$0")" && pwd)
-work=$(mktemp -d /tmp/ssao-deb.XXXXXX)
-trap 'rm -rf "$work"' EXIT
-fail() { echo "deb test: $*" >&2; exit 1; }
-step() { echo "== $*"; }
-unset SSAO_PLUGIN SSAO_DATA_DIR PYTHONPATH
-. "$here/checks.sh"
+test_name="deb test"
+. "$here/checks.sh" "$1" "$2"
 command -v dpkg-shlibdeps >/dev/null || fail "dpkg-shlibdeps not found: apt-get install dpkg-dev (scripts/install-deps.sh)"
 
 step "cpack -G DEB"

@@ -9,15 +9,9 @@
 # Nothing may come from the build tree: the moved host must report the moved
 # plugin and scene. The checks are in checks.sh (shared with run_deb_test.sh).
 set -euo pipefail
-build=$(cd "$1" && pwd)
-source=$(cd "$2" && pwd)
 here=$(cd "$(dirname "$0")" && pwd)
-work=$(mktemp -d /tmp/ssao-package.XXXXXX)
-trap 'rm -rf "$work"' EXIT
-fail() { echo "package test: $*" >&2; exit 1; }
-step() { echo "== $*"; }
-unset SSAO_PLUGIN SSAO_DATA_DIR PYTHONPATH
-. "$here/checks.sh"
+test_name="package test"
+. "$here/checks.sh" "$1" "$2"
 
 step "install into $work/first, move it to $work/moved"
 cmake --install "$build" --prefix "$work/first" >/dev/null
