@@ -432,7 +432,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
                 if (st == SSAO_OK && with_out && in.output_texture == 0 && out.size == sizeof out)
                     owned_output[which] = out.texture;
                 if (st == SSAO_OK) {
-                    if (in.depth_texture == in.output_texture || in.normal_texture == in.output_texture)
+                    // 0 is "none" for the normal and "the library's own" for the output, so it matches nothing.
+                    const GLuint written =
+                        in.output_texture != 0 ? in.output_texture : (with_out && out.size == sizeof out ? out.texture : 0);
+                    if (written != 0 && (in.depth_texture == written || in.normal_texture == written))
                         finding("execute OK with the output as an input");
                     GladGLContext& gl = w.egl->gl();
                     if (with_out && out.size == sizeof out && out.texture == 0)
