@@ -28,10 +28,6 @@ ssao_settings build_settings(const ssao_api& api, const cli::Options& o, const s
     if (o.preset) {
         const ssao_status st = api.preset_settings(*o.preset, &s);
         if (st != SSAO_OK) throw Error(std::string("the plugin refused the preset: ") + api.status_string(st));
-        // Presets trade samples and blur for time; the radius (and the bias that
-        // follows it) stays scene-scaled.
-        s.radius = 0.0f;
-        s.bias = 0.0f;
     }
     const scene::AoHints& h = sc.hints;
     if (h.radius && !(std::isfinite(*h.radius) && *h.radius > 0.0f))

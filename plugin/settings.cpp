@@ -138,6 +138,9 @@ ssao_status resolve_settings(const ssao_settings& caller, ssao_settings& out, st
 ssao_status preset_settings(uint32_t raw_preset, ssao_settings& out, std::string& why) {
     if (raw_preset > SSAO_PRESET_CHAPTER) return fail(why, SSAO_ERROR_INVALID_ENUM, "preset is not an ssao_preset");
     const PresetRow& row = preset_row(static_cast<ssao_preset>(raw_preset));
+    // Only the row's fields: every other one stays 0 (its default), so the
+    // fields derived from the radius (bias, thickness) follow whatever radius
+    // the host sets afterwards instead of the default radius's.
     ssao_settings s{};
     s.size = sizeof(ssao_settings);
     s.method = row.method;
@@ -146,7 +149,8 @@ ssao_status preset_settings(uint32_t raw_preset, ssao_settings& out, std::string
     s.distribution = row.distribution;
     s.blur = row.blur;
     s.resolution = row.resolution;
-    return resolve_settings(s, out, why);
+    out = s;
+    return SSAO_OK;
 }
 
 }  // namespace ssao_impl

@@ -33,8 +33,9 @@ constexpr float kMaxBlurSigma = 64.0f;
 // the status and a sentence in `why`, and leaves `out` untouched.
 ssao_status resolve_settings(const ssao_settings& in, ssao_settings& out, std::string& why);
 
-// A preset, resolved. Takes the preset's raw 32 bits (raw_enum.h): any value
-// a C caller passes is checked before it is read as an ssao_preset.
+// A preset: the fields of its row, every other field 0 (= default, resolved
+// at set_settings/execute). Takes the preset's raw 32 bits (raw_enum.h): any
+// value a C caller passes is checked before it is read as an ssao_preset.
 ssao_status preset_settings(uint32_t raw_preset, ssao_settings& out, std::string& why);
 
 // Viewport pixels per reduced-grid texel along each axis: 1, 2 or 4.

@@ -351,9 +351,10 @@ typedef struct ssao_settings {
 
 /* Named quality presets, picked from the front of error against GPU time
  * that ssao-bench measures, by the rule stated in the README ("Presets").
- * Each sets the fields below and keeps every other field (radius, bias,
- * thickness, ...) at its default; set the radius for your scene after taking
- * a preset. A zeroed ssao_settings resolves to SSAO_PRESET_DEFAULT. The
+ * preset_settings sets the fields below and leaves every other field 0
+ * (radius, bias, thickness, ...: default, derived when the settings are
+ * resolved), so a radius set after taking a preset also scales the bias and
+ * thickness. A zeroed ssao_settings resolves to SSAO_PRESET_DEFAULT. The
  * comments are tested against preset_settings (tests/host/test_presets_doc.cpp). */
 typedef enum ssao_preset {
     SSAO_PRESET_DEFAULT = 0,    /* = SSAO_PRESET_MEDIUM, the recommended default */
@@ -537,7 +538,8 @@ typedef struct ssao_api {
      * INVALID_VALUE. */
     ssao_status (SSAO_CALL *resolve_settings)(const ssao_settings* in, ssao_settings* out);
 
-    /* Fills `out` (whose size the caller set) with a preset, resolved.
+    /* Fills `out` (whose size the caller set) with a preset: the fields its
+     * row sets, every other field 0 (resolve_settings shows what they become).
      * Returns OK, NULL_POINTER, STRUCT_SIZE, INVALID_ENUM. */
     ssao_status (SSAO_CALL *preset_settings)(ssao_preset preset, ssao_settings* out);
 

@@ -76,6 +76,12 @@ check "ssao-host --width=48 --out=DIR and --width 48 --out DIR write identical a
   "$1" --width=48 --height=32 --frames=1 --only=ao --out="$2/h1" >/dev/null &&
   "$1" --width 48 --height 32 --frames 1 --only ao --out "$2/h2" >/dev/null &&
   cmp -s "$2/h1/ao.exr" "$2/h2/ao.exr"' _ "$host" "$work"
+# The DEFAULT preset is medium: taking it and then a radius must change nothing
+# (bias and thickness follow the radius set after the preset).
+check "ssao-host --preset medium --radius 1 writes the same ao.exr as --radius 1" bash -c '
+  "$1" --width 48 --height 32 --frames 1 --only ao --radius 1 --out "$2/p0" >/dev/null &&
+  "$1" --width 48 --height 32 --frames 1 --only ao --radius 1 --preset medium --out "$2/p1" >/dev/null &&
+  cmp -s "$2/p0/ao.exr" "$2/p1/ao.exr"' _ "$host" "$work"
 check "ssao-reference --samples=8 and --samples 8 write identical reference_ao.exr" bash -c '
   "$1" --width=24 --height=16 --samples=8 --quiet --out="$2/r1" >/dev/null &&
   "$1" --width 24 --height 16 --samples 8 --quiet --out "$2/r2" >/dev/null &&

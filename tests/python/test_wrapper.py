@@ -38,8 +38,10 @@ def main():
     check(s.size == ctypes.sizeof(ssao.ssao_settings), "a new struct carries its size (%d)" % s.size)
     d = lib.resolve_settings()
     default = lib.preset_settings(ssao.SSAO_PRESET_DEFAULT)
-    check(bytes(d) == bytes(default) and abs(d.radius - 0.5) < 1e-6,
+    check(bytes(d) == bytes(lib.resolve_settings(default)) and abs(d.radius - 0.5) < 1e-6,
           "a zeroed ssao_settings resolves to the DEFAULT preset: %r" % d)
+    check(default.radius == 0 and default.thickness == 0,
+          "a preset leaves the radius and what follows it to the host: %r" % default)
     low = lib.preset_settings(ssao.SSAO_PRESET_LOW)
     ultra = lib.preset_settings(ssao.SSAO_PRESET_ULTRA)
     work = lambda p: p.sample_count * (p.step_count if p.method == ssao.SSAO_METHOD_VISIBILITY else 1)

@@ -234,8 +234,11 @@ TEST_CASE("abi: resolve_settings and preset_settings through the library") {
     ssao_settings def = sentinel<ssao_settings>();
     REQUIRE(a.preset_settings(SSAO_PRESET_DEFAULT, &def) == SSAO_OK);
     CHECK(same_bytes(medium, def));
-    CHECK(same_bytes(out, def));  // a zeroed struct is the DEFAULT preset
+    ssao_settings def_resolved = sentinel<ssao_settings>();
+    REQUIRE(a.resolve_settings(&def, &def_resolved) == SSAO_OK);
+    CHECK(same_bytes(out, def_resolved));  // a zeroed struct is the DEFAULT preset
     CHECK(out.radius == 0.5f);
+    CHECK(def.radius == 0.0f);  // the preset leaves the radius to the host
 
     in.radius = kNaN;
     ssao_settings o = sentinel<ssao_settings>();

@@ -76,7 +76,7 @@ TEST_CASE("settings: a zeroed struct resolves to the documented defaults: the DE
     ssao_settings preset{};
     std::string why;
     REQUIRE(preset_settings(SSAO_PRESET_DEFAULT, preset, why) == SSAO_OK);
-    CHECK(same(r, preset));
+    CHECK(same(r, resolve_ok(preset)));
     CHECK(r.radius == 0.5f);
     CHECK(r.bias == doctest::Approx((def.method == SSAO_METHOD_VISIBILITY ? 0.0025 : 0.025) * 0.5));
     CHECK(r.depth_step_bias == 2.0f);
@@ -371,9 +371,11 @@ TEST_CASE("settings: every preset resolves to the documented table") {
         std::string why;
         REQUIRE(preset_settings(presets[i], out, why) == SSAO_OK);
         CHECK(out.size == sizeof(ssao_settings));
-        // Already resolved: resolving again changes nothing.
-        CHECK(same(resolve_ok(out), out));
-        got[i] = out;
+        // Not resolved: what the radius derives stays 0 until the radius is known.
+        CHECK(out.radius == 0.0f);
+        CHECK(out.bias == 0.0f);
+        CHECK(out.thickness == 0.0f);
+        got[i] = resolve_ok(out);
     }
     const ssao_settings& def = got[0];
     const ssao_settings& low = got[1];
@@ -411,6 +413,36 @@ TEST_CASE("settings: every preset resolves to the documented table") {
         CHECK(p->bias == doctest::Approx((p->method == SSAO_METHOD_VISIBILITY ? 0.0025 : 0.025) * zero.radius));
         CHECK(p->kernel_shape == zero.kernel_shape);
         CHECK(p->rotation == zero.rotation);
+    }
+}
+
+TEST_CASE("settings: a preset plus a radius derives bias and thickness from that radius, as zeroed settings do") {
+    const ssao_preset presets[] = {SSAO_PRESET_DEFAULT, SSAO_PRESET_LOW,   SSAO_PRESET_MEDIUM,
+                                   SSAO_PRESET_HIGH,    SSAO_PRESET_ULTRA, SSAO_PRESET_CHAPTER};
+    for (ssao_preset p : presets) {
+        for (float radius : {0.05f, 1.0f, 40.0f}) {
+            CAPTURE(int(p));
+            CAPTURE(radius);
+            ssao_settings taken{};
+            std::string why;
+            REQUIRE(preset_settings(p, taken, why) == SSAO_OK);
+            taken.radius = radius;
+            // The same row's fields on zeroed settings, and the same radius.
+            const ssao_impl::PresetRow& row = ssao_impl::preset_row(p);
+            ssao_settings by_hand = zeroed();
+            by_hand.method = row.method;
+            by_hand.sample_count = row.sample_count;
+            by_hand.step_count = row.step_count;
+            by_hand.distribution = row.distribution;
+            by_hand.blur = row.blur;
+            by_hand.resolution = row.resolution;
+            by_hand.radius = radius;
+            const ssao_settings a = resolve_ok(taken), b = resolve_ok(by_hand);
+            CHECK(same(a, b));
+            CHECK(a.bias == b.bias);
+            CHECK(a.thickness == b.thickness);
+            CHECK(a.thickness == doctest::Approx(resolve_ok(zeroed()).thickness / 0.5f * radius));
+        }
     }
 }
 
