@@ -24,6 +24,7 @@ rest=(
   ccache                                 # the test and sanitizer builds reuse unchanged objects
   python3-pip python3-setuptools python3-wheel   # pip install ./python (offline, --no-build-isolation)
   dpkg-dev                               # cpack -G DEB: dpkg-shlibdeps finds the packages' dependencies
+  doxygen                                # the API reference of ssao.h (CTest docs.api_reference)
 )
 case $group in
   demo) packages=("${demo[@]}") ;;

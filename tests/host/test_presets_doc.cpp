@@ -77,7 +77,7 @@ TEST_CASE("the header, the README and ssao-host --help describe each preset as p
         CAPTURE(words);
         const std::string h = line_with(header, std::string(n.enumerator) + " =");
         CAPTURE(h);
-        CHECK(h.find("/* " + words + " */") != std::string::npos);
+        CHECK(h.find("/**< " + words + " */") != std::string::npos);
         const std::string r = line_with(readme, std::string("| ") + n.readme + " |");
         CAPTURE(r);
         CHECK(r.find("| " + words + " |") != std::string::npos);
