@@ -6,6 +6,11 @@
 # this project's machine) and that is committed here. The header's other
 # attributes (ssao-host now records the scene and camera there) are not part
 # of the frame: SAME (exr_same_image) compares the image only.
+# Two files are not 1.1's: ultra-corner and high-reverse-z-teapot take a
+# preset on a scene whose radius is not 0.5, and 1.1's preset_settings fixed
+# the thickness at 0.25 (half the default radius) where it now follows the
+# scene's radius, as a zeroed struct's does; they were rewritten with the
+# host of the commit that made that change.
 #   run.sh check HOST SAME  compare HOST's output with the committed files
 #   run.sh make HOST        (re)write them with HOST (a 1.1 build: see README)
 set -euo pipefail
