@@ -29,6 +29,7 @@
 #include <cstring>
 #include <fstream>
 #include <new>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <sys/stat.h>
@@ -81,25 +82,32 @@ int usage_error(const std::string& m) {
     return 2;
 }
 
-}  // namespace
+// A runtime failure: main prints "ssao-error: error: " + what() and exits 1.
+struct Failure : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
 
-static int run(int argc, char** argv) {
-    std::vector<std::string> positional;
-    std::string stderr_path, depth_path, limit_path, csv_path, label;
+struct Args {
+    std::string test_path, ref_path, stderr_path, depth_path, limit_path, csv_path, label;
     int band = 3;
     bool allow_mismatch = false;
-    // The shared parser (host/flags.h): --flag value and --flag=value alike.
+};
+
+// The flags (the shared parser, host/flags.h: --flag value and --flag=value
+// alike). Returns an exit code when the run ends here (help, version, usage).
+std::optional<int> parse_args(int argc, char** argv, Args& a) {
+    std::vector<std::string> positional;
     const flags::Valued valued = {
-        {"--ref-stderr", [&](const std::string&, const std::string& v) { stderr_path = v; }},
-        {"--ref-depth", [&](const std::string&, const std::string& v) { depth_path = v; }},
-        {"--limit", [&](const std::string&, const std::string& v) { limit_path = v; }},
-        {"--csv", [&](const std::string&, const std::string& v) { csv_path = v; }},
-        {"--label", [&](const std::string&, const std::string& v) { label = v; }},
-        {"--band", [&](const std::string& f, const std::string& v) { band = int(flags::integer(f, v, 0, 256)); }},
+        {"--ref-stderr", [&](const std::string&, const std::string& v) { a.stderr_path = v; }},
+        {"--ref-depth", [&](const std::string&, const std::string& v) { a.depth_path = v; }},
+        {"--limit", [&](const std::string&, const std::string& v) { a.limit_path = v; }},
+        {"--csv", [&](const std::string&, const std::string& v) { a.csv_path = v; }},
+        {"--label", [&](const std::string&, const std::string& v) { a.label = v; }},
+        {"--band", [&](const std::string& f, const std::string& v) { a.band = int(flags::integer(f, v, 0, 256)); }},
     };
     try {
-        const flags::Switches switches = {{"--allow-mismatch", [&] { allow_mismatch = true; }}};
-        switch (flags::walk(argc, argv, valued, switches, [&](const std::string& a) { positional.push_back(a); })) {
+        const flags::Switches switches = {{"--allow-mismatch", [&] { a.allow_mismatch = true; }}};
+        switch (flags::walk(argc, argv, valued, switches, [&](const std::string& p) { positional.push_back(p); })) {
             case flags::Outcome::Help: std::fputs(kHelp, stdout); return 0;
             case flags::Outcome::Version: std::printf("%s\n", flags::version_line("ssao-error").c_str()); return 0;
             case flags::Outcome::Run: break;
@@ -109,214 +117,213 @@ static int run(int argc, char** argv) {
         return 2;
     }
     if (positional.size() != 2) return usage_error("expected two images, TEST.exr and REF, got " + std::to_string(positional.size()));
-    const std::string test_path = positional[0];
-    std::string ref_path = positional[1];
-    if (is_dir(ref_path)) {
-        const std::string dir = ref_path;
-        ref_path = dir + "/reference_ao.exr";
-        if (stderr_path.empty() && is_file(dir + "/reference_stderr.exr")) stderr_path = dir + "/reference_stderr.exr";
-        if (depth_path.empty() && is_file(dir + "/reference_depth.exr")) depth_path = dir + "/reference_depth.exr";
-        if (limit_path.empty() && is_file(dir + "/limit_ao.exr")) limit_path = dir + "/limit_ao.exr";
+    a.test_path = positional[0];
+    a.ref_path = positional[1];
+    // A folder: ssao-reference's, with the companions it wrote when present.
+    if (is_dir(a.ref_path)) {
+        const std::string dir = a.ref_path;
+        a.ref_path = dir + "/reference_ao.exr";
+        if (a.stderr_path.empty() && is_file(dir + "/reference_stderr.exr")) a.stderr_path = dir + "/reference_stderr.exr";
+        if (a.depth_path.empty() && is_file(dir + "/reference_depth.exr")) a.depth_path = dir + "/reference_depth.exr";
+        if (a.limit_path.empty() && is_file(dir + "/limit_ao.exr")) a.limit_path = dir + "/limit_ao.exr";
     }
-    if (label.empty()) label = test_path;
+    if (a.label.empty()) a.label = a.test_path;
+    return std::nullopt;
+}
 
-    std::string error, channel;
-    int tw = 0, th = 0, rw = 0, rh = 0, w = 0, h = 0;
-    std::vector<float> test, ref, cover, se, depth;
-    if (!refio::read_exr_channel(test_path, {"Y", "R", "AO"}, test, tw, th, error, &channel)) {
-        std::fprintf(stderr, "ssao-error: error: %s\n", error.c_str());
-        return 1;
-    }
-    if (!refio::read_exr_channel(ref_path, {"Y"}, ref, rw, rh, error)) {
-        std::fprintf(stderr, "ssao-error: error: %s\n", error.c_str());
-        return 1;
-    }
-    if (tw != rw || th != rh) {
-        std::fprintf(stderr, "ssao-error: error: %s is %dx%d but the reference %s is %dx%d.\n", test_path.c_str(), tw, th,
-                     ref_path.c_str(), rw, rh);
-        return 1;
-    }
-    const bool has_cover = refio::exr_has_channel(ref_path, "A");
-    if (has_cover && !refio::read_exr_channel(ref_path, {"A"}, cover, w, h, error)) {
-        std::fprintf(stderr, "ssao-error: error: %s\n", error.c_str());
-        return 1;
-    }
-    if (!stderr_path.empty()) {
-        if (!refio::read_exr_channel(stderr_path, {"Y"}, se, w, h, error)) {
-            std::fprintf(stderr, "ssao-error: error: %s\n", error.c_str());
-            return 1;
-        }
-        if (w != rw || h != rh) {
-            std::fprintf(stderr, "ssao-error: error: %s is %dx%d, not %dx%d like the reference.\n", stderr_path.c_str(), w, h, rw, rh);
-            return 1;
-        }
-    }
-    if (!depth_path.empty()) {
-        if (!refio::read_exr_channel(depth_path, {"Z", "Y", "R"}, depth, w, h, error)) {
-            std::fprintf(stderr, "ssao-error: error: %s\n", error.c_str());
-            return 1;
-        }
-        if (w != rw || h != rh) {
-            std::fprintf(stderr, "ssao-error: error: %s is %dx%d, not %dx%d like the reference.\n", depth_path.c_str(), w, h, rw, rh);
-            return 1;
-        }
-    }
+struct Images {
+    std::string channel;  // the test image's channel that was read
+    int tw = 0, th = 0, rw = 0, rh = 0;
+    bool has_cover = false;
+    std::vector<float> test, ref, cover, se, depth, limit, limit_cover, limit_se;
+};
 
-    // The limit: same size, and the same coverage (it must come from the same scene and camera).
-    std::vector<float> limit, limit_cover, limit_se;
-    if (!limit_path.empty()) {
-        if (!refio::read_exr_channel(limit_path, {"Y"}, limit, w, h, error)) {
-            std::fprintf(stderr, "ssao-error: error: %s\n", error.c_str());
-            return 1;
-        }
-        if (w != rw || h != rh) {
-            std::fprintf(stderr, "ssao-error: error: %s is %dx%d, not %dx%d like the reference.\n", limit_path.c_str(), w, h, rw, rh);
-            return 1;
-        }
-        if (has_cover && refio::exr_has_channel(limit_path, "A")) {
-            if (!refio::read_exr_channel(limit_path, {"A"}, limit_cover, w, h, error)) {
-                std::fprintf(stderr, "ssao-error: error: %s\n", error.c_str());
-                return 1;
-            }
-            size_t differ = 0;
-            for (size_t i = 0; i < cover.size(); ++i) differ += (cover[i] > 0.5f) != (limit_cover[i] > 0.5f);
-            if (differ > 0) {
-                std::fprintf(stderr,
-                             "ssao-error: error: %s covers other pixels than the reference (%zu differ): it is not from the "
-                             "same scene and camera.\n",
-                             limit_path.c_str(), differ);
-                return 1;
-            }
-        }
-        const std::string se_path = limit_path.substr(0, limit_path.rfind('/') + 1) + "limit_stderr.exr";
-        if (limit_path.size() >= 12 && limit_path.compare(limit_path.size() - 12, 12, "limit_ao.exr") == 0 &&
-            is_file(se_path) && (!refio::read_exr_channel(se_path, {"Y"}, limit_se, w, h, error) || w != rw || h != rh))
-            limit_se.clear();  // the noise column is optional: without it, "-"
-    }
+void read_channel(const std::string& path, const std::vector<std::string>& channels, std::vector<float>& out, int& w,
+                  int& h, std::string* channel = nullptr) {
+    std::string error;
+    if (!refio::read_exr_channel(path, channels, out, w, h, error, channel)) throw Failure(error);
+}
 
-    // The images must show the same thing: compare what their headers record.
-    std::vector<std::string> bare;   // images that record nothing: compared unchecked
-    {
-        const std::string prefix = provenance::kPrefix;
-        refio::Attributes test_made, ref_made, limit_made;
-        if (!refio::read_exr_attributes(test_path, prefix, test_made, error) ||
-            !refio::read_exr_attributes(ref_path, prefix, ref_made, error) ||
-            (!limit_path.empty() && !refio::read_exr_attributes(limit_path, prefix, limit_made, error))) {
-            std::fprintf(stderr, "ssao-error: error: %s\n", error.c_str());
-            return 1;
-        }
-        struct Pair {
-            const std::string* a_path;
-            const refio::Attributes* a;
-            const std::string* b_path;
-            const refio::Attributes* b;
-        };
-        // Both against the reference, so TEST and the limit agree too on every
-        // field all three carry. Thickness is not compared: the reference has
-        // none, and the split measures an estimator's own thickness against
-        // the limit's T (a different one is a finding, not a mistake).
-        std::vector<Pair> pairs = {{&test_path, &test_made, &ref_path, &ref_made}};
-        if (!limit_path.empty()) pairs.push_back({&limit_path, &limit_made, &ref_path, &ref_made});
-        for (const Pair& p : pairs) {
-            if (p.a->empty() || p.b->empty()) {
-                for (const auto& [path, made] : {std::make_pair(p.a_path, p.a), std::make_pair(p.b_path, p.b)})
-                    if (made->empty() && std::find(bare.begin(), bare.end(), *path) == bare.end()) bare.push_back(*path);
-                continue;
-            }
-            const auto d = provenance::compare(*p.a, *p.b);
-            if (d && !allow_mismatch) {
-                std::fprintf(stderr,
-                             "ssao-error: error: %s and %s were made with a different %s: %s vs %s (--allow-mismatch "
-                             "compares them anyway).\n",
-                             flags::printable(*p.a_path, 160).c_str(), flags::printable(*p.b_path, 160).c_str(),
-                             flags::printable(d->field, 160).c_str(), flags::printable(d->a, 160).c_str(),
-                             flags::printable(d->b, 160).c_str());
-                return 1;
-            }
-            if (d)
-                std::printf("mismatch   %s: %s vs %s, compared anyway (--allow-mismatch)\n",
-                            flags::printable(d->field, 160).c_str(), flags::printable(d->a, 160).c_str(),
-                            flags::printable(d->b, 160).c_str());
-        }
-    }
+// A companion image of the reference's size.
+void read_companion(const std::string& path, const std::vector<std::string>& channels, std::vector<float>& out,
+                    const Images& im) {
+    int w = 0, h = 0;
+    read_channel(path, channels, out, w, h);
+    if (w != im.rw || h != im.rh)
+        throw Failure(path + " is " + std::to_string(w) + "x" + std::to_string(h) + ", not " + std::to_string(im.rw) +
+                      "x" + std::to_string(im.rh) + " like the reference.");
+}
 
-    metrics::Inputs in;
-    in.width = rw;
-    in.height = rh;
-    in.test = &test;
-    in.reference = &ref;
-    in.sky = has_cover ? &cover : nullptr;
-    in.std_error = se.empty() ? nullptr : &se;
-    in.depth = depth.empty() ? nullptr : &depth;
-    in.band = band;
-
-    // Only AO is compared: a NaN, infinite or out-of-range value in either
-    // image would make every figure meaningless, and so would an empty mask.
-    std::vector<uint8_t> covered;
-    if (has_cover) {
-        covered.resize(cover.size());
-        for (size_t i = 0; i < cover.size(); ++i) covered[i] = cover[i] > 0.5f;
+// The limit: same size, and the same coverage (it must come from the same
+// scene and camera); its noise image beside it is optional.
+void read_limit(const Args& a, Images& im) {
+    read_companion(a.limit_path, {"Y"}, im.limit, im);
+    if (im.has_cover && refio::exr_has_channel(a.limit_path, "A")) {
+        read_companion(a.limit_path, {"A"}, im.limit_cover, im);
+        size_t differ = 0;
+        for (size_t i = 0; i < im.cover.size(); ++i) differ += (im.cover[i] > 0.5f) != (im.limit_cover[i] > 0.5f);
+        if (differ > 0)
+            throw Failure(a.limit_path + " covers other pixels than the reference (" + std::to_string(differ) +
+                          " differ): it is not from the same scene and camera.");
     }
-    auto refuse = [](const std::string& path, const std::string& why) {
-        std::fprintf(stderr, "ssao-error: error: %s: %s; it is not an AO image in [0, 1].\n", path.c_str(), why.c_str());
-        return 1;
+    const std::string& lp = a.limit_path;
+    const std::string se_path = lp.substr(0, lp.rfind('/') + 1) + "limit_stderr.exr";
+    std::string error;
+    int w = 0, h = 0;
+    if (lp.size() >= 12 && lp.compare(lp.size() - 12, 12, "limit_ao.exr") == 0 && is_file(se_path) &&
+        (!refio::read_exr_channel(se_path, {"Y"}, im.limit_se, w, h, error) || w != im.rw || h != im.rh))
+        im.limit_se.clear();  // the noise column is optional: without it, "-"
+}
+
+Images read_images(const Args& a) {
+    Images im;
+    read_channel(a.test_path, {"Y", "R", "AO"}, im.test, im.tw, im.th, &im.channel);
+    read_channel(a.ref_path, {"Y"}, im.ref, im.rw, im.rh);
+    if (im.tw != im.rw || im.th != im.rh)
+        throw Failure(a.test_path + " is " + std::to_string(im.tw) + "x" + std::to_string(im.th) + " but the reference " +
+                      a.ref_path + " is " + std::to_string(im.rw) + "x" + std::to_string(im.rh) + ".");
+    im.has_cover = refio::exr_has_channel(a.ref_path, "A");
+    int w = 0, h = 0;
+    if (im.has_cover) read_channel(a.ref_path, {"A"}, im.cover, w, h);
+    if (!a.stderr_path.empty()) read_companion(a.stderr_path, {"Y"}, im.se, im);
+    if (!a.depth_path.empty()) read_companion(a.depth_path, {"Z", "Y", "R"}, im.depth, im);
+    if (!a.limit_path.empty()) read_limit(a, im);
+    return im;
+}
+
+// The images must show the same thing: what their headers record is
+// compared. Returns the images that record nothing (compared unchecked).
+std::vector<std::string> check_provenance(const Args& a) {
+    std::vector<std::string> bare;
+    std::string error;
+    const std::string prefix = provenance::kPrefix;
+    refio::Attributes test_made, ref_made, limit_made;
+    if (!refio::read_exr_attributes(a.test_path, prefix, test_made, error) ||
+        !refio::read_exr_attributes(a.ref_path, prefix, ref_made, error) ||
+        (!a.limit_path.empty() && !refio::read_exr_attributes(a.limit_path, prefix, limit_made, error)))
+        throw Failure(error);
+    struct Pair {
+        const std::string* a_path;
+        const refio::Attributes* a;
+        const std::string* b_path;
+        const refio::Attributes* b;
     };
-    if (const std::string why = aocheck::check_values(ref, rw, has_cover ? &covered : nullptr); !why.empty())
-        return refuse(ref_path, why);
-    metrics::Masks masks;
-    if (!metrics::build_masks(in, masks, error)) {
-        std::fprintf(stderr, "ssao-error: error: %s.\n", error.c_str());
-        return 1;
+    // Both against the reference, so TEST and the limit agree too on every
+    // field all three carry. Thickness is not compared: the reference has
+    // none, and the split measures an estimator's own thickness against
+    // the limit's T (a different one is a finding, not a mistake).
+    std::vector<Pair> pairs = {{&a.test_path, &test_made, &a.ref_path, &ref_made}};
+    if (!a.limit_path.empty()) pairs.push_back({&a.limit_path, &limit_made, &a.ref_path, &ref_made});
+    for (const Pair& p : pairs) {
+        if (p.a->empty() || p.b->empty()) {
+            for (const auto& [path, made] : {std::make_pair(p.a_path, p.a), std::make_pair(p.b_path, p.b)})
+                if (made->empty() && std::find(bare.begin(), bare.end(), *path) == bare.end()) bare.push_back(*path);
+            continue;
+        }
+        const auto d = provenance::compare(*p.a, *p.b);
+        if (d && !a.allow_mismatch)
+            throw Failure(flags::printable(*p.a_path, 160) + " and " + flags::printable(*p.b_path, 160) +
+                          " were made with a different " + flags::printable(d->field, 160) + ": " +
+                          flags::printable(d->a, 160) + " vs " + flags::printable(d->b, 160) +
+                          " (--allow-mismatch compares them anyway).");
+        if (d)
+            std::printf("mismatch   %s: %s vs %s, compared anyway (--allow-mismatch)\n",
+                        flags::printable(d->field, 160).c_str(), flags::printable(d->a, 160).c_str(),
+                        flags::printable(d->b, 160).c_str());
     }
-    if (std::find(masks.geometry.begin(), masks.geometry.end(), uint8_t(1)) == masks.geometry.end()) {
-        std::fprintf(stderr, "ssao-error: error: %s has no pixel to compare: all of it is sky (A = 0%s).\n", ref_path.c_str(),
-                     depth.empty() ? "" : ", or no finite depth");
-        return 1;
-    }
-    if (const std::string why = aocheck::check_values(test, tw, &masks.geometry); !why.empty())
-        return refuse(test_path, why);
-    if (!limit.empty())
-        if (const std::string why = aocheck::check_values(limit, rw, &masks.geometry); !why.empty())
-            return refuse(limit_path, why);
+    return bare;
+}
+
+struct Results {
     std::vector<metrics::Stats> stats;
     metrics::Split split;
-    if (!metrics::compute(in, stats, error) ||
-        (!limit.empty() && !metrics::compute_split(in, limit, limit_se.empty() ? nullptr : &limit_se, split, error))) {
-        std::fprintf(stderr, "ssao-error: error: %s.\n", error.c_str());
-        return 1;
-    }
+};
 
-    std::printf("test       %s (channel %s), %dx%d\n", test_path.c_str(), channel.c_str(), tw, th);
-    std::printf("reference  %s%s%s\n", ref_path.c_str(), se.empty() ? ", no standard-error image" : "",
-                depth.empty() ? ", silhouettes from sky/AO edges" : ", silhouettes from its depth");
-    if (!limit.empty()) std::printf("limit      %s\n", limit_path.c_str());
+// Only AO is compared: a NaN, infinite or out-of-range value in either image
+// would make every figure meaningless, and so would an empty mask.
+Results compare(const Args& a, const Images& im) {
+    metrics::Inputs in;
+    in.width = im.rw;
+    in.height = im.rh;
+    in.test = &im.test;
+    in.reference = &im.ref;
+    in.sky = im.has_cover ? &im.cover : nullptr;
+    in.std_error = im.se.empty() ? nullptr : &im.se;
+    in.depth = im.depth.empty() ? nullptr : &im.depth;
+    in.band = a.band;
+    std::vector<uint8_t> covered;
+    if (im.has_cover) {
+        covered.resize(im.cover.size());
+        for (size_t i = 0; i < im.cover.size(); ++i) covered[i] = im.cover[i] > 0.5f;
+    }
+    auto refuse = [](const std::string& path, const std::string& why) {
+        throw Failure(path + ": " + why + "; it is not an AO image in [0, 1].");
+    };
+    if (const std::string why = aocheck::check_values(im.ref, im.rw, im.has_cover ? &covered : nullptr); !why.empty())
+        refuse(a.ref_path, why);
+    std::string error;
+    metrics::Masks masks;
+    if (!metrics::build_masks(in, masks, error)) throw Failure(error + ".");
+    if (std::find(masks.geometry.begin(), masks.geometry.end(), uint8_t(1)) == masks.geometry.end())
+        throw Failure(a.ref_path + " has no pixel to compare: all of it is sky (A = 0" +
+                      (im.depth.empty() ? "" : ", or no finite depth") + ").");
+    if (const std::string why = aocheck::check_values(im.test, im.tw, &masks.geometry); !why.empty())
+        refuse(a.test_path, why);
+    if (!im.limit.empty())
+        if (const std::string why = aocheck::check_values(im.limit, im.rw, &masks.geometry); !why.empty())
+            refuse(a.limit_path, why);
+    Results r;
+    if (!metrics::compute(in, r.stats, error) ||
+        (!im.limit.empty() &&
+         !metrics::compute_split(in, im.limit, im.limit_se.empty() ? nullptr : &im.limit_se, r.split, error)))
+        throw Failure(error + ".");
+    return r;
+}
+
+void print_report(const Args& a, const Images& im, const Results& r, const std::vector<std::string>& bare) {
+    std::printf("test       %s (channel %s), %dx%d\n", a.test_path.c_str(), im.channel.c_str(), im.tw, im.th);
+    std::printf("reference  %s%s%s\n", a.ref_path.c_str(), im.se.empty() ? ", no standard-error image" : "",
+                im.depth.empty() ? ", silhouettes from sky/AO edges" : ", silhouettes from its depth");
+    if (!im.limit.empty()) std::printf("limit      %s\n", a.limit_path.c_str());
     for (const std::string& path : bare)
         std::printf("note       %s records no scene and camera (older file or another program): not checked\n",
                     path.c_str());
-    std::printf("bands      %d px\n\n", band);
-    std::fputs(metrics::table(stats).c_str(), stdout);
-    if (!limit.empty()) {
+    std::printf("bands      %d px\n\n", a.band);
+    std::fputs(metrics::table(r.stats).c_str(), stdout);
+    if (!im.limit.empty()) {
         std::printf("\nsplit by the depth-only limit: limit vs V_R is what no depth-only method can avoid,\n"
                     "ours vs limit what the tested estimator adds (mean = mean signed error)\n\n");
-        std::fputs(metrics::split_table(split).c_str(), stdout);
+        std::fputs(metrics::split_table(r.split).c_str(), stdout);
     }
+}
 
-    if (!csv_path.empty()) {
-        const bool fresh = !is_file(csv_path);
-        std::ofstream csv(csv_path, std::ios::app);
-        if (!csv) {
-            std::fprintf(stderr, "ssao-error: error: cannot write %s.\n", csv_path.c_str());
-            return 1;
-        }
-        if (fresh) csv << metrics::csv_header();
-        csv << (limit.empty() ? metrics::csv_rows(stats, label) : metrics::csv_rows(split, label));
-        if (!csv) {
-            std::fprintf(stderr, "ssao-error: error: cannot write %s.\n", csv_path.c_str());
-            return 1;
-        }
+void append_csv(const Args& a, const Images& im, const Results& r) {
+    const bool fresh = !is_file(a.csv_path);
+    std::ofstream csv(a.csv_path, std::ios::app);
+    if (!csv) throw Failure("cannot write " + a.csv_path + ".");
+    if (fresh) csv << metrics::csv_header();
+    csv << (im.limit.empty() ? metrics::csv_rows(r.stats, a.label) : metrics::csv_rows(r.split, a.label));
+    if (!csv) throw Failure("cannot write " + a.csv_path + ".");
+}
+
+// Parse, read, check the headers, compare, report.
+int run(int argc, char** argv) {
+    Args a;
+    if (const std::optional<int> done = parse_args(argc, argv, a)) return *done;
+    try {
+        const Images im = read_images(a);
+        const std::vector<std::string> bare = check_provenance(a);
+        const Results r = compare(a, im);
+        print_report(a, im, r, bare);
+        if (!a.csv_path.empty()) append_csv(a, im, r);
+    } catch (const Failure& f) {
+        std::fprintf(stderr, "ssao-error: error: %s\n", f.what());
+        return 1;
     }
     return 0;
 }
+
+}  // namespace
 
 // Images are allocated at the requested size, so a large --width/--height (or
 // a huge input) can run out of memory: say so instead of aborting.
