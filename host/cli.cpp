@@ -86,9 +86,12 @@ std::optional<ssao_blur> parse_blur(const std::string& s) {
     return std::nullopt;
 }
 
-ParseResult parse(int argc, const char* const* argv, Options& o, std::string& error) {
-    // Flags that take a value.
-    const flags::Valued valued = {
+namespace {
+
+// The flags that take a value, by what they set; each adds its entries to `table`.
+
+void run_flags(flags::Valued& table, Options& o) {
+    table.insert({
         {"--out", [&](const std::string& f, const std::string& v) {
              if (v.empty()) fail(f + " expects a directory");
              o.out_dir = v;
@@ -106,6 +109,11 @@ ParseResult parse(int argc, const char* const* argv, Options& o, std::string& er
         {"--frames", [&](const std::string& f, const std::string& v) {
              o.frames = static_cast<int>(flags::integer(f, v, 1, 1000));
          }},
+    });
+}
+
+void camera_flags(flags::Valued& table, Options& o) {
+    table.insert({
         {"--eye", [&](const std::string& f, const std::string& v) { o.cam.eye = flags::vec3(f, v); }},
         {"--target", [&](const std::string& f, const std::string& v) { o.cam.target = flags::vec3(f, v); }},
         {"--fov", [&](const std::string& f, const std::string& v) { o.cam.fov_deg = flags::fov_degrees(f, v); }},
@@ -118,6 +126,12 @@ ParseResult parse(int argc, const char* const* argv, Options& o, std::string& er
         {"--ortho", [&](const std::string& f, const std::string& v) {
              o.cam.ortho_half_height = ranged(f, v, 0, true, kBig, false);
          }},
+    });
+}
+
+// What the host's G-buffer holds and how the plugin reads it.
+void input_flags(flags::Valued& table, Options& o) {
+    table.insert({
         {"--depth", [&](const std::string& f, const std::string& v) { o.depth_format = parse_choice(f, v, kDepths); }},
         {"--normals", [&](const std::string& f, const std::string& v) {
              // depth: the plugin gets no normal texture and rebuilds normals
@@ -133,6 +147,25 @@ ParseResult parse(int argc, const char* const* argv, Options& o, std::string& er
         {"--only", [&](const std::string& f, const std::string& v) {
              o.only_ao = parse_choice<bool>(f, v, {{"ao", true}, {"all", false}});
          }},
+        {"--msaa", [&](const std::string& f, const std::string& v) {
+             o.msaa = static_cast<int>(flags::integer(f, v, 1, 32));
+             // GL rounds a sample count up to one it supports: 3 would run
+             // with 4 and report 3. The largest allowed is checked once the
+             // context exists.
+             if ((o.msaa & (o.msaa - 1)) != 0) fail(f + " " + v + " is not a power of two (1, 2, 4, 8, 16 or 32)");
+         }},
+        {"--sample-index", [&](const std::string& f, const std::string& v) {
+             o.sample_index = static_cast<uint32_t>(flags::integer(f, v, 0, 31));
+         }},
+        {"--output", [&](const std::string& f, const std::string& v) {
+             o.output_multiply = parse_choice<bool>(f, v, {{"overwrite", false}, {"multiply", true}});
+         }},
+    });
+}
+
+// The plugin's settings.
+void settings_flags(flags::Valued& table, Options& o) {
+    table.insert({
         {"--preset", [&](const std::string& f, const std::string& v) {
              o.preset = preset_text::parse(v);
              if (!o.preset) fail(f + " expects one of " + preset_text::choices() + ", got " + quoted(v));
@@ -185,20 +218,17 @@ ParseResult parse(int argc, const char* const* argv, Options& o, std::string& er
              if (!view) fail(f + " expects one of " + debug_view_text::choices() + ", got " + quoted(v));
              o.debug_view = *view;
          }},
-        {"--msaa", [&](const std::string& f, const std::string& v) {
-             o.msaa = static_cast<int>(flags::integer(f, v, 1, 32));
-             // GL rounds a sample count up to one it supports: 3 would run
-             // with 4 and report 3. The largest allowed is checked once the
-             // context exists.
-             if ((o.msaa & (o.msaa - 1)) != 0) fail(f + " " + v + " is not a power of two (1, 2, 4, 8, 16 or 32)");
-         }},
-        {"--sample-index", [&](const std::string& f, const std::string& v) {
-             o.sample_index = static_cast<uint32_t>(flags::integer(f, v, 0, 31));
-         }},
-        {"--output", [&](const std::string& f, const std::string& v) {
-             o.output_multiply = parse_choice<bool>(f, v, {{"overwrite", false}, {"multiply", true}});
-         }},
-    };
+    });
+}
+
+}  // namespace
+
+ParseResult parse(int argc, const char* const* argv, Options& o, std::string& error) {
+    flags::Valued valued;
+    run_flags(valued, o);
+    camera_flags(valued, o);
+    input_flags(valued, o);
+    settings_flags(valued, o);
     // Flags without a value.
     const flags::Switches switches = {
         {"--gl33", [&] { o.gl33 = true; }},
