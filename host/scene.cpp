@@ -499,9 +499,14 @@ bool load(const std::string& path, Scene& out, std::string& error, const Limits&
     return load_from_memory(bytes, path, out, error, limits);
 }
 
-bool load_from_memory(const std::vector<unsigned char>& bytes, const std::string& path, Scene& out,
-                      std::string& error, const Limits& limits) {
-    error.clear();
+namespace {
+
+// The checks before any parsing: size, a well-formed GLB container, JSON at
+// all (an .obj or a PNG would come back from tinygltf's JSON parser as a raw
+// parse error: say what the tools read instead), nesting depth. Sets `json`
+// to the JSON text: all of a .gltf, the first chunk of a .glb.
+bool precheck(const std::vector<unsigned char>& bytes, const std::string& path, const Limits& limits, bool binary,
+              const unsigned char*& json, size_t& json_size, std::string& error) {
     if (bytes.empty()) {
         error = path + ": the file is empty.";
         return false;
@@ -510,8 +515,6 @@ bool load_from_memory(const std::vector<unsigned char>& bytes, const std::string
         error = path + ": the file is larger than " + input_file::size_text(limits.max_bytes) + ".";
         return false;
     }
-    // Binary when it says so, by magic or by extension; JSON otherwise.
-    const bool binary = (bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0) || ends_with_ci(path, ".glb");
     if (binary) {
         const std::string why = check_glb(bytes);
         if (!why.empty()) {
@@ -519,18 +522,14 @@ bool load_from_memory(const std::vector<unsigned char>& bytes, const std::string
             return false;
         }
     }
-    // Anything else (an .obj, a PNG) would reach tinygltf's JSON parser and
-    // come back as a raw parse error: say what the tools read instead.
     if (!binary && !looks_like_json(bytes)) {
         error = path + ": not a glTF scene; the tools read glTF 2.0 only (a .gltf JSON file or a .glb binary)" +
                 (ends_with_ci(path, ".gltf") ? std::string() : ", converted with e.g. Blender or obj2gltf") + ".";
         return false;
     }
-    // The JSON text: all of a .gltf, the first chunk of a .glb (check_glb
-    // has checked its length against the file).
-    const unsigned char* json = bytes.data();
-    size_t json_size = bytes.size();
-    if (binary) {
+    json = bytes.data();
+    json_size = bytes.size();
+    if (binary) {  // check_glb has checked the chunk's length against the file
         json = bytes.data() + 20;
         json_size = read_u32le(bytes.data() + 12);
     }
@@ -539,17 +538,16 @@ bool load_from_memory(const std::vector<unsigned char>& bytes, const std::string
                 " levels, which no glTF needs.";
         return false;
     }
+    return true;
+}
 
-    // Which files the URIs may reach, decided before tinygltf reads any;
-    // tinygltf gets no base directory, so its callbacks see the URIs as
-    // written and read only what the plan allows.
-    GltfFiles files;
-    if (!files.plan(json, json_size, path, limits, error)) return false;
-
+// tinygltf's parse, reading only the files the plan allows (it gets no base
+// directory, so its callbacks see the URIs as written).
+bool parse_gltf(const std::vector<unsigned char>& bytes, const std::string& path, bool binary, GltfFiles& files,
+                tinygltf::Model& model, std::string& error) {
     tinygltf::TinyGLTF gltf;
     gltf.SetImageLoader(ignore_image, nullptr);
     gltf.SetFsCallbacks(files.callbacks());
-    tinygltf::Model model;
     std::string err, warn;
     bool ok = false;
     try {
@@ -571,61 +569,92 @@ bool load_from_memory(const std::vector<unsigned char>& bytes, const std::string
         error = path + ": tinygltf could not load it" + (err.empty() ? std::string() : " (" + err + ")") + ".";
         return false;
     }
+    return true;
+}
 
-    Loader loader(model, path, limits);
-    try {
-        std::vector<int> roots;
-        int scene_index = model.defaultScene >= 0 ? model.defaultScene : 0;
-        if (!model.scenes.empty()) {
-            if (size_t(scene_index) >= model.scenes.size()) {
-                error = path + ": the default scene " + std::to_string(scene_index) + " does not exist.";
-                return false;
-            }
-            roots = model.scenes[size_t(scene_index)].nodes;
-        } else {
-            // No scene at all: draw every root node (those that are nobody's child).
-            std::vector<bool> is_child(model.nodes.size(), false);
-            for (const auto& n : model.nodes)
-                for (int c : n.children)
-                    if (c >= 0 && size_t(c) < is_child.size()) is_child[size_t(c)] = true;
-            for (size_t i = 0; i < model.nodes.size(); ++i)
-                if (!is_child[i]) roots.push_back(int(i));
+// The nodes to draw: the default scene's, or with no scene at all every root
+// node (those that are nobody's child). -1 as scene_index: no scene.
+bool root_nodes(const tinygltf::Model& model, const std::string& path, std::vector<int>& roots, int& scene_index,
+                std::string& error) {
+    scene_index = model.defaultScene >= 0 ? model.defaultScene : 0;
+    if (!model.scenes.empty()) {
+        if (size_t(scene_index) >= model.scenes.size()) {
+            error = path + ": the default scene " + std::to_string(scene_index) + " does not exist.";
+            return false;
         }
-        if (!loader.within_budget(roots)) {
+        roots = model.scenes[size_t(scene_index)].nodes;
+        return true;
+    }
+    scene_index = -1;
+    std::vector<bool> is_child(model.nodes.size(), false);
+    for (const auto& n : model.nodes)
+        for (int c : n.children)
+            if (c >= 0 && size_t(c) < is_child.size()) is_child[size_t(c)] = true;
+    for (size_t i = 0; i < model.nodes.size(); ++i)
+        if (!is_child[i]) roots.push_back(int(i));
+    return true;
+}
+
+// The model flattened into one mesh, with its bounds, camera and AO hints.
+bool flatten(const tinygltf::Model& model, const std::string& path, const Limits& limits, Scene& out,
+             std::string& error) {
+    Loader loader(model, path, limits);
+    std::vector<int> roots;
+    int scene_index = -1;
+    if (!root_nodes(model, path, roots, scene_index, error)) return false;
+    if (!loader.within_budget(roots)) {
+        error = loader.error;
+        return false;
+    }
+    for (int r : roots)
+        if (!loader.visit(r, glm::dmat4(1.0), 0)) {
             error = loader.error;
             return false;
         }
-        for (int r : roots)
-            if (!loader.visit(r, glm::dmat4(1.0), 0)) {
-                error = loader.error;
-                return false;
-            }
-        Scene s;
-        s.mesh = std::move(loader.out_);
-        if (s.mesh.indices.empty()) {
-            error = path + ": the scene has nothing to draw (no triangles reachable from the default scene).";
-            return false;
-        }
-        glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
-        for (uint32_t i : s.mesh.indices) {
-            lo = glm::min(lo, s.mesh.positions[i]);
-            hi = glm::max(hi, s.mesh.positions[i]);
-        }
-        s.bounds_min = lo;
-        s.bounds_max = hi;
-        s.camera = loader.camera_;
-        if (!model.scenes.empty()) read_hints(model.scenes[size_t(scene_index)].extras, s.hints);
-        read_hints(model.extras, s.hints);
-        read_hints(model.asset.extras, s.hints);
-        out = std::move(s);
-    } catch (const std::bad_alloc&) {
-        error = path + ": out of memory while flattening the scene.";
-        return false;
-    } catch (const std::exception& e) {
-        error = path + ": unexpected failure while flattening the scene (" + std::string(e.what()) + ").";
+    Scene s;
+    s.mesh = std::move(loader.out_);
+    if (s.mesh.indices.empty()) {
+        error = path + ": the scene has nothing to draw (no triangles reachable from the default scene).";
         return false;
     }
+    glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
+    for (uint32_t i : s.mesh.indices) {
+        lo = glm::min(lo, s.mesh.positions[i]);
+        hi = glm::max(hi, s.mesh.positions[i]);
+    }
+    s.bounds_min = lo;
+    s.bounds_max = hi;
+    s.camera = loader.camera_;
+    if (scene_index >= 0) read_hints(model.scenes[size_t(scene_index)].extras, s.hints);
+    read_hints(model.extras, s.hints);
+    read_hints(model.asset.extras, s.hints);
+    out = std::move(s);
     return true;
+}
+
+}  // namespace
+
+bool load_from_memory(const std::vector<unsigned char>& bytes, const std::string& path, Scene& out,
+                      std::string& error, const Limits& limits) {
+    error.clear();
+    // Binary when it says so, by magic or by extension; JSON otherwise.
+    const bool binary = (bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0) || ends_with_ci(path, ".glb");
+    const unsigned char* json = nullptr;
+    size_t json_size = 0;
+    if (!precheck(bytes, path, limits, binary, json, json_size, error)) return false;
+    // Which files the URIs may reach, decided before tinygltf reads any.
+    GltfFiles files;
+    if (!files.plan(json, json_size, path, limits, error)) return false;
+    tinygltf::Model model;
+    if (!parse_gltf(bytes, path, binary, files, model, error)) return false;
+    try {
+        return flatten(model, path, limits, out, error);
+    } catch (const std::bad_alloc&) {
+        error = path + ": out of memory while flattening the scene.";
+    } catch (const std::exception& e) {
+        error = path + ": unexpected failure while flattening the scene (" + std::string(e.what()) + ").";
+    }
+    return false;
 }
 
 std::optional<AoRadius> ao_radius(const Scene& s) {
