@@ -22,20 +22,10 @@ ssao_status fail(std::string& why, ssao_status status, const std::string& what) 
 
 }  // namespace
 
-ssao_status resolve_settings(const ssao_settings& caller, ssao_settings& out, std::string& why) {
-    if (!is_known_size<ssao_settings>(caller.size))
-        return fail(why, SSAO_ERROR_STRUCT_SIZE,
-                    "ssao_settings.size is " + std::to_string(caller.size) + ", expected " +
-                        std::to_string(sizeof(ssao_settings)) + " (or " + std::to_string(SSAO_SETTINGS_SIZE_1_1) +
-                        " for interface 1.1, " + std::to_string(SSAO_SETTINGS_SIZE_1_0) + " for 1.0)");
-    ssao_settings r = read_prefix(caller);
+namespace {
 
-    // The method first: the defaults of the fields a preset sets depend on it.
-    if (!raw_enum_at_most(r.method, SSAO_METHOD_VISIBILITY))
-        return fail(why, SSAO_ERROR_INVALID_ENUM, "method is not an ssao_method");
-    if (r.method == SSAO_METHOD_DEFAULT) r.method = preset_row(SSAO_PRESET_DEFAULT).method;
-    const PresetRow& defaults = defaults_for_method(r.method);
-
+// How many samples, how far, how strong.
+ssao_status resolve_amounts(ssao_settings& r, const PresetRow& defaults, std::string& why) {
     if (r.sample_count == 0) r.sample_count = defaults.sample_count;
     if (r.sample_count > SSAO_MAX_SAMPLES)
         return fail(why, SSAO_ERROR_INVALID_VALUE,
@@ -44,7 +34,6 @@ ssao_status resolve_settings(const ssao_settings& caller, ssao_settings& out, st
     if (!finite(r.radius) || r.radius < 0.0f)
         return fail(why, SSAO_ERROR_INVALID_VALUE, "radius must be a finite number > 0");
     if (r.radius == 0.0f) r.radius = kDefaultRadius;
-
 
     if (!finite(r.depth_step_bias) || r.depth_step_bias < 0.0f || r.depth_step_bias > 1e6f)
         return fail(why, SSAO_ERROR_INVALID_VALUE, "depth_step_bias must be finite and in [0, 1e6]");
@@ -58,7 +47,11 @@ ssao_status resolve_settings(const ssao_settings& caller, ssao_settings& out, st
         return fail(why, SSAO_ERROR_INVALID_VALUE,
                     "strength must be in [0, 8] (0 = default 1) or SSAO_STRENGTH_OFF");
     if (r.strength == 0.0f) r.strength = kDefaultStrength;
+    return SSAO_OK;
+}
 
+// The kernel's shape and spread, and how it turns from pixel to pixel.
+ssao_status resolve_kernel(ssao_settings& r, const PresetRow& defaults, std::string& why) {
     if (!raw_enum_at_most(r.kernel_shape, SSAO_KERNEL_SEPARABLE))
         return fail(why, SSAO_ERROR_INVALID_ENUM, "kernel_shape is not an ssao_kernel_shape");
     if (r.kernel_shape == SSAO_KERNEL_DEFAULT) r.kernel_shape = SSAO_KERNEL_HEMISPHERE;
@@ -72,7 +65,11 @@ ssao_status resolve_settings(const ssao_settings& caller, ssao_settings& out, st
     if (r.rotation == SSAO_ROTATION_DEFAULT) r.rotation = SSAO_ROTATION_NOISE_4X4;
 
     if (r.seed == 0) r.seed = kDefaultSeed;
+    return SSAO_OK;
+}
 
+// The blur and the library's own output texture.
+ssao_status resolve_blur_and_output(ssao_settings& r, const PresetRow& defaults, std::string& why) {
     if (!raw_enum_at_most(r.blur, SSAO_BLUR_NONE))
         return fail(why, SSAO_ERROR_INVALID_ENUM, "blur is not an ssao_blur");
     if (r.blur == SSAO_BLUR_DEFAULT) r.blur = defaults.blur;
@@ -93,7 +90,11 @@ ssao_status resolve_settings(const ssao_settings& caller, ssao_settings& out, st
     if (!raw_enum_at_most(r.output_format, SSAO_OUTPUT_R16F))
         return fail(why, SSAO_ERROR_INVALID_ENUM, "output_format is not an ssao_output_format");
     if (r.output_format == SSAO_OUTPUT_DEFAULT) r.output_format = SSAO_OUTPUT_R8;
+    return SSAO_OK;
+}
 
+// What follows from the radius (bias, thickness), the march's steps and the grid.
+ssao_status resolve_march(ssao_settings& r, const PresetRow& defaults, std::string& why) {
     if (!finite(r.bias) || r.bias < 0.0f)
         return fail(why, SSAO_ERROR_INVALID_VALUE, "bias must be a finite number >= 0");
     // The derived bias must stay > 0 as the header promises: for a tiny
@@ -116,7 +117,11 @@ ssao_status resolve_settings(const ssao_settings& caller, ssao_settings& out, st
     if (!raw_enum_at_most(r.resolution, SSAO_RESOLUTION_QUARTER))
         return fail(why, SSAO_ERROR_INVALID_ENUM, "resolution is not an ssao_resolution");
     if (r.resolution == SSAO_RESOLUTION_DEFAULT) r.resolution = defaults.resolution;
+    return SSAO_OK;
+}
 
+// Distance fade, radius in pixels, debug view: off unless set.
+ssao_status resolve_extras(ssao_settings& r, const PresetRow&, std::string& why) {
     // Distance fade: off (both zero) or 0 <= fade_start < fade_end < inf.
     if (!finite(r.fade_start) || !finite(r.fade_end) || r.fade_start < 0.0f || r.fade_end < 0.0f)
         return fail(why, SSAO_ERROR_INVALID_VALUE, "fade_start and fade_end must be finite and >= 0");
@@ -130,7 +135,27 @@ ssao_status resolve_settings(const ssao_settings& caller, ssao_settings& out, st
 
     if (!raw_enum_at_most(r.debug_view, SSAO_DEBUG_VIEW_BLUR_WEIGHTS))
         return fail(why, SSAO_ERROR_INVALID_ENUM, "debug_view is not an ssao_debug_view");
+    return SSAO_OK;
+}
 
+}  // namespace
+
+ssao_status resolve_settings(const ssao_settings& caller, ssao_settings& out, std::string& why) {
+    if (!is_known_size<ssao_settings>(caller.size))
+        return fail(why, SSAO_ERROR_STRUCT_SIZE,
+                    "ssao_settings.size is " + std::to_string(caller.size) + ", expected " +
+                        std::to_string(sizeof(ssao_settings)) + " (or " + std::to_string(SSAO_SETTINGS_SIZE_1_1) +
+                        " for interface 1.1, " + std::to_string(SSAO_SETTINGS_SIZE_1_0) + " for 1.0)");
+    ssao_settings r = read_prefix(caller);
+
+    // The method first: the defaults of the fields a preset sets depend on it.
+    if (!raw_enum_at_most(r.method, SSAO_METHOD_VISIBILITY))
+        return fail(why, SSAO_ERROR_INVALID_ENUM, "method is not an ssao_method");
+    if (r.method == SSAO_METHOD_DEFAULT) r.method = preset_row(SSAO_PRESET_DEFAULT).method;
+    const PresetRow& defaults = defaults_for_method(r.method);
+    // In this order, so a struct with several bad fields names the same one every time.
+    for (auto step : {resolve_amounts, resolve_kernel, resolve_blur_and_output, resolve_march, resolve_extras})
+        if (const ssao_status st = step(r, defaults, why); st != SSAO_OK) return st;
     out = r;
     return SSAO_OK;
 }
