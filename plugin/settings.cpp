@@ -20,10 +20,6 @@ ssao_status fail(std::string& why, ssao_status status, const std::string& what) 
     return status;
 }
 
-}  // namespace
-
-namespace {
-
 // How many samples, how far, how strong.
 ssao_status resolve_amounts(ssao_settings& r, const PresetRow& defaults, std::string& why) {
     if (r.sample_count == 0) r.sample_count = defaults.sample_count;
