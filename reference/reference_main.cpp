@@ -208,106 +208,108 @@ bool make_dirs(const std::string& path, std::string& error) {
     return true;
 }
 
-}  // namespace
+// A runtime failure: run prints "ssao-reference: error: " + what() and exits 1.
+struct Failure : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
 
-static int run(int argc, char** argv) {
-    Options o;
-    std::string error;
-    switch (parse(argc, argv, o, error)) {
-        case Parse::Help: std::fputs(help_text().c_str(), stdout); return 0;
-        case Parse::Version: std::printf("%s\n", flags::version_line("ssao-reference").c_str()); return 0;
-        case Parse::Error: std::fprintf(stderr, "ssao-reference: error: %s.\n", error.c_str()); return 2;
-        case Parse::Run: break;
-    }
+// The scene, the camera and the radius, as ssao-host picks them.
+struct Setup {
+    scene::Scene sc;
+    camera::Camera cam;
+    camera::Source camera_source = camera::Source::Framed;
+    float radius = 0.5f;
+    std::string radius_note = "--radius";
+};
+
+Setup load(Options& o) {
+    Setup s;
     const bool bundled_scene = o.scene_path.empty();
     if (bundled_scene) o.scene_path = scene::default_path();
-
-    scene::Scene sc;
+    std::string error;
     scene::Limits limits;
     limits.allow_outside_files = o.allow_outside_files;
-    if (!scene::load(o.scene_path, sc, error, limits)) {
-        std::fprintf(stderr, "ssao-reference: error: %s\n", error.c_str());
-        return 1;
-    }
+    if (!scene::load(o.scene_path, s.sc, error, limits)) throw Failure(error);
     const float aspect = float(o.width) / float(o.height);
-    camera::Source camera_source = camera::Source::Framed;
-    const camera::Camera cam = camera::initial(sc, aspect, o.cam, bundled_scene, &camera_source);
-    // Radius as ssao-host picks it: --radius, else the scene's hint, else 0.05 x the
-    // bounding-box diagonal (else the plugin's default 0.5).
-    std::string radius_note = "--radius";
-    float radius = 0.5f;
+    s.cam = camera::initial(s.sc, aspect, o.cam, bundled_scene, &s.camera_source);
+    // --radius, else the scene's hint, else 0.05 x the bounding-box diagonal
+    // (else the plugin's default 0.5).
     if (o.radius) {
-        radius = *o.radius;
-    } else if (const auto r = scene::ao_radius(sc)) {
-        radius = r->radius;
-        radius_note = r->source;
+        s.radius = *o.radius;
+    } else if (const auto r = scene::ao_radius(s.sc)) {
+        s.radius = r->radius;
+        s.radius_note = r->source;
     } else {
-        radius_note = "plugin default";
+        s.radius_note = "plugin default";
     }
+    return s;
+}
 
-    if (!make_dirs(o.out_dir, error)) {
-        std::fprintf(stderr, "ssao-reference: error: %s\n", error.c_str());
-        return 1;
-    }
-
-    raytrace::Tracer tracer(sc.mesh);
-    if (!tracer.ok()) {
-        std::fprintf(stderr, "ssao-reference: error: the ray tracer could not be built: %s.\n", tracer.error().c_str());
-        return 1;
-    }
+void print_setup(const Options& o, const Setup& s) {
+    const camera::Camera& cam = s.cam;
     std::printf("scene     %s: %zu triangles, bounds (%g, %g, %g) .. (%g, %g, %g)\n", o.scene_path.c_str(),
-                sc.mesh.triangle_count(), sc.bounds_min.x, sc.bounds_min.y, sc.bounds_min.z, sc.bounds_max.x,
-                sc.bounds_max.y, sc.bounds_max.z);
+                s.sc.mesh.triangle_count(), s.sc.bounds_min.x, s.sc.bounds_min.y, s.sc.bounds_min.z, s.sc.bounds_max.x,
+                s.sc.bounds_max.y, s.sc.bounds_max.z);
     std::printf("camera    %s, eye (%g, %g, %g), target (%g, %g, %g), %s, near %g, far %g\n",
-                (o.cam.eye || o.cam.target) ? "from the flags" : camera::describe(camera_source), cam.eye.x, cam.eye.y, cam.eye.z, cam.target.x,
-                cam.target.y, cam.target.z,
+                (o.cam.eye || o.cam.target) ? "from the flags" : camera::describe(s.camera_source), cam.eye.x, cam.eye.y,
+                cam.eye.z, cam.target.x, cam.target.y, cam.target.z,
                 cam.orthographic ? ("orthographic half-height " + std::to_string(cam.ortho_half_height)).c_str()
                                  : ("fov " + std::to_string(glm::degrees(cam.yfov)) + " deg").c_str(),
                 cam.znear, cam.zfar);
-    std::printf("trace     %dx%d, radius %g (%s), %d rays per pixel, seed %u\n", o.width, o.height, radius,
-                radius_note.c_str(), o.samples, o.seed);
+    std::printf("trace     %dx%d, radius %g (%s), %d rays per pixel, seed %u\n", o.width, o.height, s.radius,
+                s.radius_note.c_str(), o.samples, o.seed);
     std::fflush(stdout);
+}
 
+// V_R: the ray-traced ground truth (and the depth layer the limit reads).
+raytrace::Image trace(const Options& o, const Setup& s) {
+    raytrace::Tracer tracer(s.sc.mesh);
+    if (!tracer.ok()) throw Failure("the ray tracer could not be built: " + tracer.error() + ".");
+    print_setup(o, s);
     raytrace::RenderOptions ro;
     ro.width = o.width;
     ro.height = o.height;
-    ro.radius = radius;
+    ro.radius = s.radius;
     ro.samples = o.samples;
     ro.seed = o.seed;
     ro.threads = o.threads;
     ro.progress = !o.quiet;
     raytrace::Image img;
-    if (!tracer.render(cam, ro, img, error)) {
-        std::fprintf(stderr, "ssao-reference: error: %s.\n", error.c_str());
-        return 1;
-    }
+    std::string error;
+    if (!tracer.render(s.cam, ro, img, error)) throw Failure(error + ".");
+    return img;
+}
 
-    // The depth-only limit over the traced image's own depth layer.
+depth_limit::Options limit_options(const Options& o, const Setup& s) {
     depth_limit::Options lo;
-    depth_limit::Image limit;
-    if (o.limit) {
-        lo.radius = radius;
-        lo.thickness = o.thickness ? *o.thickness : depth_limit::kDefaultThicknessOfR * double(radius);
-        lo.directions = o.limit_directions ? *o.limit_directions : depth_limit::kDefaultDirections;
-        lo.seed = o.seed;
-        lo.threads = o.threads;
-        lo.progress = !o.quiet;
-        std::printf("limit     depth-only, thickness %g%s, %d directions per pixel (%d rotated sets), exact march\n",
-                    lo.thickness, o.thickness ? "" : (" (" + flags_num(depth_limit::kDefaultThicknessOfR) + " x R)").c_str(),
-                    lo.directions, depth_limit::kReplicas);
-        std::fflush(stdout);
-        if (!depth_limit::compute(cam, img, lo, limit, error)) {
-            std::fprintf(stderr, "ssao-reference: error: %s.\n", error.c_str());
-            return 1;
-        }
-    }
+    lo.radius = s.radius;
+    lo.thickness = o.thickness ? *o.thickness : depth_limit::kDefaultThicknessOfR * double(s.radius);
+    lo.directions = o.limit_directions ? *o.limit_directions : depth_limit::kDefaultDirections;
+    lo.seed = o.seed;
+    lo.threads = o.threads;
+    lo.progress = !o.quiet;
+    return lo;
+}
 
-    // Write everything; on a failure remove what was written.
+// The depth-only limit over the traced image's own depth layer.
+depth_limit::Image compute_limit(const Options& o, const Setup& s, const depth_limit::Options& lo,
+                                 const raytrace::Image& img) {
+    std::printf("limit     depth-only, thickness %g%s, %d directions per pixel (%d rotated sets), exact march\n",
+                lo.thickness, o.thickness ? "" : (" (" + flags_num(depth_limit::kDefaultThicknessOfR) + " x R)").c_str(),
+                lo.directions, depth_limit::kReplicas);
+    std::fflush(stdout);
+    depth_limit::Image limit;
+    std::string error;
+    if (!depth_limit::compute(s.cam, img, lo, limit, error)) throw Failure(error + ".");
+    return limit;
+}
+
+// Every image; on a failure what was written is removed. Returns the paths.
+std::vector<std::string> write_outputs(const Options& o, const Setup& s, const raytrace::Image& img,
+                                       const depth_limit::Options& lo, const depth_limit::Image& limit) {
     const std::string dir = o.out_dir;
     std::vector<std::string> written;
-    auto undo = [&]() {
-        for (const auto& p : written) std::remove(p.c_str());
-    };
+    std::string error;
     auto png = [&](const std::string& name, const std::vector<float>& v) {
         const std::string p = dir + "/" + name;
         if (!refio::write_png_grey(p, img.width, img.height, v, error)) return false;
@@ -315,9 +317,9 @@ static int run(int argc, char** argv) {
         return true;
     };
     // What the images were made with, for ssao-error to check (provenance.h).
-    const provenance::Fields made_with = provenance::describe(o.scene_path, o.width, o.height, cam, radius);
+    const provenance::Fields made_with = provenance::describe(o.scene_path, o.width, o.height, s.cam, s.radius);
     provenance::Fields limit_made_with = made_with;
-    if (o.limit) limit_made_with = provenance::describe(o.scene_path, o.width, o.height, cam, radius, lo.thickness);
+    if (o.limit) limit_made_with = provenance::describe(o.scene_path, o.width, o.height, s.cam, s.radius, lo.thickness);
     auto exr = [&](const std::string& name, std::vector<refio::Channel> ch, const provenance::Fields& attributes = {}) {
         const std::string p = dir + "/" + name;
         if (!refio::write_exr(p, img.width, img.height, std::move(ch), error, attributes)) return false;
@@ -346,11 +348,13 @@ static int run(int argc, char** argv) {
         ok = exr("limit_ao.exr", {{"Y", &limit.ao}, {"A", &img.mask}}, limit_made_with) &&
              exr("limit_stderr.exr", {{"Y", &limit.std_error}}) && png("limit_ao.png", limit.ao);
     if (!ok) {
-        undo();
-        std::fprintf(stderr, "ssao-reference: error: %s\n", error.c_str());
-        return 1;
+        for (const auto& p : written) std::remove(p.c_str());
+        throw Failure(error);
     }
+    return written;
+}
 
+void report_reference(const Options& o, const raytrace::Image& img) {
     double mean = 0.0, se = 0.0, se_max = 0.0;
     size_t geo = 0;
     for (size_t i = 0; i < img.ao.size(); ++i)
@@ -368,32 +372,62 @@ static int run(int argc, char** argv) {
     std::printf("noise     mean standard error %.5f, max %.5f (bound 0.5/sqrt(N) = %.5f)\n", se, se_max,
                 0.5 / std::sqrt(double(o.samples)));
     std::printf("time      %.2f s, %.2f Mrays/s\n", img.seconds, double(img.rays) / std::max(img.seconds, 1e-9) * 1e-6);
-    if (o.limit) {
-        double lse = 0.0, lse2 = 0.0, lse_max = 0.0, lmean = 0.0;
-        std::vector<uint8_t> geometry(img.mask.size());
-        std::vector<double> errs;
-        for (size_t i = 0; i < img.mask.size(); ++i) {
-            geometry[i] = img.mask[i] > 0.5f;
-            if (!geometry[i]) continue;
-            lmean += limit.ao[i];
-            lse += limit.std_error[i];
-            lse2 += double(limit.std_error[i]) * limit.std_error[i];
-            lse_max = std::max(lse_max, double(limit.std_error[i]));
-            errs.push_back(limit.std_error[i]);
-        }
-        if (geo) {
-            lmean /= double(geo);
-            lse /= double(geo);
-            lse2 /= double(geo);
-        }
-        const metrics::Stats st = metrics::stats_over(limit.ao, img.ao, geometry, &img.std_error, "all");
-        std::printf("limit     mean AO %.4f; noise: standard error mean %.5f, rms %.5f, 99th percentile %.5f, max %.5f\n",
-                    lmean, lse, std::sqrt(lse2), metrics::percentile(errs, 99.0), lse_max);
-        std::printf("limit     vs V_R over all geometry: RMSE %.5f, PSNR %.2f dB, mean error %+.5f\n", st.rmse,
-                    st.psnr, st.mean_error);
-        std::printf("time      limit %.2f s\n", limit.seconds);
+}
+
+void report_limit(const raytrace::Image& img, const depth_limit::Image& limit) {
+    double lse = 0.0, lse2 = 0.0, lse_max = 0.0, lmean = 0.0;
+    size_t geo = 0;
+    std::vector<uint8_t> geometry(img.mask.size());
+    std::vector<double> errs;
+    for (size_t i = 0; i < img.mask.size(); ++i) {
+        geometry[i] = img.mask[i] > 0.5f;
+        if (!geometry[i]) continue;
+        ++geo;
+        lmean += limit.ao[i];
+        lse += limit.std_error[i];
+        lse2 += double(limit.std_error[i]) * limit.std_error[i];
+        lse_max = std::max(lse_max, double(limit.std_error[i]));
+        errs.push_back(limit.std_error[i]);
     }
-    for (const auto& p : written) std::printf("wrote     %s\n", p.c_str());
+    if (geo) {
+        lmean /= double(geo);
+        lse /= double(geo);
+        lse2 /= double(geo);
+    }
+    const metrics::Stats st = metrics::stats_over(limit.ao, img.ao, geometry, &img.std_error, "all");
+    std::printf("limit     mean AO %.4f; noise: standard error mean %.5f, rms %.5f, 99th percentile %.5f, max %.5f\n",
+                lmean, lse, std::sqrt(lse2), metrics::percentile(errs, 99.0), lse_max);
+    std::printf("limit     vs V_R over all geometry: RMSE %.5f, PSNR %.2f dB, mean error %+.5f\n", st.rmse, st.psnr,
+                st.mean_error);
+    std::printf("time      limit %.2f s\n", limit.seconds);
+}
+
+}  // namespace
+
+// Parse, load, trace (and the limit), write, report.
+static int run(int argc, char** argv) {
+    Options o;
+    std::string error;
+    switch (parse(argc, argv, o, error)) {
+        case Parse::Help: std::fputs(help_text().c_str(), stdout); return 0;
+        case Parse::Version: std::printf("%s\n", flags::version_line("ssao-reference").c_str()); return 0;
+        case Parse::Error: std::fprintf(stderr, "ssao-reference: error: %s.\n", error.c_str()); return 2;
+        case Parse::Run: break;
+    }
+    try {
+        const Setup setup = load(o);
+        if (!make_dirs(o.out_dir, error)) throw Failure(error);
+        const raytrace::Image img = trace(o, setup);
+        const depth_limit::Options lo = limit_options(o, setup);
+        const depth_limit::Image limit = o.limit ? compute_limit(o, setup, lo, img) : depth_limit::Image{};
+        const std::vector<std::string> written = write_outputs(o, setup, img, lo, limit);
+        report_reference(o, img);
+        if (o.limit) report_limit(img, limit);
+        for (const auto& p : written) std::printf("wrote     %s\n", p.c_str());
+    } catch (const Failure& f) {
+        std::fprintf(stderr, "ssao-reference: error: %s\n", f.what());
+        return 1;
+    }
     return 0;
 }
 
