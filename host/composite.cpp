@@ -12,14 +12,6 @@ namespace composite {
 
 namespace {
 
-const char* kVertex = R"glsl(#version 330 core
-// One triangle covering the viewport; no vertex buffer.
-void main() {
-    vec2 p = vec2(float((gl_VertexID << 1) & 2), float(gl_VertexID & 2));
-    gl_Position = vec4(p * 2.0 - 1.0, 0.0, 1.0);
-}
-)glsl";
-
 const char* kFragment = R"glsl(#version 330 core
 uniform sampler2D u_depth;
 uniform sampler2D u_normal;
@@ -114,7 +106,7 @@ Lighting default_lighting(const glm::vec3& bounds_min, const glm::vec3& bounds_m
 
 Compositor::Compositor(GladGLContext& gl, int width, int height) : gl_(gl), width_(width), height_(height) {
     try {
-        program_ = gl_util::make_program(gl, "composite", kVertex, kFragment);
+        program_ = gl_util::make_program(gl, "composite", gl_util::fullscreen_vertex_shader().c_str(), kFragment);
         gl.GenVertexArrays(1, &vao_);
         target_ = gl_util::make_texture(gl, GL_RGBA8, width, height);
         gl.GenFramebuffers(1, &fbo_);

@@ -1,8 +1,12 @@
 #include "gl_util.h"
 
+#include "fullscreen_vert_embedded.h"
+
 #include <cstdio>
 
 namespace gl_util {
+
+std::string fullscreen_vertex_shader() { return std::string("#version 330 core\n") + k_fullscreen_vert; }
 
 namespace {
 

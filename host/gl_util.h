@@ -15,6 +15,11 @@ struct Error : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
+// The vertex shader of a full-screen pass for GLSL 3.30: one triangle covering
+// the viewport, drawn with an empty vertex array (shaders/fullscreen.vert, the
+// plugin's own).
+std::string fullscreen_vertex_shader();
+
 // Compiles and links a vertex + fragment program; throws with the driver's log.
 GLuint make_program(GladGLContext& gl, const char* what, const char* vertex_src, const char* fragment_src);
 

@@ -7,7 +7,7 @@ add_library(ssao_host_gl STATIC
   ${CMAKE_CURRENT_LIST_DIR}/gl_util.cpp
   ${CMAKE_CURRENT_LIST_DIR}/gbuffer.cpp)
 target_include_directories(ssao_host_gl PUBLIC ${CMAKE_CURRENT_LIST_DIR} ${PROJECT_SOURCE_DIR}/include)
-target_link_libraries(ssao_host_gl PUBLIC ssao_glad ssao_scene glm::glm)
+target_link_libraries(ssao_host_gl PUBLIC ssao_glad ssao_scene glm::glm PRIVATE ssao_fullscreen_vert)
 target_compile_options(ssao_host_gl PRIVATE ${SSAO_WARNINGS})
 
 # The rest of ssao-host except main(): its flags, the settings and camera a run

@@ -14,14 +14,6 @@ namespace viewer {
 
 namespace {
 
-const char* kVertex = R"glsl(#version 330 core
-// One triangle covering the viewport; no vertex buffer.
-void main() {
-    vec2 p = vec2(float((gl_VertexID << 1) & 2), float(gl_VertexID & 2));
-    gl_Position = vec4(p * 2.0 - 1.0, 0.0, 1.0);
-}
-)glsl";
-
 // The AO texture as grey, pixel for pixel (white without one: mode E), or a
 // normal debug view's RGB.
 const char* kAoFragment = R"glsl(#version 330 core
@@ -49,7 +41,7 @@ Renderer::Renderer(GladGLContext& gl, const ssao_api& api, ssao_get_proc_address
     if (st != SSAO_OK) throw std::runtime_error(std::string("the SSAO plugin could not start: ") + api_.status_string(st));
     applied_ = settings;
     try {
-        ao_program_ = gl_util::make_program(gl_, "AO view", kVertex, kAoFragment);
+        ao_program_ = gl_util::make_program(gl_, "AO view", gl_util::fullscreen_vertex_shader().c_str(), kAoFragment);
         gl_.GenVertexArrays(1, &vao_);
         // texelFetch needs a complete texture whatever the plugin's filters.
         gl_.GenSamplers(1, &sampler_);
