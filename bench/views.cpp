@@ -62,7 +62,7 @@ camera::Camera view_camera(const scene::Scene& s, float aspect, View v, const ra
         across.y = 0.0f;
         across = glm::length(across) > 1e-6f ? glm::normalize(across) : glm::vec3(0.0f, 0.0f, 1.0f);
         const float e = glm::radians(kHighElevationDeg);
-        o.eye = focus + distance * (std::cos(e) * across + std::sin(e) * glm::vec3(0.0f, 1.0f, 0.0f));
+        o.eye = focus + distance * kHighFraction * (std::cos(e) * across + std::sin(e) * glm::vec3(0.0f, 1.0f, 0.0f));
         c.up = glm::vec3(0.0f, 1.0f, 0.0f);
     }
     // Near and far refitted to the bounds along the new view (the standard's

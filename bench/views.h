@@ -25,11 +25,12 @@ std::vector<View> all_views();
 // The radius multiples every scene and view is measured at (they span 4x).
 const std::vector<float>& radius_scales();
 
-// How steeply the high view looks down (degrees below the horizon), and how
-// near the close-up comes (its distance to what the standard view looks at,
-// as a fraction of the standard view's).
+// How steeply the high view looks down (degrees below the horizon) and from how
+// far, and how near the close-up comes: distances to the point the standard
+// view looks at, as fractions of the standard view's.
 constexpr float kHighElevationDeg = 65.0f;
-constexpr float kCloseFraction = 0.3f;
+constexpr float kHighFraction = 0.7f;
+constexpr float kCloseFraction = 0.25f;
 
 // The camera of view `v` for scene `s` at aspect `aspect`. The close-up and
 // the high view look at the point the standard view's centre ray hits (found
