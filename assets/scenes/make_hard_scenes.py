@@ -124,13 +124,13 @@ def overhang():
         for z in (-0.55, 0.47):
             tris += box((x, 0, z), (x + 0.08, 0.25, z + 0.08))
     # A bench: a slab 0.12 above the floor on two blocks (an arch with a low opening).
-    tris += box((-2.4, 0.12, -2.2), (-0.4, 0.2, -1.6))
-    tris += box((-2.4, 0, -2.2), (-2.2, 0.12, -1.6))
-    tris += box((-0.6, 0, -2.2), (-0.4, 0.12, -1.6))
+    tris += box((-0.9, 0.12, 1.2), (0.5, 0.2, 1.7))
+    tris += box((-0.9, 0, 1.2), (-0.7, 0.12, 1.7))
+    tris += box((0.3, 0, 1.2), (0.5, 0.12, 1.7))
     # A shelf cantilevered from a back wall, 0.5 above the floor.
     tris += quad((-3, 0, -3), (6, 0, 0), (0, 2, 0))                # back wall, normal +z
     tris += box((0.4, 0.5, -3.0), (2.6, 0.56, -2.4))
-    return gltf("overhang", tris, (2.4, 1.3, 2.6), (0.0, 0.15, -0.5), 0.4)
+    return gltf("overhang", tris, (2.0, 0.7, 2.4), (-0.2, 0.12, -0.5), 0.4)
 
 
 def creases():
