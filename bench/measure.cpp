@@ -299,7 +299,12 @@ void measure_scene(const std::string& path, const Options& o, int scale, const s
                 t.gpu_ms = [&] { return fp.last_ms(); };
                 passes.push_back(std::move(t));
             }
-            time_interleaved(gl, passes, o);
+            // A frame at k x the base size costs k^2 as much and varies less:
+            // 1/k of the frames per round (at least one) keeps larger sizes affordable.
+            Options per_size = o;
+            per_size.frames = std::max(1, o.frames / scale);
+            per_size.warmup = std::max(1, o.warmup / scale);
+            time_interleaved(gl, passes, per_size);
             for (size_t i = 0; i < passes.size(); ++i) {
                 Row& row = rows[first + i];
                 set_timing(row, passes[i]);

@@ -23,13 +23,14 @@ std::string help_text() {
            "  --rounds N             timing rounds, 3..1000 (default 3): each round times every\n"
            "                         configuration in turn, figures are medians over rounds\n"
            "  --frames N             timed frames per configuration per round (default 5), after\n"
-           "  --warmup N             untimed frames per configuration per round (default 2)\n"
+           "  --warmup N             untimed frames per configuration per round (default 2); at k x the\n"
+           "                         base size 1/k of each, at least 1\n"
            "  --reference-samples N  rays per pixel of the ground truth, standard view at 1x radius (default 512)\n"
            "  --limit-directions N   directions per pixel of the depth-only limit there, a multiple of " +
            std::to_string(depth_limit::kReplicas) + " (default " + std::to_string(depth_limit::kDefaultDirections) +
            ")\n"
            "  --extra-samples N      rays per pixel on the other views and radii (default 128)\n"
-           "  --extra-directions N   limit directions on the other views and radii (default 256)\n"
+           "  --extra-directions N   limit directions on the other views and radii (default 128)\n"
            "  --out DIR              where results go (default bench-out)\n"
            "  --quick                one timed frame a round, fewer rays and directions, base size only\n"
            "  --plugin PATH          libssao.so to load (default: as ssao-host finds it)\n"
@@ -154,7 +155,7 @@ Parse parse(int argc, char** argv, Options& o, std::string& error) {
              o.reference_samples = 128;
              o.limit_directions = 64;
              o.extra_samples = 32;
-             o.extra_directions = 32;
+             o.extra_directions = 16;
              o.scales = {1};
          }},
     };

@@ -13,12 +13,13 @@ struct Options {
     int width = 320, height = 180;           // base size: the full sweep, errors and presets
     std::vector<int> scales = {1, 2, 4};     // x the base size: presets, textbook and floor timed (scaling table)
     // Timing: `rounds` rounds, each running every configuration in turn for
-    // `warmup` untimed and `frames` timed frames (bench/timing.h).
+    // `warmup` untimed and `frames` timed frames (bench/timing.h); at k x the
+    // base size 1/k of each (at least 1).
     int warmup = 2, frames = 5, rounds = 3;
     int reference_samples = 512;             // rays per pixel of V_R, standard view at 1x radius
     int limit_directions = 0;                // 0: depth_limit's default (standard view at 1x radius)
     int extra_samples = 128;                 // the same for every other view and radius
-    int extra_directions = 256;
+    int extra_directions = 128;
     std::vector<View> views = all_views();
     std::vector<float> radius_scales = bench::radius_scales();
     bool full_sweep = true;                  // false (--sweep presets): presets, textbook, floor and limit only

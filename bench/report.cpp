@@ -137,7 +137,7 @@ std::vector<Summary> summarise(const std::vector<Row>& rows, int width, RowFilte
 }
 
 // The preset rule (README, "Presets"), over the sweep's kernel and visibility
-// configurations, times as means of the ratio to the textbook pass:
+// configurations, times as means of the CPU-time ratio to the textbook pass:
 //   LOW    = the fastest configuration on the front against V_R;
 //   MEDIUM = the most accurate (mean PSNR against V_R) within max(1/4, 2 x LOW's time);
 //   HIGH   = the most accurate within max(1/2, 2 x MEDIUM's time);
@@ -413,7 +413,7 @@ void write_report(const Options& o, const std::vector<Row>& rows) {
     std::ostringstream md;
     md << "Base size " << o.width << "x" << o.height << ". Time: this process's CPU time per frame (submission to "
        << "glFinish) with LP_NUM_THREADS=" << o.lp_num_threads << ", configurations interleaved over " << o.rounds
-       << " rounds of " << o.warmup << " untimed and " << o.frames << " timed frames; a figure is the median over "
+       << " rounds of " << o.warmup << " untimed and " << o.frames << " timed frames (1/k of each at k x the base size); a figure is the median over "
        << "rounds of each round's mean (spread: lowest-highest round). GPU timers (median over frames) and wall "
        << "clock beside it; every ratio uses CPU time.\n\n"
        << "The sweep, standard view at each scene's radius, means over " << scenes.size() << " scenes:\n\n"
@@ -433,7 +433,8 @@ void write_report(const Options& o, const std::vector<Row>& rows) {
 
     std::ostringstream pr;
     pr << "Rule: low = the fastest configuration on the front against V_R; medium, high, ultra = the most accurate\n"
-          "(mean PSNR against V_R) within max(budget, 2 x the previous preset's time), budgets 1/4, 1/2, 1 x textbook.\n";
+          "(mean PSNR against V_R) within max(budget, 2 x the previous preset's time), budgets 1/4, 1/2, 1 x textbook\n"
+          "(times: CPU time over the textbook pass's; standard view at each scene's radius).\n";
     const Summary* prev = fastest_on_front(sum);
     if (prev)
         pr << "low: " << prev->config << " (x" << fmt(prev->ratio_textbook) << ", " << fmt(prev->psnr, 2) << " dB)\n";
