@@ -9,9 +9,10 @@
 #include "raytracer.h"
 #include "scene.h"
 #include "textbook_ssao.h"
+#include "timing.h"
 
 #include <algorithm>
-#include <chrono>
+#include <functional>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -21,22 +22,17 @@ namespace bench {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-double since(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
-
-double quantile(std::vector<double> v, double q) {
-    if (v.empty()) return NAN;
-    std::sort(v.begin(), v.end());
-    const double pos = q * static_cast<double>(v.size() - 1);
-    const size_t i = static_cast<size_t>(pos);
-    const double f = pos - static_cast<double>(i);
-    return i + 1 < v.size() ? v[i] * (1 - f) + v[i + 1] * f : v[i];
-}
-
 void set_times(Row& row, const std::vector<double>& ms) {
     row.median_ms = quantile(ms, 0.5);
     row.p10_ms = quantile(ms, 0.1);
     row.p90_ms = quantile(ms, 0.9);
+}
+
+// "0.5", "1", "2": a radius multiple as the progress lines show it.
+std::string fmt_scale(float s) {
+    char b[32];
+    std::snprintf(b, sizeof b, "%g", double(s));
+    return b;
 }
 
 // Top-row-first (reference) to bottom-row-first (GL read-back).
@@ -55,15 +51,13 @@ struct Truth {
     std::vector<float> limit, limit_std_error;      // V_limit
 };
 
-Truth trace(const scene::Scene& sc, const camera::Camera& cam, int w, int h, float radius, const Options& o,
-            const std::string& name) {
-    raytrace::Tracer tracer(sc.mesh);
-    if (!tracer.ok()) throw std::runtime_error(tracer.error());
+Truth trace(const raytrace::Tracer& tracer, const camera::Camera& cam, int w, int h, float radius, int samples,
+            int directions, const std::string& name) {
     raytrace::RenderOptions ro;
     ro.width = w;
     ro.height = h;
     ro.radius = radius;
-    ro.samples = o.reference_samples;
+    ro.samples = samples;
     ro.progress = false;
     raytrace::Image img;
     std::string error;
@@ -72,11 +66,11 @@ Truth trace(const scene::Scene& sc, const camera::Camera& cam, int w, int h, flo
     depth_limit::Options lo;
     lo.radius = radius;
     lo.thickness = depth_limit::kDefaultThicknessOfR * radius;
-    if (o.limit_directions) lo.directions = o.limit_directions;
+    if (directions) lo.directions = directions;
     depth_limit::Image lim;
     if (!depth_limit::compute(cam, img, lo, lim, error)) throw std::runtime_error(error);
     std::fprintf(stderr, "  %s %dx%d: reference %d rays/pixel in %.1f s, limit %d directions in %.1f s\n",
-                 name.c_str(), w, h, o.reference_samples, img.seconds, lo.directions, lim.seconds);
+                 name.c_str(), w, h, samples, img.seconds, lo.directions, lim.seconds);
 
     Truth t;
     t.width = w;
@@ -111,14 +105,48 @@ void fill_errors(Row& row, const std::vector<float>& ao, const Truth& t) {
     row.has_error = true;
 }
 
-Row make_row(const std::string& scene, const std::string& config, Row::Kind kind, int w, int h) {
-    Row r;
-    r.scene = scene;
-    r.config = config;
-    r.kind = kind;
-    r.width = w;
-    r.height = h;
-    return r;
+// A timed pass: `prepare` before its frames in each round (the plugin's
+// settings), `frame` submits one frame, `gpu_ms` reads that frame's GPU timer
+// once glFinish has returned (NaN: none).
+struct Timed {
+    std::function<void()> prepare, frame;
+    std::function<double()> gpu_ms;
+    std::vector<double> gpu, wall, cpu_per_round;
+};
+
+// Every round runs each pass in turn (warm-up, then timed frames), so a slow
+// spell of a shared machine lands on all of them alike.
+void time_interleaved(GladGLContext& gl, std::vector<Timed>& passes, const Options& o) {
+    for (int r = 0; r < o.rounds; ++r)
+        for (Timed& t : passes) {
+            if (t.prepare) t.prepare();
+            for (int f = 0; f < o.warmup; ++f) {
+                t.frame();
+                gl.Finish();
+            }
+            double cpu = 0;
+            for (int f = 0; f < o.frames; ++f) {
+                const double c0 = process_cpu_ms(), w0 = wall_ms();
+                t.frame();
+                gl.Finish();
+                const double w1 = wall_ms(), c1 = process_cpu_ms();
+                t.wall.push_back(w1 - w0);
+                cpu += c1 - c0;
+                const double g = t.gpu_ms();
+                if (std::isfinite(g)) t.gpu.push_back(g);
+            }
+            t.cpu_per_round.push_back(cpu / o.frames);
+        }
+}
+
+void set_timing(Row& row, const Timed& t) {
+    set_times(row, t.gpu);
+    row.wall_ms = quantile(t.wall, 0.5);
+    const RoundStats cpu = over_rounds(t.cpu_per_round);
+    row.cpu_ms = cpu.median;
+    row.cpu_min_ms = cpu.min;
+    row.cpu_max_ms = cpu.max;
+    row.rounds = cpu.rounds;
 }
 
 // The settings a configuration runs with on a scene of radius `radius`.
@@ -139,7 +167,8 @@ ssao_settings settings_for(const Config& c, const ssao_api& api, float radius) {
 }  // namespace
 
 void measure_scene(const std::string& path, const Options& o, int scale, const ssao_api& api,
-                   const std::vector<Config>& configs, bool with_errors, std::vector<Row>& rows) {
+                   const std::vector<Config>& sweep, const std::vector<Config>& presets, bool with_errors,
+                   std::vector<Row>& rows) {
     scene::Scene sc;
     std::string error;
     scene::Limits limits;
@@ -147,116 +176,151 @@ void measure_scene(const std::string& path, const Options& o, int scale, const s
     if (!scene::load(path, sc, error, limits)) throw std::runtime_error(error);
     const int w = o.width * scale, h = o.height * scale;
     const float aspect = static_cast<float>(w) / static_cast<float>(h);
-    const camera::Camera cam = camera::choose(sc, aspect);
     // The same radius as ssao-host and ssao-reference use, so all agree on R.
     const auto scene_radius = scene::ao_radius(sc);
     if (!scene_radius) throw std::runtime_error(path + " has no extent to scale the radius to");
-    const float radius = scene_radius->radius;
     const std::string name = std::filesystem::path(path).stem().string();
-
-    Truth truth;
-    if (with_errors) {
-        truth = trace(sc, cam, w, h, radius, o, name);
-        Row lim = make_row(name, "depth-only limit (ideal march, T = R/2)", Row::Kind::limit, w, h);
-        lim.median_ms = lim.p10_ms = lim.p90_ms = NAN;
-        fill_errors(lim, truth.limit, truth);
-        rows.push_back(lim);
-    }
+    raytrace::Tracer tracer(sc.mesh);
+    if (!tracer.ok()) throw std::runtime_error(tracer.error());
+    const std::vector<float> scales = with_errors ? o.radius_scales : std::vector<float>{1.0f};
 
     eglctx::Options eo;
     auto egl = eglctx::Context::create(eo, error);
     if (!egl) throw std::runtime_error(error);
     GladGLContext& gl = egl->gl();
-    gbuffer::Desc desc;
-    desc.width = w;
-    desc.height = h;
-    gbuffer::GBuffer gbuf(gl, desc, sc.mesh);
-    const glm::mat4 view = camera::view_matrix(cam), proj = camera::projection_matrix(cam, aspect);
-    gbuf.render(view, proj);
 
-    ssao_context_desc cd{};
-    cd.size = sizeof cd;
-    cd.get_proc_address = &eglctx::Context::get_proc;
-    ssao_context* ctx = nullptr;
-    if (api.create_context(&cd, &ctx) != SSAO_OK) throw std::runtime_error("create_context failed");
-    ssao_inputs in{};
-    in.size = sizeof in;
-    in.depth_texture = gbuf.depth_texture();
-    in.normal_texture = o.normals_from_depth ? 0u : gbuf.normal_texture();
-    in.normal_space = SSAO_NORMAL_SPACE_VIEW;
-    in.normal_packing = SSAO_NORMAL_PACKING_SIGNED;
-    for (int c = 0; c < 4; ++c)
-        for (int r = 0; r < 4; ++r) in.projection[c * 4 + r] = proj[c][r];
-    in.clip_range = SSAO_CLIP_NEGATIVE_ONE_TO_ONE;
+    for (View v : o.views) {
+        const camera::Camera cam = view_camera(sc, aspect, v, tracer);
+        gbuffer::Desc desc;
+        desc.width = w;
+        desc.height = h;
+        gbuffer::GBuffer gbuf(gl, desc, sc.mesh);
+        const glm::mat4 view = camera::view_matrix(cam), proj = camera::projection_matrix(cam, aspect);
+        gbuf.render(view, proj);
+        ssao_inputs in{};
+        in.size = sizeof in;
+        in.depth_texture = gbuf.depth_texture();
+        in.normal_texture = o.normals_from_depth ? 0u : gbuf.normal_texture();
+        in.normal_space = SSAO_NORMAL_SPACE_VIEW;
+        in.normal_packing = SSAO_NORMAL_PACKING_SIGNED;
+        for (int c = 0; c < 4; ++c)
+            for (int r = 0; r < 4; ++r) in.projection[c * 4 + r] = proj[c][r];
+        in.clip_range = SSAO_CLIP_NEGATIVE_ONE_TO_ONE;
 
-    for (const Config& c : configs) {
-        ssao_settings s = settings_for(c, api, radius);
-        if (api.set_settings(ctx, &s) != SSAO_OK) throw std::runtime_error(c.name + ": " + api.last_error(ctx));
-        std::vector<double> ms;
-        ssao_output out{};
-        out.size = sizeof out;
-        std::vector<double> wall;
-        gl.Finish();
-        for (int f = 0; f < o.warmup + o.frames; ++f) {
-            const auto t0 = Clock::now();
-            if (api.execute(ctx, &in, &out) != SSAO_OK) throw std::runtime_error(api.last_error(ctx));
-            gl.Finish();  // the frame's queries are done: read them at once, one sample per frame
-            if (f >= o.warmup) wall.push_back(since(t0));
-            ssao_timings t{};
-            t.size = sizeof t;
-            api.get_timings(ctx, &t);
-            if (f >= o.warmup && t.available) ms.push_back(t.total_ms);
-        }
-        Row row = make_row(name, c.name, Row::Kind::plugin, w, h);
-        row.family = c.family;
-        row.s.size = sizeof row.s;
-        api.get_settings(ctx, &row.s);
-        set_times(row, ms);
-        row.wall_ms = quantile(wall, 0.5);
-        if (with_errors) fill_errors(row, gl_util::read_texture(gl, out.texture, out.origin[0], out.origin[1], w, h, 1), truth);
-        rows.push_back(row);
-        std::fprintf(stderr, "    %-52s %8.3f ms  PSNR %.2f dB (limit: %.2f dB)\n", c.name.c_str(), row.median_ms,
-                     row.all.psnr, row.vs_limit.psnr);
-    }
-    api.destroy_context(ctx);
+        for (float rs : scales) {
+            const float radius = scene_radius->radius * rs;
+            const bool main_case = v == View::standard && rs == 1.0f;
+            const std::string label = name + " " + view_name(v) + " " + fmt_scale(rs) + "R";
+            std::fprintf(stderr, "  %s at %dx%d (radius %.3g)\n", label.c_str(), w, h, radius);
+            auto row_for = [&](const std::string& config, Row::Kind kind) {
+                Row r;
+                r.scene = name;
+                r.config = config;
+                r.kind = kind;
+                r.view = v;
+                r.radius_scale = rs;
+                r.radius = radius;
+                r.width = w;
+                r.height = h;
+                return r;
+            };
 
-    // The chapter's pass, same process, same G-buffer normals, same timers.
-    {
-        textbook::Pass tb(gl, sc.mesh, w, h, radius);
-        tb.render_positions(view, proj);
-        std::vector<double> ms, wall;
-        gl.Finish();
-        for (int f = 0; f < o.warmup + o.frames; ++f) {
-            const auto t0 = Clock::now();
-            tb.run(gbuf.normal_texture(), proj);
-            gl.Finish();
-            if (f >= o.warmup) wall.push_back(since(t0));
-            if (f >= o.warmup) ms.push_back(tb.last_ms());
+            Truth truth;
+            if (with_errors) {
+                truth = trace(tracer, cam, w, h, radius, main_case ? o.reference_samples : o.extra_samples,
+                              main_case ? o.limit_directions : o.extra_directions, label);
+                Row lim = row_for("depth-only limit (ideal march, T = R/2)", Row::Kind::limit);
+                lim.median_ms = lim.p10_ms = lim.p90_ms = lim.wall_ms = NAN;
+                lim.cpu_ms = lim.cpu_min_ms = lim.cpu_max_ms = NAN;
+                fill_errors(lim, truth.limit, truth);
+                rows.push_back(lim);
+            }
+            std::vector<Config> configs = with_errors && main_case && o.full_sweep ? sweep : std::vector<Config>{};
+            configs.insert(configs.end(), presets.begin(), presets.end());
+
+            ssao_context_desc cd{};
+            cd.size = sizeof cd;
+            cd.get_proc_address = &eglctx::Context::get_proc;
+            ssao_context* ctx = nullptr;
+            if (api.create_context(&cd, &ctx) != SSAO_OK) throw std::runtime_error("create_context failed");
+            ssao_output out{};
+            out.size = sizeof out;
+            textbook::Pass tb(gl, sc.mesh, w, h, radius);
+            tb.render_positions(view, proj);
+            FloorPass fp(gl, w, h);
+
+            // Rows first (settings and errors from one frame each), then the interleaved timing.
+            const size_t first = rows.size();
+            std::vector<Timed> passes;
+            for (const Config& c : configs) {
+                const ssao_settings s = settings_for(c, api, radius);
+                if (api.set_settings(ctx, &s) != SSAO_OK) throw std::runtime_error(c.name + ": " + api.last_error(ctx));
+                if (api.execute(ctx, &in, &out) != SSAO_OK) throw std::runtime_error(api.last_error(ctx));
+                gl.Finish();
+                Row row = row_for(c.name, Row::Kind::plugin);
+                row.family = c.family;
+                row.s.size = sizeof row.s;
+                api.get_settings(ctx, &row.s);
+                if (with_errors)
+                    fill_errors(row, gl_util::read_texture(gl, out.texture, out.origin[0], out.origin[1], w, h, 1), truth);
+                rows.push_back(row);
+                Timed t;
+                t.prepare = [&api, ctx, s, name = c.name] {
+                    if (api.set_settings(ctx, &s) != SSAO_OK) throw std::runtime_error(name + ": " + api.last_error(ctx));
+                };
+                t.frame = [&api, ctx, &in, &out] {
+                    if (api.execute(ctx, &in, &out) != SSAO_OK) throw std::runtime_error(api.last_error(ctx));
+                };
+                t.gpu_ms = [&api, ctx] {
+                    ssao_timings tm{};
+                    tm.size = sizeof tm;
+                    api.get_timings(ctx, &tm);
+                    return tm.available ? double(tm.total_ms) : double(NAN);
+                };
+                passes.push_back(std::move(t));
+            }
+            // The chapter's pass, same process, same G-buffer normals, same clocks.
+            {
+                tb.run(gbuf.normal_texture(), proj);
+                gl.Finish();
+                Row row = row_for("textbook (chapter: position G-buffer, 64 samples, 4x4 box)", Row::Kind::textbook);
+                if (with_errors) fill_errors(row, tb.read_ao(), truth);
+                rows.push_back(row);
+                Timed t;
+                t.frame = [&] { tb.run(gbuf.normal_texture(), proj); };
+                t.gpu_ms = [&] { return tb.last_ms(); };
+                passes.push_back(std::move(t));
+            }
+            // The bandwidth floor: read depth and normal, write R8, nothing else.
+            {
+                rows.push_back(row_for("bandwidth floor (read depth + normal, write R8)", Row::Kind::floor));
+                Timed t;
+                t.frame = [&] { fp.run(gbuf.depth_texture(), gbuf.normal_texture()); };
+                t.gpu_ms = [&] { return fp.last_ms(); };
+                passes.push_back(std::move(t));
+            }
+            // A frame at k x the base size costs k^2 as much and varies less:
+            // 1/k of the frames per round (at least one) keeps larger sizes affordable.
+            Options per_size = o;
+            per_size.frames = std::max(1, o.frames / scale);
+            per_size.warmup = std::max(1, o.warmup / scale);
+            time_interleaved(gl, passes, per_size);
+            for (size_t i = 0; i < passes.size(); ++i) {
+                Row& row = rows[first + i];
+                set_timing(row, passes[i]);
+            }
+            api.destroy_context(ctx);
+            for (size_t i = first; i < rows.size(); ++i) {
+                const Row& r = rows[i];
+                if (r.kind == Row::Kind::limit) continue;
+                if (r.has_error)
+                    std::fprintf(stderr, "    %-52s %8.3f ms CPU (%.3f-%.3f)  PSNR %.2f dB (limit: %.2f dB)\n",
+                                 r.config.c_str(), r.cpu_ms, r.cpu_min_ms, r.cpu_max_ms, r.all.psnr, r.vs_limit.psnr);
+                else
+                    std::fprintf(stderr, "    %-52s %8.3f ms CPU (%.3f-%.3f)\n", r.config.c_str(), r.cpu_ms,
+                                 r.cpu_min_ms, r.cpu_max_ms);
+            }
         }
-        Row row = make_row(name, "textbook (chapter: position G-buffer, 64 samples, 4x4 box)", Row::Kind::textbook, w, h);
-        set_times(row, ms);
-        row.wall_ms = quantile(wall, 0.5);
-        if (with_errors) fill_errors(row, tb.read_ao(), truth);
-        rows.push_back(row);
-        std::fprintf(stderr, "    %-52s %8.3f ms  PSNR %.2f dB\n", "textbook", row.median_ms, row.all.psnr);
-    }
-    // The bandwidth floor: read depth and normal, write R8, nothing else.
-    {
-        FloorPass fp(gl, w, h);
-        std::vector<double> ms, wall;
-        gl.Finish();
-        for (int f = 0; f < o.warmup + o.frames; ++f) {
-            const auto t0 = Clock::now();
-            fp.run(gbuf.depth_texture(), gbuf.normal_texture());
-            gl.Finish();
-            if (f >= o.warmup) wall.push_back(since(t0));
-            if (f >= o.warmup) ms.push_back(fp.last_ms());
-        }
-        Row row = make_row(name, "bandwidth floor (read depth + normal, write R8)", Row::Kind::floor, w, h);
-        set_times(row, ms);
-        row.wall_ms = quantile(wall, 0.5);
-        rows.push_back(row);
-        std::fprintf(stderr, "    %-52s %8.3f ms (wall %.3f ms)\n", "bandwidth floor", row.median_ms, row.wall_ms);
     }
 }
 

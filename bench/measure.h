@@ -1,12 +1,15 @@
-// measure.h - one scene at one size: the ground truth (ray-traced V_R), the
-// depth-only limit over the same depth layer, the host's G-buffer, and for
-// each configuration the plugin's GPU time and its error against both; the
-// textbook pass and the bandwidth floor are timed beside them.
+// measure.h - one scene at one size: for every view and radius the ground
+// truth (ray-traced V_R), the depth-only limit over the same depth layer, the
+// host's G-buffer, and for each configuration its process CPU time, GPU time
+// and wall time (interleaved over rounds, bench/timing.h) and its error
+// against both; the textbook pass and the bandwidth floor are timed beside
+// them, the same way.
 #pragma once
 
 #include "metrics.h"
 #include "options.h"
 #include "sweep.h"
+#include "views.h"
 
 #include <ssao/ssao.h>
 
@@ -17,24 +20,36 @@ namespace bench {
 
 struct Row {
     std::string scene, config;
+    View view = View::standard;
+    float radius_scale = 1.0f;     // x the scene's AO radius
+    float radius = 0.0f;           // the radius this row ran at (scene units)
     Family family = Family::kernel;
     enum class Kind { plugin, textbook, floor, limit } kind = Kind::plugin;
     int width = 0, height = 0;
     ssao_settings s{};             // resolved (plugin rows)
-    double median_ms = 0, p10_ms = 0, p90_ms = 0;  // GPU timestamps; NaN for the limit
+    double median_ms = 0, p10_ms = 0, p90_ms = 0;  // GPU timestamps over all timed frames; NaN for the limit
     // Median wall time from submission to glFinish returning. On llvmpipe the
     // CPU is the device, and a pass's closing timestamp does not wait for its
     // rasteriser, so this is the cost a user sees there; on a GPU it adds the
     // round trip.
     double wall_ms = 0;
+    // This process's CPU time per frame over the same interval: the median
+    // over rounds of each round's mean, and the lowest and highest round.
+    double cpu_ms = 0, cpu_min_ms = 0, cpu_max_ms = 0;
+    int rounds = 0;
     bool has_error = false;        // errors measured (base size only)
     metrics::Stats all, interior, silhouette, border;  // against V_R
     metrics::Stats vs_limit;       // against the depth-only limit (all pixels)
 };
 
-// Measures `configs` (empty at the larger sizes: presets only) and appends the
-// rows. with_errors: trace the reference and the limit and fill the errors.
+// Measures every view in o.views of one scene at o.width/height x scale and
+// appends the rows. with_errors (the base size): every radius in
+// o.radius_scales, with the reference and the limit traced and the errors
+// filled; otherwise the 1x radius only, timing alone. `sweep` runs on the
+// standard view at 1x radius with errors; `presets`, the textbook pass and the
+// floor on every view and radius.
 void measure_scene(const std::string& path, const Options& o, int scale, const ssao_api& api,
-                   const std::vector<Config>& configs, bool with_errors, std::vector<Row>& rows);
+                   const std::vector<Config>& sweep, const std::vector<Config>& presets, bool with_errors,
+                   std::vector<Row>& rows);
 
 }  // namespace bench

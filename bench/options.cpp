@@ -4,31 +4,51 @@
 #include "flags.h"
 #include "locate.h"
 
+#include <algorithm>
+
 namespace bench {
 
 std::string help_text() {
     return "ssao-bench - what accuracy costs in time: error against ray-traced V_R and against the\n"
-           "depth-only limit, GPU time against the textbook pass and the bandwidth floor, one run.\n"
+           "depth-only limit, process CPU time against the textbook pass and the bandwidth floor, one run.\n"
            "\n"
            "usage: ssao-bench [options] [scene.glb|scene.gltf ...]\n"
            "  --width N --height N   base size, 8..4096 (default 320 x 180): the whole sweep, errors, presets\n"
            "  --scales LIST          multiples of the base size timed for the scaling table, e.g. 1,2,4\n"
-           "                         (default 1,2,4: 320x180, 640x360, 1280x720)\n"
-           "  --frames N             timed frames per configuration (default 15), after\n"
-           "  --warmup N             untimed frames (default 4)\n"
-           "  --reference-samples N  rays per pixel of the ground truth (default 512)\n"
-           "  --limit-directions N   directions per pixel of the depth-only limit, a multiple of " +
+           "                         (default 1,2,4: 320x180, 640x360, 1280x720; larger sizes at 1x radius)\n"
+           "  --views LIST           views of every scene, from standard,high,close-up (default all three)\n"
+           "  --radii LIST           multiples of each scene's AO radius, 0.05..20 (default 0.5,1,2)\n"
+           "  --sweep full|presets   full: the whole configuration sweep on the standard view at 1x radius\n"
+           "                         (default); presets: the shipped presets only\n"
+           "  --rounds N             timing rounds, 3..1000 (default 3): each round times every\n"
+           "                         configuration in turn, figures are medians over rounds\n"
+           "  --frames N             timed frames per configuration per round (default 5), after\n"
+           "  --warmup N             untimed frames per configuration per round (default 2); at k x the\n"
+           "                         base size 1/k of each, at least 1\n"
+           "  --reference-samples N  rays per pixel of the ground truth, standard view at 1x radius (default 512)\n"
+           "  --limit-directions N   directions per pixel of the depth-only limit there, a multiple of " +
            std::to_string(depth_limit::kReplicas) + " (default " + std::to_string(depth_limit::kDefaultDirections) +
            ")\n"
+           "  --extra-samples N      rays per pixel on the other views and radii (default 128)\n"
+           "  --extra-directions N   limit directions on the other views and radii (default 128)\n"
            "  --out DIR              where results go (default bench-out)\n"
-           "  --quick                fewer frames, rays and directions, base size only\n"
+           "  --quick                one timed frame a round, fewer rays and directions, base size only\n"
            "  --plugin PATH          libssao.so to load (default: as ssao-host finds it)\n"
            "  --normals gbuffer|depth  the plugin's normals: the G-buffer's, or depth: normal_texture = 0, the\n"
            "                         plugin rebuilds them from depth (default gbuffer)\n"
            "  --allow-outside-files  let the scenes' buffer URIs name files outside their folders\n"
            "                         (absolute paths, '..', symbolic links leading out); refused by default\n"
            "  --help, -h / --version this text / the version\n"
-           "Scenes default to the bundled spot and teapot models and scenes/corner.gltf.\n";
+           "Scenes default to the bundled spot and teapot models and scenes/corner, overhang, creases and\n"
+           "clutter.gltf. Time is this process's CPU time per frame (submission to glFinish); the run sets\n"
+           "LP_NUM_THREADS=1 (llvmpipe renders on one thread) unless the environment sets it. GPU timers\n"
+           "and wall clock are reported beside it; every ratio and target uses CPU time.\n";
+}
+
+std::vector<std::string> default_scenes() {
+    return {locate::bundled("models/spot-on-ground.glb"), locate::bundled("models/teapot-on-ground.glb"),
+            locate::bundled("scenes/corner.gltf"),        locate::bundled("scenes/overhang.gltf"),
+            locate::bundled("scenes/creases.gltf"),       locate::bundled("scenes/clutter.gltf")};
 }
 
 namespace {
@@ -47,6 +67,41 @@ std::vector<int> scale_list(const std::string& flag, const std::string& v) {
     return out;
 }
 
+std::vector<std::string> split(const std::string& v) {
+    std::vector<std::string> out;
+    size_t start = 0;
+    while (true) {
+        const size_t comma = v.find(',', start);
+        out.push_back(v.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
+        if (comma == std::string::npos) return out;
+        start = comma + 1;
+    }
+}
+
+std::vector<View> view_list(const std::string& flag, const std::string& v) {
+    std::vector<View> out;
+    for (const std::string& item : split(v)) {
+        bool known = false;
+        for (View view : all_views())
+            if (item == view_name(view)) {
+                if (std::find(out.begin(), out.end(), view) == out.end()) out.push_back(view);
+                known = true;
+            }
+        if (!known) flags::fail(flag + " expects views from standard,high,close-up, got " + flags::quoted(item));
+    }
+    return out;
+}
+
+std::vector<float> radius_list(const std::string& flag, const std::string& v) {
+    std::vector<float> out;
+    for (const std::string& item : split(v)) {
+        const double r = flags::number(flag, item);
+        if (!(r >= 0.05 && r <= 20.0)) flags::fail(flag + " expects multiples of the radius in 0.05..20, got " + flags::quoted(item));
+        out.push_back(static_cast<float>(r));
+    }
+    return out;
+}
+
 }  // namespace
 
 Parse parse(int argc, char** argv, Options& o, std::string& error) {
@@ -57,6 +112,19 @@ Parse parse(int argc, char** argv, Options& o, std::string& error) {
         {"--width", whole(o.width, 8, 4096)},
         {"--height", whole(o.height, 8, 4096)},
         {"--frames", whole(o.frames, 1, 10000)},
+        {"--rounds", whole(o.rounds, 3, 1000)},
+        {"--extra-samples", whole(o.extra_samples, 16, 1 << 20)},
+        {"--extra-directions", [&](const std::string& f, const std::string& v) {
+             o.extra_directions = int(flags::integer(f, v, depth_limit::kReplicas, 1 << 16));
+             if (o.extra_directions % depth_limit::kReplicas != 0)
+                 flags::fail(f + " must be a multiple of " + std::to_string(depth_limit::kReplicas));
+         }},
+        {"--views", [&](const std::string& f, const std::string& v) { o.views = view_list(f, v); }},
+        {"--radii", [&](const std::string& f, const std::string& v) { o.radius_scales = radius_list(f, v); }},
+        {"--sweep", [&](const std::string& f, const std::string& v) {
+             if (v != "full" && v != "presets") flags::fail(f + " expects one of full|presets, got " + flags::quoted(v));
+             o.full_sweep = v == "full";
+         }},
         {"--warmup", whole(o.warmup, 0, 10000)},
         {"--reference-samples", whole(o.reference_samples, 16, 1 << 20)},
         {"--limit-directions", [&](const std::string& f, const std::string& v) {
@@ -81,10 +149,13 @@ Parse parse(int argc, char** argv, Options& o, std::string& error) {
     const flags::Switches switches = {
         {"--allow-outside-files", [&] { o.allow_outside_files = true; }},
         {"--quick", [&] {
-             o.frames = 5;
-             o.warmup = 2;
+             o.frames = 1;
+             o.warmup = 1;
+             o.rounds = 3;
              o.reference_samples = 128;
              o.limit_directions = 64;
+             o.extra_samples = 32;
+             o.extra_directions = 16;
              o.scales = {1};
          }},
     };
@@ -98,10 +169,7 @@ Parse parse(int argc, char** argv, Options& o, std::string& error) {
         error = e.message;
         return Parse::Error;
     }
-    if (o.scenes.empty()) {
-        o.scenes = {locate::bundled("models/spot-on-ground.glb"), locate::bundled("models/teapot-on-ground.glb"),
-                    locate::bundled("scenes/corner.gltf")};
-    }
+    if (o.scenes.empty()) o.scenes = default_scenes();
     return Parse::Run;
 }
 

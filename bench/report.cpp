@@ -1,5 +1,7 @@
 #include "report.h"
 
+#include "timing.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -22,18 +24,47 @@ std::string fmt(double v, int digits = 3) {
     return b;
 }
 
-// Per configuration over the scenes at one size.
+// Which rows a summary averages over.
+using RowFilter = bool (*)(const Row&);
+bool main_case(const Row& r) { return r.view == View::standard && r.radius_scale == 1.0f; }
+bool unit_radius(const Row& r) { return r.radius_scale == 1.0f; }
+
+// A scene, view, radius and size: the rows that share one textbook pass and one floor.
+std::string case_key(const Row& r) {
+    char b[64];
+    std::snprintf(b, sizeof b, "|%s|%g|%dx%d", view_name(r.view), double(r.radius_scale), r.width, r.height);
+    return r.scene + b;
+}
+
+// The anchors of every case: the textbook pass's and the floor's rows.
+struct Anchors {
+    std::map<std::string, const Row*> textbook, floor;
+    explicit Anchors(const std::vector<Row>& rows) {
+        for (const Row& r : rows) {
+            if (r.kind == Row::Kind::textbook) textbook[case_key(r)] = &r;
+            if (r.kind == Row::Kind::floor) floor[case_key(r)] = &r;
+        }
+    }
+    // r's time over the anchor's, by `ms` (NaN without the anchor).
+    double ratio(const Row& r, double Row::*ms, bool to_floor = false) const {
+        const auto& m = to_floor ? floor : textbook;
+        const auto it = m.find(case_key(r));
+        return it == m.end() ? NAN : r.*ms / it->second->*ms;
+    }
+};
+
+// Per configuration over the cases a filter keeps at one size.
 struct Summary {
     std::string config;
     Family family = Family::kernel;
     Row::Kind kind = Row::Kind::plugin;
     ssao_settings s{};
-    double ratio_textbook = 0, ms = 0;          // GPU timers: means over scenes
-    double ratio_textbook_wall = 0, ratio_floor = 0, wall_ms = 0;  // wall clock (the floor: wall only)
-    double psnr = 0, psnr_vs_limit = 0, min_psnr = 1e9;  // dB, means (and worst) over scenes
-    std::map<std::string, double> scene_psnr, scene_psnr_vs_limit, scene_ratio;
+    double ratio_textbook = 0, ratio_floor = 0, cpu_ms = 0;  // CPU time: means over cases
+    double ratio_textbook_gpu = 0, ratio_textbook_wall = 0, ratio_floor_wall = 0, ms = 0, wall_ms = 0;
+    double psnr = 0, psnr_vs_limit = 0, min_psnr = 1e9;  // dB, means (and worst) over cases
+    std::map<std::string, double> scene_psnr, scene_psnr_vs_limit, scene_ratio;  // by scene (main case)
     bool front_vr = false, front_limit = false;
-    int scenes = 0;
+    int cases = 0, with_error = 0;
 };
 
 const char* kind_name(Row::Kind k) {
@@ -46,18 +77,12 @@ const char* kind_name(Row::Kind k) {
     return "?";
 }
 
-std::vector<Summary> summarise(const std::vector<Row>& rows, int width) {
-    std::map<std::string, double> textbook_ms, textbook_wall, floor_wall;
-    for (const Row& r : rows) {
-        if (r.width != width) continue;
-        if (r.kind == Row::Kind::textbook) textbook_ms[r.scene] = r.median_ms;
-        if (r.kind == Row::Kind::textbook) textbook_wall[r.scene] = r.wall_ms;
-        if (r.kind == Row::Kind::floor) floor_wall[r.scene] = r.wall_ms;
-    }
+std::vector<Summary> summarise(const std::vector<Row>& rows, int width, RowFilter keep) {
+    const Anchors anchors(rows);
     std::vector<Summary> out;
     std::map<std::string, size_t> index;
     for (const Row& r : rows) {
-        if (r.width != width) continue;
+        if (r.width != width || !keep(r)) continue;
         if (!index.count(r.config)) {
             index[r.config] = out.size();
             Summary s;
@@ -68,10 +93,13 @@ std::vector<Summary> summarise(const std::vector<Row>& rows, int width) {
             out.push_back(s);
         }
         Summary& s = out[index[r.config]];
-        const double ratio = r.median_ms / textbook_ms[r.scene];
+        const double ratio = anchors.ratio(r, &Row::cpu_ms);
         s.ratio_textbook += ratio;
-        s.ratio_textbook_wall += r.wall_ms / textbook_wall[r.scene];
-        s.ratio_floor += r.wall_ms / floor_wall[r.scene];
+        s.ratio_floor += anchors.ratio(r, &Row::cpu_ms, true);
+        s.ratio_textbook_gpu += anchors.ratio(r, &Row::median_ms);
+        s.ratio_textbook_wall += anchors.ratio(r, &Row::wall_ms);
+        s.ratio_floor_wall += anchors.ratio(r, &Row::wall_ms, true);
+        s.cpu_ms += r.cpu_ms;
         s.ms += r.median_ms;
         s.wall_ms += r.wall_ms;
         s.scene_ratio[r.scene] = ratio;
@@ -81,17 +109,16 @@ std::vector<Summary> summarise(const std::vector<Row>& rows, int width) {
             s.min_psnr = std::min(s.min_psnr, r.all.psnr);
             s.scene_psnr[r.scene] = r.all.psnr;
             s.scene_psnr_vs_limit[r.scene] = r.vs_limit.psnr;
+            s.with_error++;
         }
-        s.scenes++;
+        s.cases++;
     }
     for (Summary& s : out) {
-        s.ratio_textbook /= s.scenes;
-        s.ratio_textbook_wall /= s.scenes;
-        s.ratio_floor /= s.scenes;
-        s.ms /= s.scenes;
-        s.wall_ms /= s.scenes;
-        s.psnr = s.scene_psnr.empty() ? NAN : s.psnr / s.scenes;
-        s.psnr_vs_limit = s.scene_psnr.empty() ? NAN : s.psnr_vs_limit / s.scenes;
+        for (double* v : {&s.ratio_textbook, &s.ratio_floor, &s.ratio_textbook_gpu, &s.ratio_textbook_wall,
+                          &s.ratio_floor_wall, &s.cpu_ms, &s.ms, &s.wall_ms})
+            *v /= s.cases;
+        s.psnr = s.with_error ? s.psnr / s.with_error : NAN;
+        s.psnr_vs_limit = s.with_error ? s.psnr_vs_limit / s.with_error : NAN;
     }
     // The fronts: no other sweep configuration is both faster and more accurate.
     auto on_front = [&](const Summary& a, double Summary::*acc) {
@@ -110,7 +137,7 @@ std::vector<Summary> summarise(const std::vector<Row>& rows, int width) {
 }
 
 // The preset rule (README, "Presets"), over the sweep's kernel and visibility
-// configurations, times as means of the ratio to the textbook pass:
+// configurations, times as means of the CPU-time ratio to the textbook pass:
 //   LOW    = the fastest configuration on the front against V_R;
 //   MEDIUM = the most accurate (mean PSNR against V_R) within max(1/4, 2 x LOW's time);
 //   HIGH   = the most accurate within max(1/2, 2 x MEDIUM's time);
@@ -149,37 +176,36 @@ const Summary* fastest_on_front(const std::vector<Summary>& sum) {
 }
 
 void write_csv(const Options& o, const std::vector<Row>& rows) {
-    std::map<std::pair<std::string, int>, double> textbook_ms, textbook_wall, floor_wall;
-    for (const Row& r : rows) {
-        if (r.kind == Row::Kind::textbook) textbook_ms[{r.scene, r.width}] = r.median_ms;
-        if (r.kind == Row::Kind::textbook) textbook_wall[{r.scene, r.width}] = r.wall_ms;
-        if (r.kind == Row::Kind::floor) floor_wall[{r.scene, r.width}] = r.wall_ms;
-    }
+    const Anchors anchors(rows);
     std::ofstream csv(o.out + "/bench.csv");
-    csv << "scene,config,family,kind,width,height,method,samples,steps,blur,thickness,rotation,radius,resolution,"
-           "distribution,"
-           "median_ms,p10_ms,p90_ms,x_textbook,wall_ms,x_textbook_wall,x_floor_wall,rmse,psnr,rmse_vs_limit,psnr_vs_limit,rmse_interior,"
-           "rmse_silhouette,rmse_border,reference_noise_rms\n";
+    csv << "scene,view,radius_scale,ao_radius,config,family,kind,width,height,method,samples,steps,blur,thickness,"
+           "rotation,radius,resolution,distribution,"
+           "cpu_ms,cpu_min_ms,cpu_max_ms,rounds,x_textbook_cpu,x_floor_cpu,"
+           "median_ms,p10_ms,p90_ms,x_textbook,wall_ms,x_textbook_wall,x_floor_wall,rmse,psnr,bias,rmse_vs_limit,"
+           "psnr_vs_limit,rmse_interior,rmse_silhouette,rmse_border,reference_noise_rms\n";
     for (const Row& r : rows) {
         const bool plugin = r.kind == Row::Kind::plugin;
-        csv << r.scene << ",\"" << r.config << "\"," << (plugin ? family_name(r.family) : "") << "," << kind_name(r.kind)
-            << "," << r.width << "," << r.height << ",";
+        csv << r.scene << "," << view_name(r.view) << "," << r.radius_scale << "," << r.radius << ",\"" << r.config
+            << "\"," << (plugin ? family_name(r.family) : "") << "," << kind_name(r.kind) << "," << r.width << ","
+            << r.height << ",";
         if (plugin)
             csv << (r.s.method == SSAO_METHOD_VISIBILITY ? "visibility" : "kernel") << "," << r.s.sample_count << ","
                 << r.s.step_count << "," << blur_name(r.s.blur) << "," << r.s.thickness << "," << r.s.rotation << ","
                 << r.s.radius << "," << r.s.resolution << "," << r.s.distribution << ",";
         else
             csv << ",,,,,,,,,";
+        csv << fmt(r.cpu_ms, 4) << "," << fmt(r.cpu_min_ms, 4) << "," << fmt(r.cpu_max_ms, 4) << ","
+            << (r.rounds ? std::to_string(r.rounds) : "") << "," << fmt(anchors.ratio(r, &Row::cpu_ms), 4) << ","
+            << fmt(anchors.ratio(r, &Row::cpu_ms, true), 3) << ",";
         csv << fmt(r.median_ms, 4) << "," << fmt(r.p10_ms, 4) << "," << fmt(r.p90_ms, 4) << ","
-            << fmt(r.median_ms / textbook_ms[{r.scene, r.width}], 4) << "," << fmt(r.wall_ms, 4) << ","
-            << fmt(r.wall_ms / textbook_wall[{r.scene, r.width}], 4) << "," << fmt(r.wall_ms / floor_wall[{r.scene, r.width}], 3)
-            << ",";
+            << fmt(anchors.ratio(r, &Row::median_ms), 4) << "," << fmt(r.wall_ms, 4) << ","
+            << fmt(anchors.ratio(r, &Row::wall_ms), 4) << "," << fmt(anchors.ratio(r, &Row::wall_ms, true), 3) << ",";
         if (r.has_error)
-            csv << fmt(r.all.rmse, 5) << "," << fmt(r.all.psnr, 3) << "," << fmt(r.vs_limit.rmse, 5) << ","
-                << fmt(r.vs_limit.psnr, 3) << "," << fmt(r.interior.rmse, 5) << "," << fmt(r.silhouette.rmse, 5) << ","
-                << fmt(r.border.rmse, 5) << "," << fmt(r.all.noise_rms, 5) << "\n";
+            csv << fmt(r.all.rmse, 5) << "," << fmt(r.all.psnr, 3) << "," << fmt(r.all.mean_error, 5) << ","
+                << fmt(r.vs_limit.rmse, 5) << "," << fmt(r.vs_limit.psnr, 3) << "," << fmt(r.interior.rmse, 5) << ","
+                << fmt(r.silhouette.rmse, 5) << "," << fmt(r.border.rmse, 5) << "," << fmt(r.all.noise_rms, 5) << "\n";
         else
-            csv << ",,,,,,,\n";
+            csv << ",,,,,,,,\n";
     }
 }
 
@@ -188,21 +214,22 @@ std::string summary_table(const std::vector<Summary>& sum) {
     std::sort(sorted.begin(), sorted.end(),
               [](const Summary& a, const Summary& b) { return a.ratio_textbook < b.ratio_textbook; });
     std::ostringstream md;
-    md << "| configuration | x textbook | x textbook (wall) | x floor (wall) | mean ms | PSNR vs V_R (mean, worst) | "
-          "PSNR vs limit | front |\n"
-       << "|---|---:|---:|---:|---:|---:|---:|:---:|\n";
+    md << "| configuration | x textbook (CPU) | x floor (CPU) | CPU ms | x textbook (GPU) | x textbook (wall) | "
+          "PSNR vs V_R (mean, worst) | PSNR vs limit | front |\n"
+       << "|---|---:|---:|---:|---:|---:|---:|---:|:---:|\n";
     for (const Summary& s : sorted) {
         if (s.kind == Row::Kind::limit) continue;
-        md << "| " << s.config << " | " << fmt(s.ratio_textbook) << " | " << fmt(s.ratio_textbook_wall) << " | "
-           << fmt(s.ratio_floor, 1) << " | "
-           << fmt(s.ms, 2) << " | " << fmt(s.psnr, 2) << ", " << fmt(s.scene_psnr.empty() ? NAN : s.min_psnr, 2)
-           << " | " << fmt(s.psnr_vs_limit, 2) << " | "
+        md << "| " << s.config << " | " << fmt(s.ratio_textbook) << " | " << fmt(s.ratio_floor, 1) << " | "
+           << fmt(s.cpu_ms, 2) << " | " << fmt(s.ratio_textbook_gpu) << " | " << fmt(s.ratio_textbook_wall) << " | "
+           << fmt(s.psnr, 2) << ", " << fmt(s.scene_psnr.empty() ? NAN : s.min_psnr, 2) << " | "
+           << fmt(s.psnr_vs_limit, 2) << " | "
            << (s.front_vr && s.front_limit ? "both" : s.front_vr ? "V_R" : s.front_limit ? "limit" : "") << " |\n";
     }
     return md.str();
 }
 
-// The issue's targets, per scene, for the shipped presets.
+// The shipped presets against the presets of interface 1.0, per scene (the
+// 1.0 presets run in the sweep: standard view, 1x radius).
 std::string targets_table(const std::vector<Summary>& sum, const std::vector<std::string>& scenes) {
     std::map<std::string, const Summary*> by;
     for (const Summary& s : sum) by[s.config] = &s;
@@ -210,7 +237,7 @@ std::string targets_table(const std::vector<Summary>& sum, const std::vector<std
     for (const Summary& s : sum)
         if (s.kind == Row::Kind::limit) limit = &s;
     std::ostringstream md;
-    md << "| preset | scene | PSNR vs V_R | limit's PSNR | gap to limit | x textbook | 1.0 preset's PSNR | change |\n"
+    md << "| preset | scene | PSNR vs V_R | limit's PSNR | gap to limit | x textbook (CPU) | 1.0 preset's PSNR | change |\n"
        << "|---|---|---:|---:|---:|---:|---:|---:|\n";
     const char* names[][2] = {{"preset low", "1.0 preset low"},
                               {"preset medium (= default)", "1.0 preset medium"},
@@ -233,20 +260,87 @@ std::string targets_table(const std::vector<Summary>& sum, const std::vector<std
     return md.str();
 }
 
+std::string radius_text(float scale) {
+    char b[32];
+    std::snprintf(b, sizeof b, "%gR", double(scale));
+    return b;
+}
+
+// Every scene, view and radius at the base size: the limit, the shipped
+// presets and the textbook pass, each with its error and its CPU time.
+std::string cases_table(const std::vector<Row>& rows, int width) {
+    const Anchors anchors(rows);
+    std::map<std::string, const Row*> limit;
+    for (const Row& r : rows)
+        if (r.kind == Row::Kind::limit) limit[case_key(r)] = &r;
+    std::ostringstream md;
+    md << "| scene | view | radius | configuration | PSNR vs V_R | bias | PSNR vs limit | gap to limit | CPU ms (min-max) "
+          "| x textbook (CPU) | x floor (CPU) | GPU ms | wall ms |\n"
+       << "|---|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+    for (const Row& r : rows) {
+        if (r.width != width || r.kind == Row::Kind::floor) continue;
+        if (r.kind == Row::Kind::plugin && r.family != Family::preset) continue;
+        const auto lim = limit.find(case_key(r));
+        const double gap = lim != limit.end() && r.has_error ? lim->second->all.psnr - r.all.psnr : NAN;
+        const bool timed = r.kind != Row::Kind::limit;
+        md << "| " << r.scene << " | " << view_name(r.view) << " | " << radius_text(r.radius_scale) << " | " << r.config
+           << " | " << (r.has_error ? fmt(r.all.psnr, 2) : "-") << " | "
+           << (r.has_error ? fmt(r.all.mean_error, 4) : "-") << " | "
+           << (r.has_error && r.kind != Row::Kind::limit ? fmt(r.vs_limit.psnr, 2) : "-") << " | "
+           << (r.kind == Row::Kind::limit ? "-" : fmt(gap, 2)) << " | "
+           << (timed ? fmt(r.cpu_ms, 2) + " (" + fmt(r.cpu_min_ms, 2) + "-" + fmt(r.cpu_max_ms, 2) + ")" : "-")
+           << " | " << (timed ? fmt(anchors.ratio(r, &Row::cpu_ms)) : "-") << " | "
+           << (timed ? fmt(anchors.ratio(r, &Row::cpu_ms, true), 1) : "-") << " | " << fmt(r.median_ms, 2) << " | "
+           << fmt(r.wall_ms, 2) << " |\n";
+    }
+    return md.str();
+}
+
+// DEFAULT / textbook and DEFAULT / floor by CPU time, per size over every
+// scene, view and radius measured there: the median case and the worst.
+std::string default_ratios(const Options& o, const std::vector<Row>& rows) {
+    const Anchors anchors(rows);
+    std::ostringstream md;
+    md << "| size | cases | DEFAULT / textbook (CPU): median, worst (case) | DEFAULT / floor (CPU): median, worst (case) |\n"
+       << "|---|---:|---:|---:|\n";
+    for (int scale : o.scales) {
+        const int w = o.width * scale, h = o.height * scale;
+        std::vector<double> tb, fl;
+        double worst_tb = -1, worst_fl = -1;
+        std::string at_tb, at_fl;
+        for (const Row& r : rows) {
+            if (r.width != w || r.kind != Row::Kind::plugin || r.config != "preset medium (= default)") continue;
+            const double a = anchors.ratio(r, &Row::cpu_ms), b = anchors.ratio(r, &Row::cpu_ms, true);
+            const std::string where = r.scene + " " + view_name(r.view) + " " + radius_text(r.radius_scale);
+            tb.push_back(a);
+            fl.push_back(b);
+            if (a > worst_tb) worst_tb = a, at_tb = where;
+            if (b > worst_fl) worst_fl = b, at_fl = where;
+        }
+        if (tb.empty()) continue;
+        md << "| " << w << "x" << h << " | " << tb.size() << " | " << fmt(quantile(tb, 0.5)) << ", " << fmt(worst_tb)
+           << " (" << at_tb << ") | " << fmt(quantile(fl, 0.5), 1) << ", " << fmt(worst_fl, 1) << " (" << at_fl
+           << ") |\n";
+    }
+    return md.str();
+}
+
 std::string scaling_table(const Options& o, const std::vector<Row>& rows) {
     std::ostringstream md;
-    md << "| size | configuration | GPU ms | wall ms | wall ms per megapixel | x textbook | x textbook (wall) | x floor (wall) |\n"
-          "|---|---|---:|---:|---:|---:|---:|---:|\n";
+    md << "| size | configuration | CPU ms | CPU ms per megapixel | x textbook (CPU) | x floor (CPU) | GPU ms | wall ms "
+          "| x textbook (GPU) | x textbook (wall) |\n"
+          "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
     for (int scale : o.scales) {
         const int w = o.width * scale, h = o.height * scale;
         const double mp = w * static_cast<double>(h) * 1e-6;
-        const std::vector<Summary> sum = summarise(rows, w);
+        const std::vector<Summary> sum = summarise(rows, w, unit_radius);
         for (const Summary& s : sum) {
             if (s.kind == Row::Kind::limit) continue;
             if (s.kind == Row::Kind::plugin && s.family != Family::preset) continue;
-            md << "| " << w << "x" << h << " | " << s.config << " | " << fmt(s.ms, 2) << " | " << fmt(s.wall_ms, 2) << " | "
-               << fmt(s.wall_ms / mp, 1) << " | " << fmt(s.ratio_textbook) << " | " << fmt(s.ratio_textbook_wall) << " | "
-               << fmt(s.ratio_floor, 1) << " |\n";
+            md << "| " << w << "x" << h << " | " << s.config << " | " << fmt(s.cpu_ms, 2) << " | "
+               << fmt(s.cpu_ms / mp, 1) << " | " << fmt(s.ratio_textbook) << " | " << fmt(s.ratio_floor, 1) << " | "
+               << fmt(s.ms, 2) << " | " << fmt(s.wall_ms, 2) << " | " << fmt(s.ratio_textbook_gpu) << " | "
+               << fmt(s.ratio_textbook_wall) << " |\n";
         }
     }
     return md.str();
@@ -275,8 +369,8 @@ void write_plot(const Options& o, const std::vector<Summary>& sum) {
     }
     std::ofstream gp(o.out + "/plot.gp");
     gp << "set terminal pngcairo size 1300,560 font 'DejaVu Sans,10'\nset output 'error_vs_time.png'\n"
-          "set multiplot layout 1,2 title 'SSAO accuracy against GPU time (mean over the bundled scenes, one run)'\n"
-          "set logscale x\nset grid\nset key bottom right\nset xlabel 'GPU time relative to the textbook pass'\n"
+          "set multiplot layout 1,2 title 'SSAO accuracy against CPU time (standard view, scene radius; mean over the scenes, one run)'\n"
+          "set logscale x\nset grid\nset key bottom right\nset xlabel 'CPU time relative to the textbook pass'\n"
           "set ylabel 'PSNR against ray-traced V_R (dB, higher is better)'\nset title 'against the truth'\n";
     if (std::isfinite(limit_psnr))
         gp << "set arrow from graph 0, first " << limit_psnr << " to graph 1, first " << limit_psnr
@@ -311,25 +405,36 @@ void write_plot(const Options& o, const std::vector<Summary>& sum) {
 void write_report(const Options& o, const std::vector<Row>& rows) {
     std::filesystem::create_directories(o.out);
     write_csv(o, rows);
-    const std::vector<Summary> sum = summarise(rows, o.width);
+    const std::vector<Summary> sum = summarise(rows, o.width, main_case);
     std::vector<std::string> scenes;
     for (const Row& r : rows)
         if (std::find(scenes.begin(), scenes.end(), r.scene) == scenes.end()) scenes.push_back(r.scene);
 
     std::ostringstream md;
-    md << "Base size " << o.width << "x" << o.height << ", " << o.frames << " timed frames per configuration (median), "
-       << "means over " << scenes.size() << " scenes.\n\n"
-       << summary_table(sum) << "\nDepth-only limit, PSNR against V_R per scene:";
+    md << "Base size " << o.width << "x" << o.height << ". Time: this process's CPU time per frame (submission to "
+       << "glFinish) with LP_NUM_THREADS=" << o.lp_num_threads << ", configurations interleaved over " << o.rounds
+       << " rounds of " << o.warmup << " untimed and " << o.frames << " timed frames (1/k of each at k x the base size); a figure is the median over "
+       << "rounds of each round's mean (spread: lowest-highest round). GPU timers (median over frames) and wall "
+       << "clock beside it; every ratio uses CPU time.\n\n"
+       << "The sweep, standard view at each scene's radius, means over " << scenes.size() << " scenes:\n\n"
+       << summary_table(sum) << "\nDepth-only limit, PSNR against V_R per scene (standard view, 1x radius):";
     for (const Summary& s : sum)
         if (s.kind == Row::Kind::limit)
             for (const auto& [sc, v] : s.scene_psnr) md << " " << sc << " " << fmt(v, 2) << " dB;";
-    md << "\n\nShipped presets against the targets, per scene:\n\n" << targets_table(sum, scenes)
-       << "\nTime against pixels (means over scenes):\n\n" << scaling_table(o, rows);
+    md << "\n\nShipped presets against the 1.0 presets, per scene (standard view, 1x radius):\n\n"
+       << targets_table(sum, scenes)
+       << "\nEvery scene, view and radius at " << o.width << "x" << o.height
+       << " (V_R with " << o.reference_samples << " rays per pixel on the standard view at 1x, " << o.extra_samples
+       << " elsewhere; bias = mean of AO minus V_R, > 0 too light):\n\n"
+       << cases_table(rows, o.width) << "\nDEFAULT against the anchors, by CPU time, over every case of a size:\n\n"
+       << default_ratios(o, rows) << "\nTime against pixels (means over scenes and views at 1x radius):\n\n"
+       << scaling_table(o, rows);
     std::ofstream(o.out + "/bench.md") << md.str();
 
     std::ostringstream pr;
     pr << "Rule: low = the fastest configuration on the front against V_R; medium, high, ultra = the most accurate\n"
-          "(mean PSNR against V_R) within max(budget, 2 x the previous preset's time), budgets 1/4, 1/2, 1 x textbook.\n";
+          "(mean PSNR against V_R) within max(budget, 2 x the previous preset's time), budgets 1/4, 1/2, 1 x textbook\n"
+          "(times: CPU time over the textbook pass's; standard view at each scene's radius).\n";
     const Summary* prev = fastest_on_front(sum);
     if (prev)
         pr << "low: " << prev->config << " (x" << fmt(prev->ratio_textbook) << ", " << fmt(prev->psnr, 2) << " dB)\n";

@@ -57,6 +57,7 @@ if(SSAO_BUILD_TOOLS)
       ${PROJECT_SOURCE_DIR}/assets/models/teapot-on-ground.glb
       ${PROJECT_SOURCE_DIR}/assets/models/README.md
     DESTINATION ${CMAKE_INSTALL_DATADIR}/ssao/models COMPONENT tools)
-  install(FILES ${PROJECT_SOURCE_DIR}/assets/scenes/corner.gltf
+  install(FILES ${PROJECT_SOURCE_DIR}/assets/scenes/corner.gltf ${PROJECT_SOURCE_DIR}/assets/scenes/overhang.gltf
+      ${PROJECT_SOURCE_DIR}/assets/scenes/creases.gltf ${PROJECT_SOURCE_DIR}/assets/scenes/clutter.gltf
     DESTINATION ${CMAKE_INSTALL_DATADIR}/ssao/scenes COMPONENT tools)
 endif()

@@ -22,7 +22,8 @@ step "installed files (version $ssao_version)"
 for f in "lib/libssao.so.$ssao_version" include/ssao/ssao.h lib/cmake/ssao/ssaoConfig.cmake \
          lib/cmake/ssao/ssaoConfigVersion.cmake lib/pkgconfig/ssao.pc bin/ssao-host bin/ssao-reference \
          bin/ssao-error bin/ssao-bench bin/ssao-viewer share/ssao/models/spot-on-ground.glb share/ssao/models/teapot-on-ground.glb \
-         share/ssao/models/README.md share/ssao/scenes/corner.gltf share/ssao/viewer/demo.txt share/doc/ssao/docs/api.md \
+         share/ssao/models/README.md share/ssao/scenes/corner.gltf share/ssao/scenes/overhang.gltf \
+         share/ssao/scenes/creases.gltf share/ssao/scenes/clutter.gltf share/ssao/viewer/demo.txt share/doc/ssao/docs/api.md \
          share/doc/ssao/README.md share/doc/ssao/LICENSE lib/python3/dist-packages/ssao/__init__.py; do
   [ -f "$p/$f" ] || fail "missing $f"
 done

@@ -1,0 +1,98 @@
+#!/usr/bin/env python3
+"""ssao-bench --quick on one scene at a small size: bench.csv has a row for every
+view, radius and pass, with CPU times (median within its rounds' range, the
+ratios to the anchors computed from them) and errors; bench.md states the
+LP_NUM_THREADS the run had and lists every case. Usage: BENCH PLUGIN SCENE."""
+import csv
+import math
+import os
+import subprocess
+import sys
+import tempfile
+
+bench, plugin, scene = sys.argv[1:4]
+failures = []
+
+
+def check(cond, what):
+    if not cond:
+        failures.append(what)
+
+
+def run(out, *extra, env=None):
+    e = dict(os.environ)
+    e.pop("LP_NUM_THREADS", None)
+    e.update(env or {})
+    cmd = [bench, "--quick", "--sweep", "presets", "--width", "64", "--height", "36", "--plugin", plugin,
+           "--out", out, *extra, scene]
+    p = subprocess.run(cmd, env=e, capture_output=True, text=True)
+    if p.returncode != 0:
+        print(p.stdout[-3000:], p.stderr[-3000:])
+        sys.exit("FAIL: %s exited %d" % (" ".join(cmd), p.returncode))
+    return list(csv.DictReader(open(os.path.join(out, "bench.csv")))), open(os.path.join(out, "bench.md")).read()
+
+
+def num(r, k):
+    try:
+        return float(r[k])
+    except ValueError:
+        return math.nan
+
+
+CONFIGS = ["depth-only limit (ideal march, T = R/2)", "preset low", "preset medium (= default)", "preset high",
+           "preset ultra", "textbook (chapter: position G-buffer, 64 samples, 4x4 box)",
+           "bandwidth floor (read depth + normal, write R8)"]
+
+with tempfile.TemporaryDirectory() as tmp:
+    rows, md = run(os.path.join(tmp, "all"))
+    check(len(rows) == 3 * 3 * len(CONFIGS), "63 rows (3 views x 3 radii x 7 passes), got %d" % len(rows))
+    seen = {(r["view"], float(r["radius_scale"]), r["config"]) for r in rows}
+    for view in ("standard", "high", "close-up"):
+        for rs in (0.5, 1.0, 2.0):
+            for c in CONFIGS:
+                check((view, rs, c) in seen, "row for %s %gR %s" % (view, rs, c))
+    radius = {float(r["radius_scale"]): float(r["ao_radius"]) for r in rows}
+    check(abs(radius[2.0] / radius[0.5] - 4.0) < 1e-4, "radii span 4x: %s" % radius)
+    by_case = {}
+    for r in rows:
+        by_case.setdefault((r["view"], r["radius_scale"]), {})[r["kind"] if r["kind"] != "plugin" else r["config"]] = r
+    for key, case in by_case.items():
+        tb, fl, default = case["textbook"], case["floor"], case["preset medium (= default)"]
+        for r in (tb, fl, default):
+            cpu, lo, hi = num(r, "cpu_ms"), num(r, "cpu_min_ms"), num(r, "cpu_max_ms")
+            check(r["rounds"] == "3", "%s %s: 3 rounds, got %r" % (key, r["config"], r["rounds"]))
+            check(0 < lo <= cpu <= hi, "%s %s: 0 < min <= median <= max CPU ms, got %s %s %s" % (key, r["config"], lo, cpu, hi))
+            check(num(r, "wall_ms") > 0, "%s %s: wall time" % (key, r["config"]))
+        check(abs(num(tb, "x_textbook_cpu") - 1) < 1e-3, "%s: textbook x_textbook_cpu = 1" % (key,))
+        check(abs(num(fl, "x_floor_cpu") - 1) < 1e-3, "%s: floor x_floor_cpu = 1" % (key,))
+        want = num(default, "cpu_ms") / num(tb, "cpu_ms")
+        check(abs(num(default, "x_textbook_cpu") - want) <= 1e-3 * want + 1e-3,
+              "%s: DEFAULT x_textbook_cpu %s = its CPU ms over the textbook's (%s)" % (key, default["x_textbook_cpu"], want))
+        want = num(default, "cpu_ms") / num(fl, "cpu_ms")
+        check(abs(num(default, "x_floor_cpu") - want) <= 1e-2 * want, "%s: DEFAULT x_floor_cpu by CPU" % (key,))
+        for k in ("limit", "textbook", "preset medium (= default)", "preset ultra"):
+            check(math.isfinite(num(case[k], "psnr")), "%s %s: PSNR against V_R" % (key, k))
+        check(math.isnan(num(case["limit"], "cpu_ms")), "%s: the limit is not timed" % (key,))
+    check("LP_NUM_THREADS=1" in md, "bench.md states LP_NUM_THREADS=1 (set by the tool)")
+    check("interleaved over 3 rounds" in md, "bench.md states the rounds")
+    for view in ("standard", "high", "close-up"):
+        for rs in ("0.5R", "1R", "2R"):
+            check("| overhang | %s | %s | preset medium (= default) |" % (view, rs) in md,
+                  "bench.md lists overhang %s %s DEFAULT" % (view, rs))
+    check("DEFAULT / textbook (CPU)" in md, "bench.md: DEFAULT against the anchors by CPU time")
+
+    # The user's LP_NUM_THREADS is kept and reported; --views and --radii pick the cases.
+    rows, md = run(os.path.join(tmp, "one"), "--views", "close-up", "--radii", "2", env={"LP_NUM_THREADS": "2"})
+    check(len(rows) == len(CONFIGS), "one view, one radius: 7 rows, got %d" % len(rows))
+    check(all(r["view"] == "close-up" and float(r["radius_scale"]) == 2.0 for r in rows), "only close-up at 2R")
+    check("LP_NUM_THREADS=2" in md, "bench.md states the user's LP_NUM_THREADS=2")
+
+    # A view it does not know: one line, exit 2.
+    p = subprocess.run([bench, "--views", "sideways", scene], capture_output=True, text=True)
+    check(p.returncode == 2, "--views sideways exits 2, got %d" % p.returncode)
+    check(len(p.stderr.strip().splitlines()) == 1 and "--views" in p.stderr, "one-line error naming --views: %r" % p.stderr)
+
+for f in failures:
+    print("FAIL:", f)
+print("%d failure(s)" % len(failures) if failures else "ok: every view, radius and pass, CPU times and ratios")
+sys.exit(1 if failures else 0)
