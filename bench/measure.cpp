@@ -160,7 +160,6 @@ ssao_settings settings_for(const Config& c, const ssao_api& api, float radius) {
     s.radius = s.radius < 0 ? -s.radius * radius : radius;
     if (c.thickness_of_radius > 0) s.thickness = c.thickness_of_radius * s.radius;
     s.bias = 0;  // the method's default, relative to this radius
-    if (c.family == Family::preset) s.thickness = 0;
     return s;
 }
 
