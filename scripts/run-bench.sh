@@ -12,4 +12,4 @@ if ! command -v gnuplot >/dev/null 2>&1; then
   fi
 fi
 scripts/build.sh
-build/bench/ssao-bench --frames 15 --warmup 3 --out bench-out "$@"
+build/bench/ssao-bench --out bench-out "$@"
