@@ -19,15 +19,10 @@
 #include <cstdlib>
 #include <stdexcept>
 
-int main(int argc, char** argv) {
-    bench::Options o;
-    std::string error;
-    switch (bench::parse(argc, argv, o, error)) {
-        case bench::Parse::Error: std::fprintf(stderr, "ssao-bench: error: %s\n", error.c_str()); return 2;
-        case bench::Parse::Help: std::fputs(bench::help_text().c_str(), stdout); return 0;
-        case bench::Parse::Version: std::printf("%s\n", flags::version_line("ssao-bench").c_str()); return 0;
-        case bench::Parse::Run: break;
-    }
+namespace {
+
+// Traces and measures every scene at every size, then writes the report.
+int run(bench::Options& o) {
     // llvmpipe reads LP_NUM_THREADS when the driver loads (the first EGL
     // context): one rasteriser thread makes the process's CPU time per frame
     // the work of the pass, not of idle threads woken and waited for.
@@ -37,21 +32,26 @@ int main(int argc, char** argv) {
         setenv("LP_NUM_THREADS", "1", 1);
         o.lp_num_threads = "1";
     }
-    try {
-        plugin::Library lib;
-        if (!lib.open_default(o.plugin, error)) throw std::runtime_error(error);
-        const std::vector<bench::Config> sweep = bench::sweep();
-        const std::vector<bench::Config> presets = bench::shipped_presets();
-        std::vector<bench::Row> rows;
-        for (const std::string& scene : o.scenes)
-            for (int scale : o.scales) {
-                std::fprintf(stderr, "scene %s at %dx%d\n", scene.c_str(), o.width * scale, o.height * scale);
-                bench::measure_scene(scene, o, scale, lib.api(), sweep, presets, scale == 1, rows);
-            }
-        bench::write_report(o, rows);
-    } catch (const std::exception& e) {
-        std::fprintf(stderr, "ssao-bench: error: %s\n", e.what());
-        return 1;
-    }
+    plugin::Library lib;
+    std::string error;
+    if (!lib.open_default(o.plugin, error)) throw std::runtime_error(error);
+    const std::vector<bench::Config> sweep = bench::sweep();
+    const std::vector<bench::Config> presets = bench::shipped_presets();
+    std::vector<bench::Row> rows;
+    for (const std::string& scene : o.scenes)
+        for (int scale : o.scales) {
+            std::fprintf(stderr, "scene %s at %dx%d\n", scene.c_str(), o.width * scale, o.height * scale);
+            bench::measure_scene(scene, o, scale, lib.api(), sweep, presets, scale == 1, rows);
+        }
+    bench::write_report(o, rows);
     return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    bench::Options o;
+    std::string error;
+    const bench::Parse parsed = bench::parse(argc, argv, o, error);
+    return flags::finish_main("ssao-bench", parsed, error, [] { return bench::help_text(); }, [&] { return run(o); });
 }

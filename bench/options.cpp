@@ -159,18 +159,10 @@ Parse parse(int argc, char** argv, Options& o, std::string& error) {
              o.scales = {1};
          }},
     };
-    try {
-        switch (flags::walk(argc, argv, valued, switches, [&](const std::string& a) { o.scenes.push_back(a); })) {
-            case flags::Outcome::Help: return Parse::Help;
-            case flags::Outcome::Version: return Parse::Version;
-            case flags::Outcome::Run: break;
-        }
-    } catch (const flags::Error& e) {
-        error = e.message;
-        return Parse::Error;
-    }
+    const Parse parsed = flags::parse(argc, argv, valued, switches,
+                                      [&](const std::string& a) { o.scenes.push_back(a); }, error);
     if (o.scenes.empty()) o.scenes = default_scenes();
-    return Parse::Run;
+    return parsed;
 }
 
 }  // namespace bench

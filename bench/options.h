@@ -1,6 +1,7 @@
 // options.h - ssao-bench's command line (the tools' shared parser, host/flags.h).
 #pragma once
 
+#include "flags.h"
 #include "views.h"
 
 #include <string>
@@ -30,7 +31,7 @@ struct Options {
     std::string lp_num_threads;              // LP_NUM_THREADS the run had (set by main unless the user set it)
 };
 
-enum class Parse { Run, Help, Version, Error };
+using Parse = flags::Outcome;
 
 Parse parse(int argc, char** argv, Options& o, std::string& error);
 std::string help_text();

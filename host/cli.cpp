@@ -238,19 +238,12 @@ ParseResult parse(int argc, const char* const* argv, Options& o, std::string& er
         {"--no-sheet", [&] { o.sheet = false; }},
     };
 
-    try {
-        const flags::Outcome outcome = flags::walk(argc, argv, valued, switches, o.scene_path);
-        if (outcome == flags::Outcome::Help) return ParseResult::Help;
-        if (outcome == flags::Outcome::Version) return ParseResult::Version;
+    return flags::parse(argc, argv, valued, switches, o.scene_path, error, [&] {
         flags::check_camera(o.cam);
         if (o.sample_index > 0 && static_cast<int>(o.sample_index) >= std::max(o.msaa, 1))
-            throw flags::Error{"--sample-index " + std::to_string(o.sample_index) + " needs --msaa N with N > " +
-                               std::to_string(o.sample_index) + " (a pixel has samples 0..N-1)"};
-    } catch (const flags::Error& f) {
-        error = f.message;
-        return ParseResult::Error;
-    }
-    return ParseResult::Run;
+            fail("--sample-index " + std::to_string(o.sample_index) + " needs --msaa N with N > " +
+                 std::to_string(o.sample_index) + " (a pixel has samples 0..N-1)");
+    });
 }
 
 // One line per preset, from what the plugin returns (preset_text.h).

@@ -2,6 +2,7 @@
 // and the --help text (whose plugin defaults come from the plugin itself).
 #pragma once
 
+#include "flags.h"
 #include "camera.h"
 
 #include <ssao/ssao.h>
@@ -75,7 +76,7 @@ struct Options {
     bool output_multiply = false;    // lit_ao.png: the plugin multiplies AO into the lit image
 };
 
-enum class ParseResult { Run, Help, Version, Error };
+using ParseResult = flags::Outcome;
 
 // Parses argv. On Error, `error` holds one sentence naming the flag and the
 // problem. "--flag value" and "--flag=value" are both accepted.

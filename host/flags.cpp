@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <limits>
 #include <sstream>
+#include <stdexcept>
 #include <vector>
 
 namespace flags {
@@ -198,6 +199,47 @@ Outcome walk(int argc, const char* const* argv, const Valued& valued, const Swit
         scene_path = arg;
         seen = true;
     });
+}
+
+Outcome parse(int argc, const char* const* argv, const Valued& valued, const Switches& switches,
+              const Positional& positional, std::string& error, const std::function<void()>& check) {
+    try {
+        const Outcome outcome = walk(argc, argv, valued, switches, positional);
+        if (outcome == Outcome::Run && check) check();
+        return outcome;
+    } catch (const Error& e) {
+        error = e.message;
+        return Outcome::Error;
+    }
+}
+
+Outcome parse(int argc, const char* const* argv, const Valued& valued, const Switches& switches,
+              std::string& scene_path, std::string& error, const std::function<void()>& check) {
+    try {
+        const Outcome outcome = walk(argc, argv, valued, switches, scene_path);
+        if (outcome == Outcome::Run && check) check();
+        return outcome;
+    } catch (const Error& e) {
+        error = e.message;
+        return Outcome::Error;
+    }
+}
+
+int finish_main(const std::string& tool, Outcome parsed, const std::string& error,
+                const std::function<std::string()>& help, const std::function<int()>& run) {
+    switch (parsed) {
+        case Outcome::Error: print_error(tool, error); return 2;
+        case Outcome::Help: std::fputs(help().c_str(), stdout); return 0;
+        case Outcome::Version: std::printf("%s\n", version_line(tool).c_str()); return 0;
+        case Outcome::Run: break;
+    }
+    try {
+        return run();
+    } catch (const std::exception& e) {
+        std::fflush(stdout);  // what the run printed comes before its error line
+        print_error(tool, e.what());
+        return 1;
+    }
 }
 
 std::string version_line(const std::string& tool) {

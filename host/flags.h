@@ -45,6 +45,7 @@ enum class Outcome {
     Run,      // every argument taken
     Help,     // --help or -h was given: print the tool's help, exit 0
     Version,  // --version was given: print version_line(tool), exit 0
+    Error,    // refused (only from parse(), never from walk()): print the message, exit 2
 };
 
 // Walks argv[1..]: valued flags take the next argument or "=value", switches
@@ -56,6 +57,19 @@ Outcome walk(int argc, const char* const* argv, const Valued& valued, const Swit
 // The same, for tools whose one optional positional argument is a scene file.
 Outcome walk(int argc, const char* const* argv, const Valued& valued, const Switches& switches,
              std::string& scene_path);
+
+// A tool's parse: walk(), then `check` (rules across flags; may fail()). A
+// refusal comes back as Outcome::Error with its message in `error`.
+Outcome parse(int argc, const char* const* argv, const Valued& valued, const Switches& switches,
+              const Positional& positional, std::string& error, const std::function<void()>& check = {});
+Outcome parse(int argc, const char* const* argv, const Valued& valued, const Switches& switches,
+              std::string& scene_path, std::string& error, const std::function<void()>& check = {});
+
+// The rest of a tool's main() once parsed: --help prints help() and --version
+// version_line(tool), exit 0; a refusal prints its line, exit 2; else run(),
+// whose exception prints one line (print_error), exit 1.
+int finish_main(const std::string& tool, Outcome parsed, const std::string& error,
+                const std::function<std::string()>& help, const std::function<int()>& run);
 
 // The flag of `known` that `unknown` most likely meant: the only one it is a
 // prefix of, else the only one within 2 edits (insert, delete, replace a

@@ -580,46 +580,33 @@ int run(const cli::Options& o) {
     return 0;
 }
 
+// Defaults and presets in --help come from the plugin itself (a zeroed
+// struct resolved, the presets as preset_settings returns them), so the help
+// never drifts from the library.
+std::string help(const cli::Options& options) {
+    plugin::Library library;
+    std::string error;
+    ssao_settings defaults{};
+    defaults.size = sizeof defaults;
+    bool have = false;
+    ssao_settings presets[preset_text::kPresetCount] = {};
+    if (library.open_default(options.plugin_path, error)) {
+        ssao_settings zero{};
+        zero.size = sizeof zero;
+        have = library.api().resolve_settings(&zero, &defaults) == SSAO_OK;
+        for (int i = 0; i < preset_text::kPresetCount && have; ++i) {
+            presets[i].size = sizeof presets[i];
+            have = library.api().preset_settings(preset_text::kPresetOrder[i], &presets[i]) == SSAO_OK;
+        }
+    }
+    return cli::help_text(have ? &defaults : nullptr, scene::default_path(), have ? presets : nullptr);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
     cli::Options options;
     std::string error;
-    switch (cli::parse(argc, argv, options, error)) {
-        case cli::ParseResult::Error:
-            flags::print_error("ssao-host", error);
-            return 2;
-        case cli::ParseResult::Help: {
-            // Defaults come from the plugin itself (a zeroed struct resolved),
-            // so the help never drifts from the library.
-            plugin::Library library;
-            ssao_settings defaults{};
-            defaults.size = sizeof defaults;
-            bool have = false;
-            ssao_settings presets[preset_text::kPresetCount] = {};
-            if (library.open_default(options.plugin_path, error)) {
-                ssao_settings zero{};
-                zero.size = sizeof zero;
-                have = library.api().resolve_settings(&zero, &defaults) == SSAO_OK;
-                for (int i = 0; i < preset_text::kPresetCount && have; ++i) {
-                    presets[i].size = sizeof presets[i];
-                    have = library.api().preset_settings(preset_text::kPresetOrder[i], &presets[i]) == SSAO_OK;
-                }
-            }
-            std::fputs(cli::help_text(have ? &defaults : nullptr, scene::default_path(), have ? presets : nullptr)
-                           .c_str(),
-                       stdout);
-            return 0;
-        }
-        case cli::ParseResult::Version: std::printf("%s\n", flags::version_line("ssao-host").c_str()); return 0;
-        case cli::ParseResult::Run: break;
-    }
-    try {
-        return run(options);
-    } catch (const std::exception& e) {
-        // One line on stderr, whatever the message (loaders may embed newlines).
-        std::fflush(stdout);
-        flags::print_error("ssao-host", e.what());
-        return 1;
-    }
+    const cli::ParseResult parsed = cli::parse(argc, argv, options, error);
+    return flags::finish_main("ssao-host", parsed, error, [&] { return help(options); }, [&] { return run(options); });
 }

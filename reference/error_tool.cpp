@@ -105,16 +105,15 @@ std::optional<int> parse_args(int argc, char** argv, Args& a) {
         {"--label", [&](const std::string&, const std::string& v) { a.label = v; }},
         {"--band", [&](const std::string& f, const std::string& v) { a.band = int(flags::integer(f, v, 0, 256)); }},
     };
-    try {
-        const flags::Switches switches = {{"--allow-mismatch", [&] { a.allow_mismatch = true; }}};
-        switch (flags::walk(argc, argv, valued, switches, [&](const std::string& p) { positional.push_back(p); })) {
-            case flags::Outcome::Help: std::fputs(kHelp, stdout); return 0;
-            case flags::Outcome::Version: std::printf("%s\n", flags::version_line("ssao-error").c_str()); return 0;
-            case flags::Outcome::Run: break;
-        }
-    } catch (const flags::Error& e) {
-        std::fprintf(stderr, "ssao-error: error: %s.\n", e.message.c_str());  // the message names --help already
-        return 2;
+    const flags::Switches switches = {{"--allow-mismatch", [&] { a.allow_mismatch = true; }}};
+    std::string error;
+    switch (flags::parse(argc, argv, valued, switches, [&](const std::string& p) { positional.push_back(p); }, error)) {
+        case flags::Outcome::Help: std::fputs(kHelp, stdout); return 0;
+        case flags::Outcome::Version: std::printf("%s\n", flags::version_line("ssao-error").c_str()); return 0;
+        case flags::Outcome::Error:
+            std::fprintf(stderr, "ssao-error: error: %s.\n", error.c_str());  // the message names --help already
+            return 2;
+        case flags::Outcome::Run: break;
     }
     if (positional.size() != 2) return usage_error("expected two images, TEST.exr and REF, got " + std::to_string(positional.size()));
     a.test_path = positional[0];

@@ -123,7 +123,7 @@ std::string help_text() {
     "thickness) in their headers; ssao-error refuses to compare images whose records differ.\n";
 }
 
-enum class Parse { Run, Help, Version, Error };
+using Parse = flags::Outcome;
 
 Parse parse(int argc, char** argv, Options& o, std::string& error) {
     const flags::Valued valued = {
@@ -166,20 +166,13 @@ Parse parse(int argc, char** argv, Options& o, std::string& error) {
         {"--reverse-z", [&] { o.cam.reverse_z = true; }},
         {"--allow-outside-files", [&] { o.allow_outside_files = true; }},
     };
-    try {
-        const flags::Outcome outcome = flags::walk(argc, argv, valued, switches, o.scene_path);
-        if (outcome == flags::Outcome::Help) return Parse::Help;
-        if (outcome == flags::Outcome::Version) return Parse::Version;
+    return flags::parse(argc, argv, valued, switches, o.scene_path, error, [&] {
         flags::check_camera(o.cam);
         if (!o.limit && o.thickness) fail("--thickness applies only with --limit");
         if (!o.limit && o.limit_directions) fail("--limit-directions applies only with --limit");
         if (double(o.width) * double(o.height) * double(o.samples) > 4e12)
             fail("--width x --height x --samples is absurdly large (more than 4e12 rays)");
-    } catch (const flags::Error& f) {
-        error = f.message;
-        return Parse::Error;
-    }
-    return Parse::Run;
+    });
 }
 
 bool make_dirs(const std::string& path, std::string& error) {

@@ -153,20 +153,9 @@ int run(const viewer::Options& o) {
 int main(int argc, char** argv) {
     viewer::Options options;
     std::string error;
-    switch (viewer::parse(argc, argv, options, error)) {
-        case viewer::Parse::Error:
-            flags::print_error("ssao-viewer", error);
-            return 2;
-        case viewer::Parse::Help: std::fputs(viewer::help_text(scene::default_path(), locate::bundled(viewer::kDemoScript)).c_str(), stdout); return 0;
-        case viewer::Parse::Version: std::printf("%s\n", flags::version_line("ssao-viewer").c_str()); return 0;
-        case viewer::Parse::Run: break;
-    }
-    try {
-        return run(options);
-    } catch (const std::exception& e) {
-        // One line on stderr, whatever the message.
-        std::fflush(stdout);
-        flags::print_error("ssao-viewer", e.what());
-        return 1;
-    }
+    const viewer::Parse parsed = viewer::parse(argc, argv, options, error);
+    return flags::finish_main(
+        "ssao-viewer", parsed, error,
+        [] { return viewer::help_text(scene::default_path(), locate::bundled(viewer::kDemoScript)); },
+        [&] { return run(options); });
 }

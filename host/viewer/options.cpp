@@ -27,18 +27,8 @@ Parse parse(int argc, const char* const* argv, Options& o, std::string& error) {
              o.screenshot_dir = v;
          }},
     };
-    try {
-        const flags::Switches switches = {{"--allow-outside-files", [&] { o.allow_outside_files = true; }}};
-        switch (flags::walk(argc, argv, valued, switches, o.scene_path)) {
-            case flags::Outcome::Help: return Parse::Help;
-            case flags::Outcome::Version: return Parse::Version;
-            case flags::Outcome::Run: break;
-        }
-    } catch (const flags::Error& e) {
-        error = e.message;
-        return Parse::Error;
-    }
-    return Parse::Run;
+    const flags::Switches switches = {{"--allow-outside-files", [&] { o.allow_outside_files = true; }}};
+    return flags::parse(argc, argv, valued, switches, o.scene_path, error);
 }
 
 std::string help_text(const std::string& default_scene, const std::string& demo_script) {

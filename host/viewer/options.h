@@ -1,6 +1,7 @@
 // options.h - ssao-viewer's command line.
 #pragma once
 
+#include "flags.h"
 #include <ssao/ssao.h>
 
 #include <optional>
@@ -19,7 +20,7 @@ struct Options {
     bool allow_outside_files = false; // the scene's buffer URIs may leave its folder (scene_limits.h)
 };
 
-enum class Parse { Run, Help, Version, Error };
+using Parse = flags::Outcome;
 
 // "--flag value" and "--flag=value"; on Error `error` names the flag.
 Parse parse(int argc, const char* const* argv, Options& out, std::string& error);
