@@ -10,6 +10,10 @@
 namespace depth_limit {
 namespace {
 
+// The 4 edge neighbours, in the bit order of Layer::joined_.
+constexpr int kNeighbourX[4] = {1, -1, 0, 0};
+constexpr int kNeighbourY[4] = {0, 0, 1, -1};
+
 // Affine function of the segment parameter s: v0 + v1 * s.
 struct Lin {
     double v0 = 0.0, v1 = 0.0;
@@ -76,6 +80,60 @@ Layer::Layer(const camera::Camera& cam, const raytrace::Image& img)
                        std::isfinite(p[1]) && std::isfinite(p[2]);
         if (geometry_[i]) texels_[i] = {glm::dvec3(p[0], p[1], p[2]), normal / len};
     }
+    // Which neighbours' planes join each texel's read (see the header).
+    joined_.assign(n, 0);
+    for (int y = 0; y < height_; ++y)
+        for (int x = 0; x < width_; ++x) {
+            const size_t i = size_t(y) * size_t(width_) + size_t(x);
+            if (!geometry_[i]) continue;
+            const Texel& a = texels_[i];
+            const double d_a = -a.q.z;
+            for (int k = 0; k < 4; ++k) {
+                const int xx = x + kNeighbourX[k], yy = y + kNeighbourY[k];
+                if (xx < 0 || yy < 0 || xx >= width_ || yy >= height_) continue;
+                const size_t j = size_t(yy) * size_t(width_) + size_t(xx);
+                if (!geometry_[j]) continue;
+                const Texel& b = texels_[j];
+                const bool continues = std::fabs(-b.q.z - d_a) <= kContinuity * d_a;
+                const bool convex = glm::dot(a.n, b.q - a.q) < 0.0 && glm::dot(b.n, a.q - b.q) < 0.0;
+                if (continues && convex) joined_[i] |= uint8_t(1u << k);
+            }
+        }
+}
+
+int Layer::planes(int x, int y, Texel out[5]) const {
+    const size_t i = size_t(y) * size_t(width_) + size_t(x);
+    if (!geometry_[i]) return 0;
+    int count = 0;
+    out[count++] = texels_[i];
+    for (int k = 0; k < 4; ++k)
+        if (joined_[i] & (1u << k))
+            out[count++] = texels_[size_t(y + kNeighbourY[k]) * size_t(width_) + size_t(x + kNeighbourX[k])];
+    return count;
+}
+
+namespace {
+
+// The rule over a texel's planes (planes[0] is the texel's own).
+double farthest_surface(const Texel* planes, int count, const glm::dvec3& s, bool ortho) {
+    double d = surface_depth(planes[0], s, ortho);
+    for (int j = 1; j < count; ++j) d = std::max(d, surface_depth(planes[j], s, ortho));
+    return d;
+}
+
+bool blocked_by_planes(const Texel* planes, int count, const glm::dvec3& s, double thickness, bool ortho) {
+    const double delta = -s.z - farthest_surface(planes, count, s, ortho);
+    return delta > kSelfEpsilon * -planes[0].q.z && delta < thickness;
+}
+
+}  // namespace
+
+double Layer::surface_depth_at(const glm::dvec3& s) const {
+    int x = 0, y = 0;
+    Texel p[5];
+    if (!pixel_of(s, x, y)) return std::numeric_limits<double>::infinity();
+    const int count = planes(x, y, p);
+    return count ? farthest_surface(p, count, s, ortho_) : std::numeric_limits<double>::infinity();
 }
 
 bool Layer::pixel_of(const glm::dvec3& s, int& x, int& y) const {
@@ -98,8 +156,10 @@ bool Layer::texel(int x, int y, Texel& t) const {
 
 bool Layer::point_blocked(const glm::dvec3& s, double thickness) const {
     int x = 0, y = 0;
-    Texel t;
-    return pixel_of(s, x, y) && texel(x, y, t) && blocked_by(t, s, thickness, ortho_);
+    Texel p[5];
+    if (!pixel_of(s, x, y)) return false;
+    const int count = planes(x, y, p);
+    return count > 0 && blocked_by_planes(p, count, s, thickness, ortho_);
 }
 
 bool Layer::segment_blocked(const glm::dvec3& p, const glm::dvec3& dir, double radius, double thickness) const {
@@ -152,12 +212,15 @@ bool Layer::segment_blocked(const glm::dvec3& p, const glm::dvec3& dir, double r
         // Off the image or behind the eye: it cannot come back (a segment's
         // projection leaves a convex window once), so the rest is open.
         if (!pixel_of(p + dir * mid, x, y)) return false;
-        Texel t;
-        if (!texel(x, y, t)) continue;  // sky: open
+        Texel planes_here[5];
+        const int count = planes(x, y, planes_here);
+        if (count == 0) continue;  // sky: open
+        const Texel& t = planes_here[0];
         const double d_q = -t.q.z, eps = e_self * d_q;
-        // Quick exit: where the tangent plane is read over the whole interval and
-        // both ends are on the camera's side of it (n.(S - Q) >= 0, linear in s),
-        // Delta <= 0 throughout: open. Most of every segment is like that.
+        // Quick exit: where the texel's own plane is read over the whole interval
+        // and both ends are on the camera's side of it (n.(S - Q) >= 0, linear in s),
+        // its Delta <= 0 throughout, and the farthest plane only lowers Delta: open.
+        // Most of every segment is like that.
         const double b0 = glm::dot(t.n, p + dir * u0 - t.q), b1 = glm::dot(t.n, p + dir * u1 - t.q);
         if (b0 >= 0.0 && b1 >= 0.0) {
             bool plane = false;
@@ -171,35 +234,43 @@ bool Layer::segment_blocked(const glm::dvec3& p, const glm::dvec3& dir, double r
             }
             if (plane) continue;
         }
-        // The points in (u0, u1) where the rule's outcome can change.
+        // The points in (u0, u1) where the rule's outcome can change: where any
+        // plane's Delta crosses eps or the thickness, where any plane switches to
+        // its edge-on fallback (the farthest plane can only change at a point
+        // where two planes' depths cross, and the outcome only where the
+        // farthest one's Delta crosses eps or T, which is one of these).
         crit.clear();
         crit.push_back(u0);
-        for (double k_ : {eps, thickness}) {
-            if (!std::isfinite(k_)) continue;
-            linear_roots(depth.v0 - d_q - k_, depth.v1, u0, u1, crit);  // edge-on fallback: depth - d_q = k
-            if (ortho_) {
-                // Delta(s) = -n.(p + s dir - q) / n.z
-                const double nz = t.n.z;
-                if (nz > kEdgeOn)
-                    linear_roots(-glm::dot(t.n, p - t.q) / nz - k_, -glm::dot(t.n, dir) / nz, u0, u1, crit);
-            } else {
-                // Delta = A (C - nq) / C = k  <=>  A (C - nq) - k C = 0, with A = depth, C = n.S.
-                const double nq = glm::dot(t.n, t.q);
-                const Lin C{glm::dot(t.n, p), glm::dot(t.n, dir)};
-                quadratic_roots(depth.v1 * C.v1, depth.v0 * C.v1 + depth.v1 * (C.v0 - nq) - k_ * C.v1,
-                                depth.v0 * (C.v0 - nq) - k_ * C.v0, u0, u1, crit);
+        for (int j = 0; j < count; ++j) {
+            const Texel& pl = planes_here[j];
+            const double d_j = -pl.q.z;
+            for (double k_ : {eps, thickness}) {
+                if (!std::isfinite(k_)) continue;
+                linear_roots(depth.v0 - d_j - k_, depth.v1, u0, u1, crit);  // edge-on fallback: depth - d_j = k
+                if (ortho_) {
+                    // Delta(s) = -n.(p + s dir - q) / n.z
+                    const double nz = pl.n.z;
+                    if (nz > kEdgeOn)
+                        linear_roots(-glm::dot(pl.n, p - pl.q) / nz - k_, -glm::dot(pl.n, dir) / nz, u0, u1, crit);
+                } else {
+                    // Delta = A (C - nq) / C = k  <=>  A (C - nq) - k C = 0, with A = depth, C = n.S.
+                    const double nq = glm::dot(pl.n, pl.q);
+                    const Lin C{glm::dot(pl.n, p), glm::dot(pl.n, dir)};
+                    quadratic_roots(depth.v1 * C.v1, depth.v0 * C.v1 + depth.v1 * (C.v0 - nq) - k_ * C.v1,
+                                    depth.v0 * (C.v0 - nq) - k_ * C.v0, u0, u1, crit);
+                }
             }
-        }
-        if (!ortho_) {  // the edge-on switch: n.S = -kEdgeOn * depth(S)
-            linear_roots(glm::dot(t.n, p) + kEdgeOn * depth.v0, glm::dot(t.n, dir) + kEdgeOn * depth.v1, u0, u1,
-                         crit);
+            if (!ortho_) {  // the edge-on switch: n.S = -kEdgeOn * depth(S)
+                linear_roots(glm::dot(pl.n, p) + kEdgeOn * depth.v0, glm::dot(pl.n, dir) + kEdgeOn * depth.v1, u0,
+                             u1, crit);
+            }
         }
         crit.push_back(u1);
         std::sort(crit.begin(), crit.end());
         for (size_t j = 0; j + 1 < crit.size(); ++j) {
             if (!(crit[j + 1] > crit[j])) continue;
             const double m = 0.5 * (crit[j] + crit[j + 1]);
-            if (blocked_by(t, p + dir * m, thickness, ortho_)) return true;
+            if (blocked_by_planes(planes_here, count, p + dir * m, thickness, ortho_)) return true;
         }
     }
     return false;

@@ -10,12 +10,22 @@
 //   - project S with the camera's projection; behind the eye (clip w <= 0) or
 //     outside the image: open. Its texel is the pixel the projection falls in
 //     (floor of the window coordinates, row 0 at the top). A sky texel: open.
-//   - the texel's surface point Q (its primary hit), normal n_Q, depth
-//     d_Q = -Q.z. The surface depth under S, d_surf, is where the eye ray through
-//     S (orthographic: the line through S along the view axis) meets the plane
-//     through Q with normal n_Q ("through the texel's tangent plane"). Where
-//     that plane is within kEdgeOn of edge-on along the ray (perspective:
-//     n_Q.S >= -kEdgeOn * depth(S); orthographic: n_Q.z <= kEdgeOn), d_surf = d_Q.
+//   - a texel's plane read: for texel Q (primary hit Q, normal n_Q, depth
+//     d_Q = -Q.z), the depth where the eye ray through S (orthographic: the line
+//     through S along the view axis) meets the plane through Q with normal n_Q.
+//     Where that plane is within kEdgeOn of edge-on along the ray (perspective:
+//     n_Q.S >= -kEdgeOn * depth(S); orthographic: n_Q.z <= kEdgeOn), d_Q instead.
+//   - the surface depth under S, d_surf, is the farthest (largest) of the plane
+//     reads of S's texel and of those of its 4 edge neighbours N that continue
+//     its surface over a convex edge: N is geometry, |d_N - d_Q| <= kContinuity * d_Q,
+//     and each hit lies behind the other's plane (n_Q.(N - Q) < 0 and
+//     n_N.(Q - N) < 0). A texel's plane, extrapolated over its pixel's footprint,
+//     lies in front of a surface that curves away from it (faceted or smooth,
+//     worst where the surface is seen at a grazing angle: limbs, silhouettes),
+//     so by itself it blocks points just above the real surface; on a convex
+//     surface the real depth is behind every neighbour's tangent plane, and the
+//     farthest of them is the tightest such bound. Concave neighbours (creases,
+//     contact with the floor) do not join: there the texel's own plane is kept.
 //   - Delta = depth(S) - d_surf (view depth, i.e. -z_view, along the view axis,
 //     not along the eye ray; scene units). S is blocked when
 //         kSelfEpsilon * d_Q < Delta < thickness.
@@ -25,8 +35,10 @@
 //
 // The marcher is exact, the limit of infinitely many steps: it walks the
 // segment texel by texel (every pixel boundary its projection crosses) and, in
-// each texel, solves for the points where the rule can change (Delta = eps,
-// Delta = thickness, the edge-on switch), then tests the rule between them.
+// each texel, solves for the points where the rule can change (any plane's
+// Delta = eps or = thickness, any plane's edge-on switch), then tests the rule
+// between them. tests/reference/limit_oracle.h implements the same rule
+// independently by brute force (reference.limit_oracle).
 #pragma once
 
 #include "camera.h"
@@ -46,6 +58,7 @@ constexpr int kReplicas = 8;               // independently rotated sets the dir
 constexpr double kDefaultThicknessOfR = 0.5;  // thickness = R / 2
 constexpr double kEdgeOn = 1e-3;
 constexpr double kSelfEpsilon = 1e-5;
+constexpr double kContinuity = 0.05;  // relative depth step up to which a neighbour continues a surface
 
 // One texel of the depth layer.
 struct Texel {
@@ -53,9 +66,10 @@ struct Texel {
     glm::dvec3 n{0.0, 0.0, 1.0};  // unit view-space normal facing the camera
 };
 
-// View depth of the texel's surface under view-space point s (see the rule above).
+// The texel's plane read at view-space point s (see the rule above).
 double surface_depth(const Texel& t, const glm::dvec3& s, bool ortho);
-// Whether s is blocked by this texel: kSelfEpsilon * d_Q < depth(s) - surface_depth < thickness.
+// Whether s is blocked by this texel's plane alone (a texel no neighbour joins):
+// kSelfEpsilon * d_Q < depth(s) - surface_depth < thickness.
 // thickness may be +infinity (a height field).
 bool blocked_by(const Texel& t, const glm::dvec3& s, double thickness, bool ortho);
 
@@ -78,6 +92,9 @@ public:
     bool pixel_of(const glm::dvec3& s, int& x, int& y) const;
     // False for sky.
     bool texel(int x, int y, Texel& t) const;
+    // d_surf under view-space point s: the farthest plane read of its texel and the
+    // joined neighbours; +infinity where s is open whatever its depth (sky, off the image).
+    double surface_depth_at(const glm::dvec3& s) const;
     // The whole per-point rule: project, read the texel, compare.
     bool point_blocked(const glm::dvec3& s, double thickness) const;
     // Whether any point of p + s dir, 0 < s < radius, is blocked (exact traversal).
@@ -92,6 +109,10 @@ private:
     glm::dmat4 proj_{1.0};
     std::vector<Texel> texels_;   // per pixel, normals normalised once
     std::vector<uint8_t> geometry_;
+    std::vector<uint8_t> joined_;  // per texel, bit k: edge neighbour k's plane joins the read
+
+    // The texel's plane first, then the joined neighbours'; 0 for sky.
+    int planes(int x, int y, Texel out[5]) const;
 };
 
 struct Options {

@@ -144,6 +144,84 @@ TEST_CASE("the per-point rule: tangent plane, edge-on fallback, thickness, self 
     CHECK(depth_limit::surface_depth(edge, {0.0, 0.0, -7.0}, false) == 5.0);
 }
 
+// Two texels of a roof seen from the front: the left one on the left face, the
+// right one on the right face, the ridge inside the left texel's footprint. Between
+// the ridge and the pixel boundary the real surface is the right face, behind the
+// left texel's plane extrapolated over its footprint: a point between the two is
+// above the roof. The convex neighbour's plane joins the read there; a concave
+// (valley) or discontinuous neighbour does not.
+TEST_CASE("the per-point rule: a convex neighbour's plane joins the read, the farthest plane wins") {
+    camera::Camera c;
+    c.eye = {0, 0, 0};
+    c.target = {0, 0, -1};
+    c.yfov = 0.9f;
+    c.znear = 0.1f;
+    c.zfar = 100.0f;
+    const double half_w = std::tan(0.45) * 2.0;  // 2x1 image: aspect 2
+    auto eye_ray = [&](double ndc_x) { return glm::dvec3(ndc_x * half_w, 0.0, -1.0); };
+    auto hit = [&](const glm::dvec3& n, const glm::dvec3& on, double ndc_x) {
+        const glm::dvec3 e = eye_ray(ndc_x);
+        return e * (glm::dot(n, on) / glm::dot(n, e));
+    };
+    const glm::dvec3 ridge = eye_ray(-0.2) * 5.0;  // inside the left texel (ndc -1..0)
+    auto make = [&](double tilt_left, double tilt_right, double far_shift) {
+        const glm::dvec3 n0 = glm::normalize(glm::dvec3(-tilt_left, 0.0, 1.0));
+        const glm::dvec3 n1 = glm::normalize(glm::dvec3(tilt_right, 0.0, 1.0));
+        const glm::dvec3 q0 = hit(n0, ridge, -0.5), q1 = hit(n1, ridge, 0.5) * far_shift;
+        raytrace::Image img;
+        img.width = 2;
+        img.height = 1;
+        img.mask = {1.0f, 1.0f};
+        img.depth = {float(-q0.z), float(-q1.z)};
+        img.position = {float(q0.x), float(q0.y), float(q0.z), float(q1.x), float(q1.y), float(q1.z)};
+        img.normal = {float(n0.x), float(n0.y), float(n0.z), float(n1.x), float(n1.y), float(n1.z)};
+        return img;
+    };
+    auto texel = [](const raytrace::Image& img, int i) {
+        depth_limit::Texel t;
+        t.q = {img.position[3 * i], img.position[3 * i + 1], img.position[3 * i + 2]};
+        t.n = glm::normalize(glm::dvec3(img.normal[3 * i], img.normal[3 * i + 1], img.normal[3 * i + 2]));
+        return t;
+    };
+    // Points of the left texel's footprint, between the ridge and the boundary, at the roof's depth.
+    const glm::dvec3 s = eye_ray(-0.08) * 5.0;
+    {
+        const raytrace::Image roof = make(0.03, 0.03, 1.0);
+        REQUIRE(std::fabs(roof.depth[1] - roof.depth[0]) <= depth_limit::kContinuity * roof.depth[0]);
+        const depth_limit::Layer layer(c, roof);
+        const depth_limit::Texel left = texel(roof, 0), right = texel(roof, 1);
+        int x = -1, y = -1;
+        REQUIRE(layer.pixel_of(s, x, y));
+        CHECK(x == 0);
+        const double own = depth_limit::surface_depth(left, s, false), other = depth_limit::surface_depth(right, s, false);
+        CHECK(other > own + 0.01);  // the right face is behind the left plane here
+        CHECK(layer.surface_depth_at(s) == std::max(own, other));
+        // A point behind the left plane but above the right face: blocked by the lone
+        // plane (the old rule), open under the rule.
+        const glm::dvec3 above = eye_ray(-0.08) * (0.5 * (own + other));
+        CHECK(depth_limit::blocked_by(left, above, 1.0, false));
+        CHECK_FALSE(layer.point_blocked(above, 1.0));
+        // Behind both planes: blocked.
+        CHECK(layer.point_blocked(eye_ray(-0.08) * (other + 0.05), 1.0));
+    }
+    {
+        // A valley (concave edge): the neighbour does not join, the texel's own plane is read.
+        const raytrace::Image valley = make(-0.03, -0.03, 1.0);
+        const depth_limit::Layer layer(c, valley);
+        CHECK(layer.surface_depth_at(s) == depth_limit::surface_depth(texel(valley, 0), s, false));
+    }
+    {
+        // A depth discontinuity: the far texel does not join either.
+        const raytrace::Image step = make(0.03, 0.03, 1.2);
+        REQUIRE(std::fabs(step.depth[1] - step.depth[0]) > depth_limit::kContinuity * step.depth[0]);
+        const depth_limit::Layer layer(c, step);
+        CHECK(layer.surface_depth_at(s) == depth_limit::surface_depth(texel(step, 0), s, false));
+    }
+    // Sky (off the image) reads +infinity.
+    const depth_limit::Layer layer(c, make(0.03, 0.03, 1.0));
+    CHECK(std::isinf(layer.surface_depth_at({0.0, 50.0, -1.0})));
+}
+
 TEST_CASE("wall: the depth layer sees the wall, so the limit is V_R (closed form)") {
     const double R = 0.5;
     scene::Mesh m;
