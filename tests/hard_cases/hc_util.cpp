@@ -263,4 +263,8 @@ Diff diff(const std::vector<float>& a, const std::vector<float>& b, const std::f
     return d;
 }
 
+analytic::GBuffer crease_gbuffer(const glm::dmat4& proj, ssao_clip_range clip, int w, int h) {
+    return analytic::render(to_view(crease_world(), crease_view()), proj, clip, w, h);
+}
+
 }  // namespace hc

@@ -477,7 +477,7 @@ TEST_CASE("depth range: view depths beyond the half-float range (> 65504) give t
     const double k = 1e5;  // the crease at 1e5..1e6 units
     const ssao_settings s1 = fx.settings(hc::make(16, SSAO_BLUR_DEFAULT, SSAO_ROTATION_HASH, 1.0f, method));
     const auto p1 = analytic::reverse_z_infinite(hc::kFov, double(W) / H, 0.1);
-    const GBuffer g1 = analytic::render(hc::to_view(hc::crease_world(), hc::crease_view()), p1, SSAO_CLIP_ZERO_TO_ONE, W, H);
+    const GBuffer g1 = hc::crease_gbuffer(p1, SSAO_CLIP_ZERO_TO_ONE, W, H);
     const auto r1 = hc::run(fx, g1, p1, SSAO_CLIP_ZERO_TO_ONE);
     REQUIRE(r1.status == SSAO_OK);
     struct Case { const char* name; glm::dmat4 proj; };

@@ -26,7 +26,7 @@ struct Frames {
 
     Frames(testgl::Fixture& f, int w, int h) : fx(f) {
         const glm::dmat4 proj = analytic::perspective(hc::kFov, double(w) / h, 0.1, 100.0);
-        g = analytic::render(hc::to_view(hc::crease_world(), hc::crease_view()), proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, w, h);
+        g = hc::crease_gbuffer(proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, w, h);
         const GLuint dt = fx.make_depth(GL_DEPTH_COMPONENT32F, w, h, g.depth);
         const GLuint nt = fx.make_normals(GL_RGBA16F, w, h, g.normal);
         in = fx.inputs(dt, nt, proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE);

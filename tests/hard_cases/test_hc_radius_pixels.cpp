@@ -140,8 +140,7 @@ TEST_CASE("radius in pixels: the clamp - where N pixels span more than `radius` 
     testgl::Fixture fx;
     const int W = 64, H = 48;
     const glm::dmat4 proj = analytic::perspective(hc::kFov, double(W) / H, 0.1, 100.0);
-    const GBuffer g = analytic::render(hc::to_view(hc::crease_world(), hc::crease_view()), proj,
-                                       SSAO_CLIP_NEGATIVE_ONE_TO_ONE, W, H);
+    const GBuffer g = hc::crease_gbuffer(proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, W, H);
     ssao_settings s = base(method);
     s.radius = 1.0f, s.bias = 0.025f, s.thickness = 1.0f;
     fx.settings(s);
@@ -184,8 +183,7 @@ TEST_CASE("radius in pixels: half and quarter resolution count viewport pixels, 
     testgl::Fixture fx;
     const int W = 64, H = 48;
     const glm::dmat4 proj = analytic::orthographic(4.0, 3.0, 0.5, 60.0);
-    const GBuffer g = analytic::render(hc::to_view(hc::crease_world(), hc::crease_view()), proj,
-                                       SSAO_CLIP_NEGATIVE_ONE_TO_ONE, W, H);
+    const GBuffer g = hc::crease_gbuffer(proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, W, H);
     for (ssao_resolution res : {SSAO_RESOLUTION_HALF, SSAO_RESOLUTION_QUARTER}) {
         CAPTURE(res);
         ssao_settings s = base(method);

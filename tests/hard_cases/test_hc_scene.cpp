@@ -301,7 +301,7 @@ TEST_CASE("screen borders: a viewport inside larger textures gives exactly the A
     testgl::Fixture fx;
     const int W = 45, H = 31;
     const auto proj = analytic::perspective(hc::kFov, double(W) / H, 0.1, 100.0);
-    const GBuffer g = analytic::render(hc::to_view(hc::crease_world(), hc::crease_view()), proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, W, H);
+    const GBuffer g = hc::crease_gbuffer(proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, W, H);
     for (ssao_rotation rot : {SSAO_ROTATION_NOISE_4X4, SSAO_ROTATION_HASH, SSAO_ROTATION_NONE})
         for (ssao_blur blur : {SSAO_BLUR_NONE, SSAO_BLUR_DEPTH_AWARE, SSAO_BLUR_BOX_4X4}) {
             CAPTURE(rot);
@@ -443,7 +443,7 @@ TEST_CASE("normals: zero, NaN, infinite, non-unit and back-facing normals stay f
     testgl::Fixture fx;
     const int W = 64, H = 48;
     const auto proj = analytic::reverse_z(hc::kFov, double(W) / H, 0.1, 100.0);
-    const GBuffer g = analytic::render(hc::to_view(hc::crease_world(), hc::crease_view()), proj, SSAO_CLIP_ZERO_TO_ONE, W, H);
+    const GBuffer g = hc::crease_gbuffer(proj, SSAO_CLIP_ZERO_TO_ONE, W, H);
     const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
     struct Bad { const char* name; std::function<glm::vec3(glm::vec3)> make; bool same_ao; };
     const Bad bads[] = {
@@ -532,7 +532,7 @@ TEST_CASE("radius: as the radius goes to 0 the AO goes to 1 monotonically - a hu
     testgl::Fixture fx;
     const int W = 64, H = 48;
     const auto proj = analytic::perspective(hc::kFov, double(W) / H, 0.1, 100.0);
-    const GBuffer g = analytic::render(hc::to_view(hc::crease_world(), hc::crease_view()), proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, W, H);
+    const GBuffer g = hc::crease_gbuffer(proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, W, H);
     double previous = -1;
     std::vector<float> prev_ao;
     for (double radius : {4.0, 2.0, 1.0, 0.5, 0.25, 0.1, 0.03, 0.01, 1e-3, 1e-4}) {
@@ -619,7 +619,7 @@ TEST_CASE("sizes: 1x1, 1x2, 2x1, 3x5, 17x9 and 257x131 run, stay in [0,1] and ma
         CAPTURE(sz.w);
         CAPTURE(sz.h);
         const auto proj = analytic::perspective(hc::kFov, double(sz.w) / sz.h, 0.1, 100.0);
-        const GBuffer g = analytic::render(hc::to_view(hc::crease_world(), hc::crease_view()), proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, sz.w, sz.h);
+        const GBuffer g = hc::crease_gbuffer(proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, sz.w, sz.h);
         cpu::Input in;
         in.gbuffer = &g;
         analytic::to_floats(proj, in.projection);
@@ -711,7 +711,7 @@ TEST_CASE("float16 inputs: RGBA16F and RGB16F normals give the AO of RGBA32F nor
     testgl::Fixture fx;
     const int W = 64, H = 48;
     const auto proj = analytic::reverse_z(hc::kFov, double(W) / H, 0.1, 100.0);
-    const GBuffer g = analytic::render(hc::to_view(hc::crease_world(), hc::crease_view()), proj, SSAO_CLIP_ZERO_TO_ONE, W, H);
+    const GBuffer g = hc::crease_gbuffer(proj, SSAO_CLIP_ZERO_TO_ONE, W, H);
     fx.settings(hc::make(16, SSAO_BLUR_NONE, SSAO_ROTATION_HASH, 1.0f, method));
     hc::RunOptions o;
     o.normal_format = GL_RGBA32F;
@@ -751,7 +751,7 @@ TEST_CASE("normals: a huge but finite normal (x 1e20, RGBA32F) is the same direc
     testgl::Fixture fx;
     const int W = 64, H = 48;
     const auto proj = analytic::reverse_z(hc::kFov, double(W) / H, 0.1, 100.0);
-    const GBuffer g = analytic::render(hc::to_view(hc::crease_world(), hc::crease_view()), proj, SSAO_CLIP_ZERO_TO_ONE, W, H);
+    const GBuffer g = hc::crease_gbuffer(proj, SSAO_CLIP_ZERO_TO_ONE, W, H);
     fx.settings(hc::make(16, SSAO_BLUR_NONE, SSAO_ROTATION_HASH, 1.0f, method));
     hc::RunOptions o;
     o.normal_format = GL_RGBA32F;
@@ -780,7 +780,7 @@ TEST_CASE("depth: NaN, infinite and out-of-range values in a D32F input stay fin
     testgl::Fixture fx;
     const int W = 64, H = 48;
     const auto proj = analytic::reverse_z(hc::kFov, double(W) / H, 0.1, 100.0);
-    const GBuffer g = analytic::render(hc::to_view(hc::crease_world(), hc::crease_view()), proj, SSAO_CLIP_ZERO_TO_ONE, W, H);
+    const GBuffer g = hc::crease_gbuffer(proj, SSAO_CLIP_ZERO_TO_ONE, W, H);
     const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
     for (ssao_blur blur : {SSAO_BLUR_NONE, SSAO_BLUR_DEPTH_AWARE, SSAO_BLUR_GAUSSIAN, SSAO_BLUR_BOX_4X4}) {
         ssao_settings s = hc::make(16, blur, SSAO_ROTATION_HASH, 0.5f, method);
@@ -822,7 +822,7 @@ TEST_CASE("normals: every broken normal (zero, NaN in any component, inf) takes 
     testgl::Fixture fx;
     const int W = 64, H = 48;
     const auto proj = analytic::reverse_z(hc::kFov, double(W) / H, 0.1, 100.0);
-    const GBuffer g = analytic::render(hc::to_view(hc::crease_world(), hc::crease_view()), proj, SSAO_CLIP_ZERO_TO_ONE, W, H);
+    const GBuffer g = hc::crease_gbuffer(proj, SSAO_CLIP_ZERO_TO_ONE, W, H);
     fx.settings(hc::make(16, SSAO_BLUR_NONE, SSAO_ROTATION_HASH, 1.0f, method));
     hc::RunOptions o;
     o.normal_format = GL_RGBA32F;
@@ -856,7 +856,7 @@ TEST_CASE("settings extremes: 1 or 64 samples, strength off..8, power 0.01..16, 
     testgl::Fixture fx;
     const int W = 48, H = 36;
     const auto proj = analytic::reverse_z_infinite(hc::kFov, double(W) / H, 0.1);
-    const GBuffer g = analytic::render(hc::to_view(hc::crease_world(), hc::crease_view()), proj, SSAO_CLIP_ZERO_TO_ONE, W, H);
+    const GBuffer g = hc::crease_gbuffer(proj, SSAO_CLIP_ZERO_TO_ONE, W, H);
     for (uint32_t samples : {1u, 64u})
         for (ssao_blur blur : {SSAO_BLUR_NONE, SSAO_BLUR_DEPTH_AWARE, SSAO_BLUR_GAUSSIAN, SSAO_BLUR_BOX_4X4})
             for (float power : {0.01f, 1.0f, 16.0f}) {
