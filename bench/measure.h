@@ -40,6 +40,8 @@ struct Row {
     bool has_error = false;        // errors measured (base size only)
     metrics::Stats all, interior, silhouette, border;  // against V_R
     metrics::Stats vs_limit;       // against the depth-only limit (all pixels)
+    double cell_spread = 0;        // metrics::cell_spread of the error against V_R (the fixed pattern)
+    double bias_occluded = 0;      // metrics::occluded_bias: where V_R < 0.5 (contact shadows, creases)
 };
 
 // Measures every view in o.views of one scene at o.width/height x scale and

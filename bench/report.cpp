@@ -182,7 +182,7 @@ void write_csv(const Options& o, const std::vector<Row>& rows) {
            "rotation,radius,resolution,distribution,"
            "cpu_ms,cpu_min_ms,cpu_max_ms,rounds,x_textbook_cpu,x_floor_cpu,"
            "median_ms,p10_ms,p90_ms,x_textbook,wall_ms,x_textbook_wall,x_floor_wall,rmse,psnr,bias,rmse_vs_limit,"
-           "psnr_vs_limit,rmse_interior,rmse_silhouette,rmse_border,reference_noise_rms\n";
+           "psnr_vs_limit,rmse_interior,rmse_silhouette,rmse_border,reference_noise_rms,cell_spread,bias_occluded\n";
     for (const Row& r : rows) {
         const bool plugin = r.kind == Row::Kind::plugin;
         csv << r.scene << "," << view_name(r.view) << "," << r.radius_scale << "," << r.radius << ",\"" << r.config
@@ -203,9 +203,10 @@ void write_csv(const Options& o, const std::vector<Row>& rows) {
         if (r.has_error)
             csv << fmt(r.all.rmse, 5) << "," << fmt(r.all.psnr, 3) << "," << fmt(r.all.mean_error, 5) << ","
                 << fmt(r.vs_limit.rmse, 5) << "," << fmt(r.vs_limit.psnr, 3) << "," << fmt(r.interior.rmse, 5) << ","
-                << fmt(r.silhouette.rmse, 5) << "," << fmt(r.border.rmse, 5) << "," << fmt(r.all.noise_rms, 5) << "\n";
+                << fmt(r.silhouette.rmse, 5) << "," << fmt(r.border.rmse, 5) << "," << fmt(r.all.noise_rms, 5) << ","
+                << fmt(r.cell_spread, 5) << "," << fmt(r.bias_occluded, 5) << "\n";
         else
-            csv << ",,,,,,,,\n";
+            csv << ",,,,,,,,,,\n";
     }
 }
 

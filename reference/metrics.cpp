@@ -269,4 +269,40 @@ std::string csv_rows(const std::vector<Stats>& s, const std::string& label, cons
     return o.str();
 }
 
+double cell_spread(const std::vector<float>& test, const std::vector<float>& reference,
+                   const std::vector<uint8_t>& geometry, int width, int height, int cell) {
+    std::vector<double> sum(size_t(cell) * size_t(cell), 0.0);
+    std::vector<size_t> count(sum.size(), 0);
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            const size_t i = size_t(y) * size_t(width) + size_t(x);
+            if (!geometry[i] || !std::isfinite(test[i])) continue;
+            const size_t k = size_t(y % cell) * size_t(cell) + size_t(x % cell);
+            sum[k] += double(test[i]) - double(reference[i]);
+            ++count[k];
+        }
+    std::vector<double> means;
+    for (size_t k = 0; k < sum.size(); ++k)
+        if (count[k] > 0) means.push_back(sum[k] / double(count[k]));
+    if (means.empty()) return std::numeric_limits<double>::quiet_NaN();
+    double mean = 0.0;
+    for (double m : means) mean += m;
+    mean /= double(means.size());
+    double var = 0.0;
+    for (double m : means) var += (m - mean) * (m - mean);
+    return std::sqrt(var / double(means.size()));
+}
+
+double occluded_bias(const std::vector<float>& test, const std::vector<float>& reference,
+                     const std::vector<uint8_t>& geometry, double below) {
+    double sum = 0.0;
+    size_t n = 0;
+    for (size_t i = 0; i < test.size(); ++i)
+        if (geometry[i] && reference[i] < below && std::isfinite(test[i])) {
+            sum += double(test[i]) - double(reference[i]);
+            ++n;
+        }
+    return n ? sum / double(n) : std::numeric_limits<double>::quiet_NaN();
+}
+
 }  // namespace metrics

@@ -64,6 +64,20 @@ bool compute_split(const Inputs& in, const std::vector<float>& limit, const std:
 // Text tables and CSV rows. The CSV's last column, `against`, names what the
 // row compares: "V_R" (the tested image against the reference), "limit" (the
 // tested image against the limit) or "limit_vs_V_R" (the limit against V_R).
+// The fixed-pattern ("stipple") figure: the error (test - reference) averaged
+// separately at each of the cell x cell positions of a tile of pixels, and the
+// spread (standard deviation) of those means. A rotation pattern that repeats
+// every `cell` pixels shows as a spread well above what noise and content
+// leave. Pixels where `geometry` is 0 are left out.
+double cell_spread(const std::vector<float>& test, const std::vector<float>& reference,
+                   const std::vector<uint8_t>& geometry, int width, int height, int cell = 8);
+
+// Mean of (test - reference) over the geometry pixels whose reference AO is
+// below `below`: the bias in the occluded places (contact shadows, creases),
+// which the image's mean hides among the open ones. NaN when there is none.
+double occluded_bias(const std::vector<float>& test, const std::vector<float>& reference,
+                     const std::vector<uint8_t>& geometry, double below = 0.5);
+
 std::string table(const std::vector<Stats>& s);
 std::string split_table(const Split& s);
 std::string csv_header();

@@ -271,4 +271,34 @@ TEST_CASE("a truncated EXR is refused with a sentence, and nothing it allocated 
     std::filesystem::remove_all(dir);
 }
 
+TEST_CASE("cell spread: a pattern that repeats every 8 pixels, against noise-free and evenly spread errors") {
+    const int w = 64, h = 48;
+    const size_t n = size_t(w) * size_t(h);
+    const std::vector<float> ref(n, 0.5f);
+    const std::vector<uint8_t> geometry(n, 1);
+    // The same error everywhere: no pattern at all.
+    CHECK(metrics::cell_spread(std::vector<float>(n, 0.6f), ref, geometry, w, h) == doctest::Approx(0.0).epsilon(1e-9));
+    // +0.1 at the even positions of the 8-pixel tile, -0.1 at the odd ones: a spread of 0.1.
+    std::vector<float> tiled(n);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) tiled[size_t(y) * w + x] = 0.5f + (((x % 8) + (y % 8)) % 2 ? -0.1f : 0.1f);
+    CHECK(metrics::cell_spread(tiled, ref, geometry, w, h) == doctest::Approx(0.1).epsilon(1e-5));
+    // A pattern whose period is not the cell's averages out over the tiles.
+    std::vector<float> other(n);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) other[size_t(y) * w + x] = 0.5f + ((x / 8) % 2 ? -0.1f : 0.1f);
+    CHECK(metrics::cell_spread(other, ref, geometry, w, h) < 1e-6);
+    // Sky is left out: a tiled error only on sky pixels counts for nothing.
+    std::vector<uint8_t> half(n, 1);
+    for (size_t i = 0; i < n; ++i) half[i] = tiled[i] < 0.5f;
+    CHECK(metrics::cell_spread(tiled, ref, half, w, h) == doctest::Approx(0.0).epsilon(1e-9));
+}
+
+TEST_CASE("occluded bias: the mean error where the reference is below 0.5, NaN where there is none") {
+    const std::vector<float> ref = {0.2f, 0.4f, 0.9f, 0.3f};
+    const std::vector<float> test = {0.3f, 0.6f, 0.5f, 0.0f};
+    CHECK(metrics::occluded_bias(test, ref, {1, 1, 1, 0}) == doctest::Approx((0.1 + 0.2) / 2).epsilon(1e-6));
+    CHECK(std::isnan(metrics::occluded_bias(test, ref, {0, 0, 1, 0})));
+}
+
 }  // TEST_SUITE
