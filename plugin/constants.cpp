@@ -42,6 +42,19 @@ SsaoFrame make_frame_block(const ssao_settings& s, const AnalysedInputs& in) {
     // FRAME_NOISE); zero otherwise, so the block of a frame without them does
     // not change from frame to frame.
     frame.u_fade = {{s.fade_start, s.fade_end, s.radius_pixels, 0.0f}};
+    const ViewFromZ vz = view_from_z(proj, in.viewport[2], in.viewport[3]);
+    frame.u_vz_mul_z = {{static_cast<float>(vz.mul_z[0][0]), static_cast<float>(vz.mul_z[0][1]),
+                         static_cast<float>(vz.mul_z[1][0]), static_cast<float>(vz.mul_z[1][1])}};
+    frame.u_vz_mul_1 = {{static_cast<float>(vz.mul_1[0][0]), static_cast<float>(vz.mul_1[0][1]),
+                         static_cast<float>(vz.mul_1[1][0]), static_cast<float>(vz.mul_1[1][1])}};
+    frame.u_vz_add = {{static_cast<float>(vz.add_z.x), static_cast<float>(vz.add_z.y), static_cast<float>(vz.add_1.x),
+                       static_cast<float>(vz.add_1.y)}};
+    frame.u_z_clip = {{static_cast<float>(vz.w_z), static_cast<float>(vz.w_1), static_cast<float>(vz.z_z),
+                       static_cast<float>(vz.z_1)}};
+    // Clip z with view x or y terms (an oblique near plane): view z is not a
+    // function of the depth alone, the upsample reads it through the inverse.
+    const bool oblique = proj.proj[0][2] != 0.0 || proj.proj[1][2] != 0.0;
+    frame.u_z_det = {{static_cast<float>(1.0 / std::abs(vz.det)), oblique ? 1.0f : 0.0f, 0.0f, 0.0f}};
     if (in.frame_index != 0) {
         const glm::dvec2 off = frame_noise_offsets(in.frame_index);
         const double turn = off.x * 6.283185307179586;

@@ -59,20 +59,29 @@ uint32_t sampling_feature_variant(const ssao_settings& s, const AnalysedInputs& 
     return v;
 }
 
+// The textures of the grid pass: its view z (R32F, what each march step
+// reads) and its normal (RGBA32F, read once per pixel).
+struct GridTextures {
+    TexRef z, normal;
+};
+
 // The grid pass: one picked texel per scale x scale block (scale 1: every
-// pixel) -> RGBA32F (depth as stored, view-space normal). It runs below full
-// resolution, for multisampled inputs (it reads one sample, so no later pass
-// sees the multisampled textures) and when normals come from depth (it
-// rebuilds them once, not in every sampling step).
-TexRef add_grid_pass(Builder& b, const AnalysedInputs& in, int scale, const Rect& low) {
-    const TexRef grid = TexRef::of(Source::intermediate, b.intermediate(low.width, low.height, TexFormat::rgba32f));
-    Pass& down = b.add(PassKind::downsample, ProgramId::downsample, grid, low);
+// pixel) -> R32F view z and RGBA32F view-space normal, in one draw to two
+// targets. It runs below full resolution, for multisampled inputs (it reads
+// one sample, so no later pass sees the multisampled textures) and when
+// normals come from depth (it rebuilds them once, not in every sampling step).
+GridTextures add_grid_pass(Builder& b, const AnalysedInputs& in, int scale, const Rect& low) {
+    GridTextures g;
+    g.z = TexRef::of(Source::intermediate, b.intermediate(low.width, low.height, TexFormat::r32f));
+    g.normal = TexRef::of(Source::intermediate, b.intermediate(low.width, low.height, TexFormat::rgba32f));
+    Pass& down = b.add(PassKind::downsample, ProgramId::downsample, g.z, low);
+    down.target2 = g.normal;
     down.inputs[SSAO_UNIT_DEPTH] = TexRef::of(Source::depth);
     if (!in.normals_from_depth) down.inputs[SSAO_UNIT_NORMAL] = TexRef::of(Source::normal);
     down.scale = scale;
     down.variant = host_input_variant(in) | (in.normals_from_depth ? variant::normals_from_depth : 0u);
     down.sample_index = in.sample_index;
-    return grid;
+    return g;
 }
 
 // On the grid: [grid pass ->] AO -> [blur x -> [blur y]], ceil(w/scale) x
@@ -92,7 +101,7 @@ void plan_sampling(Builder& b, const ssao_settings& s, const AnalysedInputs& in,
     const ProgramId estimator = s.method == SSAO_METHOD_VISIBILITY ? ProgramId::visibility : ProgramId::ao;
 
     const bool grid = reduced || in.multisample || in.normals_from_depth;
-    const TexRef grid_tex = grid ? add_grid_pass(b, in, scale, low) : TexRef{};
+    const GridTextures grid_tex = grid ? add_grid_pass(b, in, scale, low) : GridTextures{};
 
     // Where the last pass on the grid writes: the output at full resolution,
     // else an intermediate for the upsample.
@@ -101,8 +110,8 @@ void plan_sampling(Builder& b, const ssao_settings& s, const AnalysedInputs& in,
     const TexRef ao_target =
         ao_to_output ? output : TexRef::of(Source::intermediate, b.intermediate(lw, lh, TexFormat::rg32f));
     Pass& ao = b.add(PassKind::ao, estimator, ao_target, ao_to_output ? final_rect : low);
-    ao.inputs[SSAO_UNIT_DEPTH] = grid ? grid_tex : TexRef::of(Source::depth);
-    ao.inputs[SSAO_UNIT_NORMAL] = grid ? grid_tex : TexRef::of(Source::normal);
+    ao.inputs[SSAO_UNIT_DEPTH] = grid ? grid_tex.z : TexRef::of(Source::depth);
+    ao.inputs[SSAO_UNIT_NORMAL] = grid ? grid_tex.normal : TexRef::of(Source::normal);
     ao.inputs[SSAO_UNIT_NOISE] = TexRef::of(Source::noise);
     ao.scale = scale;
     ao.variant = (grid ? variant::grid_input : 0u) | sampling_feature_variant(s, in);
@@ -178,10 +187,10 @@ bool plan_normals_view(Builder& b, const ssao_settings& s, const AnalysedInputs&
     if (!is_normals_view(s)) return false;
     AnalysedInputs grid_in = in;
     if (s.debug_view == SSAO_DEBUG_VIEW_RECONSTRUCTED_NORMALS) grid_in.normals_from_depth = true;
-    const TexRef grid = add_grid_pass(b, grid_in, 1, Rect{0, 0, in.viewport[2], in.viewport[3]});
+    const GridTextures grid = add_grid_pass(b, grid_in, 1, Rect{0, 0, in.viewport[2], in.viewport[3]});
     Pass& view = b.add(PassKind::ao, ProgramId::normals_view, output, final_rect);
-    view.inputs[SSAO_UNIT_DEPTH] = grid;
-    view.inputs[SSAO_UNIT_NORMAL] = grid;
+    view.inputs[SSAO_UNIT_DEPTH] = grid.z;
+    view.inputs[SSAO_UNIT_NORMAL] = grid.normal;
     view.variant = variant::grid_input;
     return true;
 }

@@ -25,7 +25,7 @@
 // Limits to know: a pass samples at most SSAO_UNITS_USED (4) units, the ones
 // the state guard saves and the ABI documents; an intermediate of a new
 // format needs its TexFormat here and its GL triple in resources.cpp
-// (gl_format); a pass writes one colour target.
+// (gl_format); a pass writes one colour target, or two (target2).
 #pragma once
 
 #include "inputs.h"
@@ -92,7 +92,8 @@ constexpr int kBits = 8;
 // Formats of the textures the plan renders into.
 enum class TexFormat : uint8_t {
     rg32f,  // intermediate: (ao, view z) for the next pass
-    rgba32f,  // intermediate: the downsample's (depth as stored, view-space normal) per block
+    rgba32f,  // intermediate: the grid pass's view-space normal (xyz, 0) per block
+    r32f,     // intermediate: the grid pass's view z per block (SKY_Z for the sky)
     r8,     // owned output, SSAO_OUTPUT_R8
     r16f,   // owned output, SSAO_OUTPUT_R16F
     rgba8,  // owned output of the normal debug views: n * 0.5 + 0.5 in RGB, alpha 1
@@ -129,6 +130,9 @@ struct Pass {
     // samples the texture it renders into.
     TexRef inputs[SSAO_UNITS_USED] = {};
     TexRef target;
+    // A second colour target (attachment 1, fragment output location 1) or
+    // none: the grid pass writes its view z and its normal in one draw.
+    TexRef target2;
     Rect rect;               // where it draws in its target: origin and size, in target texels
     bool pack_depth = false; // writes (ao, view z) for a following pass instead of the final AO
     int direction[2] = {0, 0};  // blur direction (u_blur_dir)

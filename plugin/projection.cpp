@@ -116,6 +116,34 @@ ssao_status analyse_projection(const float m[16], ssao_clip_range clip, Projecti
     return SSAO_OK;
 }
 
+ViewFromZ view_from_z(const ProjectionInfo& p, int viewport_width, int viewport_height) {
+    const glm::dmat4& m = p.proj;  // m[column][row]
+    ViewFromZ c;
+    c.w_z = m[2][3];
+    c.w_1 = m[3][3];
+    c.z_z = m[2][2];
+    c.z_1 = m[3][2];
+    c.det = c.z_z * c.w_1 - c.z_1 * c.w_z;
+    // ndc.xy * w = M2 * xy + m2xy * z + m3xy (w independent of x, y), so
+    // xy = M2^-1 (ndc * (w_z z + w_1) - m2xy z - m3xy), with ndc = px * s - 1.
+    const glm::dmat2 m2(m[0][0], m[0][1], m[1][0], m[1][1]);
+    const glm::dmat2 inv = glm::inverse(m2);
+    const glm::dmat2 scale(2.0 / viewport_width, 0.0, 0.0, 2.0 / viewport_height);
+    const glm::dvec2 m2xy(m[2][0], m[2][1]), m3xy(m[3][0], m[3][1]);
+    const glm::dvec2 inv_one = inv * glm::dvec2(1.0, 1.0);
+    c.mul_z = c.w_z * (inv * scale);
+    c.add_z = -c.w_z * inv_one - inv * m2xy;
+    c.mul_1 = c.w_1 * (inv * scale);
+    c.add_1 = -c.w_1 * inv_one - inv * m3xy;
+    return c;
+}
+
+glm::dvec3 view_position_from_z(const ViewFromZ& c, double px_x, double px_y, double view_z) {
+    const glm::dvec2 px(px_x, px_y);
+    const glm::dvec2 xy = (c.mul_z * px + c.add_z) * view_z + (c.mul_1 * px + c.add_1);
+    return glm::dvec3(xy, view_z);
+}
+
 glm::dvec3 view_position(const ProjectionInfo& p, double ndc_x, double ndc_y, double depth) {
     const double ndc_z = p.ndc_per_depth == 2.0 ? depth * 2.0 - 1.0 : depth;
     const glm::dvec4 v = p.inverse * glm::dvec4(ndc_x, ndc_y, ndc_z, 1.0);

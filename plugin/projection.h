@@ -31,6 +31,24 @@ struct ProjectionInfo {
 ssao_status analyse_projection(const float m[16], ssao_clip_range clip, ProjectionInfo& out,
                                std::string& why);
 
+// View position from view z by multiply-adds (after XeGTAO's NDCToViewMul/Add):
+// for viewport pixel coordinates px (a pixel's centre is +0.5),
+//   view xy = (mul_z * px + add_z) * z + (mul_1 * px + add_1).
+// Exact for every projection analyse_projection accepts (clip w does not
+// depend on view x or y: w = w_z * z + w_1), off-centre and sheared ones
+// included: perspective has mul_1 = 0 (xy proportional to z, plus a constant
+// only for a translated frustum), orthographic mul_z = add_z = 0. mat2s are
+// column-major ([column][row]), as GLSL's.
+struct ViewFromZ {
+    glm::dmat2 mul_z{0.0}, mul_1{0.0};
+    glm::dvec2 add_z{0.0}, add_1{0.0};
+    // Depth-step constants: clip w = w_z * z + w_1, clip z = z_z * z + z_1;
+    // d(ndc z)/d(view z) = det / w^2 with det = z_z * w_1 - z_1 * w_z.
+    double w_z = 0.0, w_1 = 0.0, z_z = 0.0, z_1 = 0.0, det = 0.0;
+};
+ViewFromZ view_from_z(const ProjectionInfo& p, int viewport_width, int viewport_height);
+glm::dvec3 view_position_from_z(const ViewFromZ& c, double px_x, double px_y, double view_z);
+
 // The depth-buffer value d -> view-space position at NDC (x, y), as the shader does.
 glm::dvec3 view_position(const ProjectionInfo& p, double ndc_x, double ndc_y, double depth);
 // The depth-buffer value of a view-space point (for tests and tools).

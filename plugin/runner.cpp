@@ -33,12 +33,14 @@ public:
     // which are never rendered into, so it is left as it is when unused.
     void bind_for(const Pass& pass, const PlanTextures& t) {
         const GLuint target = t.resolve(pass.target);
+        const GLuint target2 = t.resolve(pass.target2);  // 0 when none: never a texture a unit holds known
         for (GLuint u = 0; u < SSAO_UNITS_USED; ++u) {
             const bool sampled = pass.inputs[u].source != TexRef::Source::none;
             const bool sampled_2d = sampled && t.target_of(pass.inputs[u]) == GL_TEXTURE_2D;
             if (sampled && !sampled_2d) bind(u, kMs, t.resolve(pass.inputs[u]));
             const GLuint want = sampled_2d ? t.resolve(pass.inputs[u]) : 0;
-            if (sampled_2d || !known_[u][k2d] || texture_[u][k2d] == target) bind(u, k2d, want);
+            const bool renders_into = texture_[u][k2d] == target || (target2 != 0 && texture_[u][k2d] == target2);
+            if (sampled_2d || !known_[u][k2d] || renders_into) bind(u, k2d, want);
         }
     }
 
@@ -69,6 +71,16 @@ void clear_to_one(const GladGLContext& gl, const Pass& pass) {
     const GLfloat one[4] = {1.0f, 1.0f, 1.0f, 1.0f};
     gl.ClearBufferfv(GL_COLOR, 0, one);
     gl.Disable(GL_SCISSOR_TEST);
+}
+
+// Attachment 1 of the library's framebuffer: `texture` written by fragment
+// output 1 beside attachment 0, or (0) detached with only attachment 0 drawn.
+// The draw-buffer list is the library's framebuffer's own state, not the host's.
+void set_second_target(const GladGLContext& gl, GLuint texture) {
+    static const GLenum one[1] = {GL_COLOR_ATTACHMENT0};
+    static const GLenum two[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+    gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, texture, 0);
+    gl.DrawBuffers(texture != 0 ? 2 : 1, texture != 0 ? two : one);
 }
 
 void draw(const ssao_context& ctx, const Pass& pass) {
@@ -105,6 +117,7 @@ void run_plan(ssao_context& ctx, const FramePlan& plan, const PlanTextures& text
             const PassGroup group(ctx, pass_name(pass.kind));
             gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D,
                                     textures.resolve(pass.target), 0);
+            set_second_target(gl, textures.resolve(pass.target2));
             if (pass.program == ProgramId::none) {
                 clear_to_one(gl, pass);
             } else {

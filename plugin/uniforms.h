@@ -12,5 +12,5 @@ struct ivec4 { int32_t v[4]; };
 
 #include <ssao_constants.h>
 
-static_assert(sizeof(SsaoFrame) == 3 * 64 + 4 * 16 + 6 * 16, "SsaoFrame must match its std140 layout");
+static_assert(sizeof(SsaoFrame) == 3 * 64 + 4 * 16 + 11 * 16, "SsaoFrame must match its std140 layout");
 static_assert(sizeof(SsaoKernel) == SSAO_MAX_KERNEL * 16, "SsaoKernel must match its std140 layout");

@@ -23,12 +23,11 @@ void main() {
         ivec2 spx;
         if (!project_to_texel(s, spx)) continue;          // behind the eye or off screen: unknown, not counted
         valid += 1.0;
-        float sd = fetch_depth(spx);
-        if (is_sky(sd)) continue;                         // the sky occludes nothing
-        vec4 Qw = view_position_w(spx, sd);
-        vec3 Q = Qw.xyz;
+        vec3 Q;
+        float q_step;
+        if (!texel_surface(spx, Q, q_step)) continue;     // the sky occludes nothing
         vec3 sn = snap_to_texel_ray(s, n, Q, ortho);
-        float bias = u_ao.y * sf.radius_scale + u_ao.z * (step_p + depth_step(Qw, sd));
+        float bias = u_ao.y * sf.radius_scale + u_ao.z * (step_p + q_step);
         // The chapter's range check smoothstep(0, 1, radius / |dz|), which is 1
         // for |dz| <= radius: written so that dz = 0 divides nothing.
         float dz = abs(P.z - Q.z);

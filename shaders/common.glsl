@@ -42,15 +42,18 @@ ivec2 grid_pixel(ivec2 t) {
     return min(t * u_scale + o, u_viewport.zw - 1);
 }
 
-// Depth of grid texel t: the host's depth texture, or (variant GRID_INPUT:
-// below full resolution, multisampled inputs, normals from depth) the grid
-// pass's texture, whose red channel is the picked pixel's depth copied bit
-// for bit.
-#ifdef SSAO_GRID_INPUT
-float fetch_depth(ivec2 t) { return texelFetch(u_depth_tex, t, 0).r; }
-#else
+// The host's depth at grid texel t (read only where the sampling passes read
+// the host's textures directly: full resolution, single sample, stored
+// normals; variant GRID_INPUT reads view z instead: texel_surface below).
 float fetch_depth(ivec2 t) { return input_depth(t); }
-#endif
+
+// The grid pass stores view z (R32F) and the AO pass hands the blur and the
+// upsample its view z beside the AO (RG32F), so a later pass fetches one
+// value per texel and rebuilds nothing through the inverse projection. The
+// sky (and a depth whose position is not finite) carries this marker instead.
+const float SKY_Z = 3.0e38;
+
+bool finite3(vec3 v) { return all(lessThan(abs(v), vec3(3.0e38))) && !any(isnan(v)); }
 
 // The far plane (cleared depth) in either convention: exact comparison, since
 // a cleared buffer holds exactly the clear value.
@@ -71,6 +74,59 @@ vec4 view_position_at(vec2 vp, float d) {
 // Of grid texel t (its picked pixel's centre) holding depth d.
 vec4 view_position_w(ivec2 t, float d) { return view_position_at(vec2(grid_pixel(t)) + 0.5, d); }
 
+// View position at viewport pixel coordinates px with view z z: two
+// multiply-adds per coordinate (plugin/projection.h ViewFromZ; exact for
+// every accepted projection: perspective, orthographic, off-centre, reverse-Z,
+// infinite far).
+vec3 view_position_from_z(vec2 px, float z) {
+    vec2 xy = (mat2(u_vz_mul_z.xy, u_vz_mul_z.zw) * px + u_vz_add.xy) * z +
+              (mat2(u_vz_mul_1.xy, u_vz_mul_1.zw) * px + u_vz_add.zw);
+    return vec3(xy, z);
+}
+
+// depth_step below for a point at view z z, from z alone: clip w = w_z z + w_1
+// and clip z = z_z z + z_1 (u_z_clip), so d(view z)/d(ndc z) = w^2 / |det|
+// (u_z_det), and the stored depth (for the ulp of a float format) is
+// clip z / w in the clip range's convention.
+float depth_step_z(float z) {
+    float w = u_z_clip.x * z + u_z_clip.y;
+    float ulp = u_depth.y;
+    if (ulp == 0.0) {
+        float ndc = (u_z_clip.z * z + u_z_clip.w) / w;
+        float d = u_ao2.w == 2.0 ? ndc * 0.5 + 0.5 : ndc;
+        ulp = max(abs(d) * 1.1920929e-7, 1.1754944e-38);
+        if (u_ao2.w == 2.0) ulp = max(ulp, abs(ndc) * 0.5 * 1.1920929e-7);
+    }
+    return w * w * u_z_det.x * u_ao2.w * ulp;
+}
+
+// The view z of viewport pixel p holding depth d. Where clip z depends on view
+// z alone (every projection but an oblique near plane's, u_z_det.y = 0) it
+// inverts ndc z = (z_z z + z_1) / (w_z z + w_1): a division, not the inverse
+// projection's matrix product.
+float view_z_of_depth(ivec2 p, float d) {
+    if (u_z_det.y != 0.0) return view_position_at(vec2(p) + 0.5, d).z;
+    float ndc = ndc_z_of(d);
+    return (u_z_clip.w - ndc * u_z_clip.y) / (ndc * u_z_clip.x - u_z_clip.z);
+}
+
+// A surface texel the sampling passes read: its view position and the view-z
+// change of one depth-format step there. False for the sky (and a depth whose
+// position is not finite, which the grid pass stores as sky). Variant
+// GRID_INPUT (below full resolution, multisampled inputs, normals from depth):
+// one 4-byte view z from the grid pass's R32F texture, the position by
+// multiply-adds. Else the host's depth through the inverse projection.
+#ifdef SSAO_GRID_INPUT
+bool texel_surface(ivec2 t, out vec3 P, out float step) {
+    float z = texelFetch(u_depth_tex, t, 0).r;
+    P = view_position_from_z(vec2(grid_pixel(t)) + 0.5, z);
+    step = 0.0;
+    if (z == SKY_Z) return false;
+    step = depth_step_z(z);
+    return true;
+}
+#endif
+
 // View-space z change for one step of the depth format at depth d, from the
 // point p = view_position_w(px, d): |dz/d(ndc)| * d(ndc)/d(depth) * step.
 // Analytic: with v = inv_proj * ndc, z = v.z / v.w and
@@ -89,7 +145,14 @@ float depth_step(vec4 p, float d) {
     return abs(dz_dndc) * u_ao2.w * ulp;
 }
 
-// The AO pass hands the blur its view z beside the AO (the intermediate
-// targets are RG32F), so the blur fetches one texel per tap and rebuilds
-// nothing. Sky carries this marker instead of a depth.
-const float SKY_Z = 3.0e38;
+#ifndef SSAO_GRID_INPUT
+bool texel_surface(ivec2 t, out vec3 P, out float step) {
+    float d = fetch_depth(t);
+    vec4 Pw = view_position_w(t, d);
+    P = Pw.xyz;
+    step = 0.0;
+    if (is_sky(d)) return false;
+    step = depth_step(Pw, d);
+    return true;
+}
+#endif

@@ -1,10 +1,14 @@
 // The grid pass: for each block of u_scale x u_scale viewport pixels (scale
-// 1: every pixel), one real pixel of it (grid_pixel, common.glsl) - its depth
-// copied bit for bit, never an average, so no depth floats in the gap of a
-// silhouette and the sky keeps its exact clear value - and its normal in view
+// 1: every pixel), one real pixel of it (grid_pixel, common.glsl) - its view
+// z, never an average, so no depth floats in the gap of a silhouette - and its normal in view
 // space: the host's decoded (unit length; zero when broken) or, variant
 // NORMALS_FROM_DEPTH, rebuilt from the host's depth around the picked pixel.
-// Output RGBA32F: (depth as stored, normal xyz).
+// Two outputs (one framebuffer, two colour attachments): R32F view z of the
+// picked pixel (SKY_Z for the sky and for a depth whose position is not
+// finite), what every march step reads, 4 bytes; and RGBA32F (normal xyz, 0),
+// read once per pixel by the sampling pass.
+
+layout(location = 1) out vec4 o_normal;
 
 #ifdef SSAO_NORMALS_FROM_DEPTH
 // Viewport pixel q's depth, when q lies inside the viewport and holds a
@@ -97,5 +101,6 @@ void main() {
         n = decode_raw_normal(input_normal(p), n) ? normalize(n) : vec3(0.0);
 #endif
     }
-    o_ao = vec4(d, n);
+    o_ao = vec4(is_sky(d) || !finite3(P) ? SKY_Z : P.z, 0.0, 0.0, 1.0);
+    o_normal = vec4(n, 0.0);
 }

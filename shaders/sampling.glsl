@@ -10,7 +10,7 @@ uniform sampler2D u_normal_tex;
 uniform sampler2D u_noise_tex;
 uniform bool u_pack_depth;  // writing the blur's RG32F input: (ao, view z)
 
-out vec4 o_ao;
+layout(location = 0) out vec4 o_ao;
 
 vec4 result(float ao, float z) { return u_pack_depth ? vec4(ao, z, 0.0, 1.0) : vec4(ao, ao, ao, 1.0); }
 
@@ -20,8 +20,6 @@ vec3 input_normal(ivec2 vpx) { return texelFetch(u_normal_tex, vpx + u_viewport.
 #else
 vec3 input_normal(ivec2 vpx) { return texelFetch(u_normal_tex, vpx + u_viewport.xy, 0).xyz; }
 #endif
-
-bool finite3(vec3 v) { return all(lessThan(abs(v), vec3(3.0e38))) && !any(isnan(v)); }
 
 // The stored normal `stored` in view space, scaled so that its largest
 // component is 1 (not yet unit length); false when it is zero, NaN or infinite.
@@ -63,10 +61,11 @@ vec3 decode_normal(vec3 stored, vec3 to_eye) {
 
 // The normal of grid texel t before it is turned towards the camera; false
 // when it is broken. From the grid (variant GRID_INPUT) the grid pass has
-// decoded it already (the picked pixel's unit normal, or zero for a broken one).
+// decoded it already into its own texture (the picked pixel's unit normal,
+// or zero for a broken one).
 bool raw_normal(ivec2 t, out vec3 n) {
 #ifdef SSAO_GRID_INPUT
-    n = texelFetch(u_normal_tex, t, 0).yzw;
+    n = texelFetch(u_normal_tex, t, 0).xyz;
     return dot(n, n) > 0.5;
 #else
     return decode_raw_normal(input_normal(t), n);
@@ -98,9 +97,28 @@ float pixel_hash(uvec2 p, uint seed) {
     return float(w >> 8) * (1.0 / 16777216.0);
 }
 
+// Below full resolution a grid texel spans u_scale viewport pixels, so the
+// 4x4 tile would repeat every 4 u_scale pixels: a fixed stipple on the
+// screen that the upsample cannot hide. There each 4x4 tile of the grid gets
+// its own turn (a hash of the tile: cos, sin) and its own jitter shift, so
+// the 16 rotations and offsets stay stratified within a tile and no pattern
+// repeats. At full resolution the tile is used as it is (0 turn, 0 shift).
+vec3 tile_scramble(ivec2 vpx) {
+    if (u_scale == 1) return vec3(1.0, 0.0, 0.0);
+#ifdef EXP_NO_SCRAMBLE
+    return vec3(1.0, 0.0, 0.0);
+#endif
+    uvec2 tile = uvec2(vpx >> 2);
+    float a = pixel_hash(tile, uint(u_counts.y) ^ 0x68e31da4u) * 6.28318530718;
+    return vec3(cos(a), sin(a), pixel_hash(tile.yx, uint(u_counts.y) ^ 0xb5297a4du));
+}
+
 vec2 fixed_rotation(ivec2 vpx) {
-    if (u_modes.y == SSAO_SHADER_ROTATION_NOISE)
-        return texelFetch(u_noise_tex, vpx & (SSAO_NOISE_SIZE - 1), 0).xy;  // tiles from the viewport's corner
+    if (u_modes.y == SSAO_SHADER_ROTATION_NOISE) {
+        vec2 r = texelFetch(u_noise_tex, vpx & (SSAO_NOISE_SIZE - 1), 0).xy;  // tiles from the viewport's corner
+        vec3 turn = tile_scramble(vpx);
+        return vec2(r.x * turn.x - r.y * turn.y, r.x * turn.y + r.y * turn.x);
+    }
     if (u_modes.y == SSAO_SHADER_ROTATION_HASH) {
         float a = pixel_hash(uvec2(vpx), uint(u_counts.y)) * 6.28318530718;
         return vec2(cos(a), sin(a));
@@ -128,7 +146,8 @@ float fixed_step_jitter(ivec2 vpx) {
     if (u_modes.y == SSAO_SHADER_ROTATION_NOISE) {
         const int bayer[16] = int[16](0, 8, 2, 10, 12, 4, 14, 6, 3, 11, 1, 9, 15, 7, 13, 5);
         ivec2 t = vpx & 3;
-        return (float(bayer[t.y * 4 + t.x]) + 0.5) / 16.0;
+        float j = (float(bayer[t.y * 4 + t.x]) + 0.5) / 16.0;
+        return u_scale == 1 ? j : fract(j + tile_scramble(vpx).z);
     }
     if (u_modes.y == SSAO_SHADER_ROTATION_HASH)
         return pixel_hash(uvec2(vpx.yx), uint(u_counts.y) ^ 0x5bd1e995u) * 0.9999 + 0.00005;
@@ -174,18 +193,15 @@ struct Surface {
 };
 
 #ifdef SSAO_RADIUS_PIXELS
-// View-space size of one viewport pixel at the point Pw (view_position_w:
-// xyz the position, w the reconstruction's homogeneous w): how far the
-// reconstructed position moves per NDC unit along x and along y at the same
-// depth value (d/dndc of inv_proj * ndc / w, analytic), times one pixel's
-// NDC extent (2 / viewport size); the geometric mean of the two. Pixels are
-// the viewport's, also on a half or quarter resolution grid. From the
-// inverse projection, so orthographic (constant size) and off-centre
-// frusta come out right.
-float pixel_size_at(vec4 Pw) {
-    vec3 dx = (u_inv_proj[0].xyz - Pw.xyz * u_inv_proj[0].w) / Pw.w;
-    vec3 dy = (u_inv_proj[1].xyz - Pw.xyz * u_inv_proj[1].w) / Pw.w;
-    return sqrt(length(dx) * (2.0 / float(u_viewport.z)) * length(dy) * (2.0 / float(u_viewport.w)));
+// View-space size of one viewport pixel at view z z: how far the position
+// moves per viewport pixel along x and along y at that view z (the columns of
+// d(view xy)/d(px) = mul_z z + mul_1, common.glsl view_position_from_z); the
+// geometric mean of the two. Pixels are the viewport's, also on a half or
+// quarter resolution grid. From the projection's own coefficients, so
+// orthographic (constant size) and off-centre frusta come out right.
+float pixel_size_at(float z) {
+    mat2 d = mat2(u_vz_mul_z.xy, u_vz_mul_z.zw) * z + mat2(u_vz_mul_1.xy, u_vz_mul_1.zw);
+    return sqrt(length(d[0]) * length(d[1]));
 }
 #endif
 
@@ -207,11 +223,8 @@ float apply_fade(float ao, vec3 P) {
 bool load_surface(out Surface sf) {
     sf.vpx = ivec2(gl_FragCoord.xy) - u_target_origin;
     ivec2 px = sf.vpx;
-    float d = fetch_depth(px);
-    vec4 Pw = view_position_w(px, d);
-    sf.P = Pw.xyz;
     sf.ortho = u_depth.w > 0.5;
-    if (is_sky(d) || !finite3(sf.P)) return false;
+    if (!texel_surface(px, sf.P, sf.step) || !finite3(sf.P)) return false;
     vec3 to_eye = sf.ortho ? vec3(0.0, 0.0, 1.0) : normalize(-sf.P);
     sf.n = load_normal(px, to_eye);
     vec3 b1, b2;
@@ -219,13 +232,12 @@ bool load_surface(out Surface sf) {
     vec2 r = rotation(sf.vpx);
     vec3 T = r.x * b1 + r.y * b2;
     sf.TBN = mat3(T, cross(sf.n, T), sf.n);
-    sf.step = depth_step(Pw, d);
     sf.radius = u_ao.x;
     sf.radius_scale = 1.0;
 #ifdef SSAO_RADIUS_PIXELS
     // radius_pixels (u_fade.z) pixels at this depth, at most `radius`; a
     // degenerate size (NaN) keeps `radius`.
-    float pixels = u_fade.z * pixel_size_at(Pw);
+    float pixels = u_fade.z * pixel_size_at(sf.P.z);
     sf.radius = pixels < u_ao.x ? pixels : u_ao.x;
     sf.radius_scale = sf.radius / u_ao.x;
 #endif

@@ -71,6 +71,12 @@ SSAO_BLOCK(SsaoFrame) {
                                   the variants FADE and RADIUS_PIXELS */
     SSAO_VEC4 u_frame;         /* (1.2) variant FRAME_NOISE: cos and sin of frame_index's rotation offset,
                                   its step-jitter offset in [0,1), 0 */
+    SSAO_VEC4 u_vz_mul_z;      /* view xy from view z (plugin/projection.h ViewFromZ): mat2 mul_z, column-major */
+    SSAO_VEC4 u_vz_mul_1;      /* mat2 mul_1, column-major */
+    SSAO_VEC4 u_vz_add;        /* add_z.xy, add_1.xy: xy = (mul_z px + add_z) z + (mul_1 px + add_1) */
+    SSAO_VEC4 u_z_clip;        /* clip w = x * z + y, clip z = z * z + w (the depth step from view z) */
+    SSAO_VEC4 u_z_det;         /* 1 / |z_z w_1 - z_1 w_z| (d(view z)/d(ndc z) = w^2 times it),
+                                  1 when clip z has view x or y terms (oblique near plane) else 0, 0, 0 */
 }
 SSAO_BLOCK_END
 

@@ -24,6 +24,12 @@
 // than the thickness: one such texel would shade the whole disc of pixels
 // whose marches cross it (hard case "normals: zero, NaN, ...").
 float surface_in_front(vec3 s, vec3 Q, ivec2 spx, Surface sf) {
+#ifdef EXP_SNAP
+    return Q.z - snap_to_texel_ray(s, sf.n, Q, sf.ortho).z;
+#endif
+#ifdef EXP_PLAIN
+    return Q.z - s.z;
+#endif
     vec3 to_eye_q = sf.ortho ? vec3(0.0, 0.0, 1.0) : normalize(-Q);
     vec3 nq;
     if (!raw_normal(spx, nq) || !(dot(nq, to_eye_q) > 0.0)) return Q.z - snap_to_texel_ray(s, sf.n, Q, sf.ortho).z;
@@ -59,15 +65,20 @@ void main() {
         vec4 clip_dir = u_proj * vec4(dir, 0.0);
         bool blocked = false;
         for (int j = 0; j < steps && !blocked; ++j) {
+#ifdef EXP_QUAD
+            float u = (float(j) + jitter) / float(steps);
+            float t = radius * u * u;
+#else
             float t = radius * (float(j) + jitter) / float(steps);
+#endif
             vec3 s = sf.P + dir * t;
             ivec2 spx;
             if (!clip_to_texel(clip_p + clip_dir * t, spx)) continue;  // unknown: open
-            float sd = fetch_depth(spx);
-            if (is_sky(sd)) continue;                       // the sky blocks nothing
-            vec4 Qw = view_position_w(spx, sd);
-            float bias = u_ao.y * sf.radius_scale + u_ao.z * (sf.step + depth_step(Qw, sd));
-            float in_front = surface_in_front(s, Qw.xyz, spx, sf);  // > 0: the surface hides the step
+            vec3 Q;
+            float q_step;
+            if (!texel_surface(spx, Q, q_step)) continue;   // the sky blocks nothing
+            float bias = u_ao.y * sf.radius_scale + u_ao.z * (sf.step + q_step);
+            float in_front = surface_in_front(s, Q, spx, sf);  // > 0: the surface hides the step
             blocked = in_front >= bias && in_front <= thickness;
         }
         open += blocked ? 0.0 : 1.0;

@@ -97,8 +97,20 @@ void check_invariants(const FramePlan& p, const AnalysedInputs& in) {
             CHECK(pass.rect.x + pass.rect.width <= t.width);
             CHECK(pass.rect.y + pass.rect.height <= t.height);
         }
+        if (pass.target2.source != Source::none) {
+            // Only the grid pass writes a second target: its normals, beside its view z.
+            CHECK(pass.kind == PassKind::downsample);
+            REQUIRE(pass.target2.source == Source::intermediate);
+            REQUIRE(pass.target2.index < p.intermediate_count);
+            CHECK(pass.target2 != pass.target);
+            const Intermediate& t2 = p.intermediates[pass.target2.index];
+            const Intermediate& t1 = p.intermediates[pass.target.index];
+            CHECK(t2.width == t1.width);
+            CHECK(t2.height == t1.height);
+        }
         for (const TexRef& r : pass.inputs) {
             CHECK(r != pass.target);  // never sample what we render into
+            CHECK(r != pass.target2);
             CHECK(r.source != Source::output);
             if (r.source == Source::intermediate) {
                 REQUIRE(r.index < p.intermediate_count);
@@ -106,6 +118,7 @@ void check_invariants(const FramePlan& p, const AnalysedInputs& in) {
             }
         }
         if (pass.target.source == Source::intermediate) written.insert(pass.target.index);
+        if (pass.target2.source == Source::intermediate) written.insert(pass.target2.index);
         CHECK(std::string(pass_name(pass.kind)).rfind("ssao: ", 0) == 0);
     }
     CHECK(p.passes_run() == bits);
@@ -278,8 +291,10 @@ TEST_CASE("plan: half resolution of 641x359 - downsample, AO and blur on a 321x1
         CHECK(p.passes_run() == uint32_t(SSAO_PASS_DOWNSAMPLE | SSAO_PASS_AO | SSAO_PASS_BLUR_X | SSAO_PASS_BLUR_Y |
                                          SSAO_PASS_UPSAMPLE));
         // ceil(641/2) x ceil(359/2): the last column and row are blocks of one pixel, not dropped.
-        REQUIRE(p.intermediate_count == 3);
-        CHECK(p.intermediates[0].format == TexFormat::rgba32f);
+        // The grid pass's view z (R32F) and normals (RGBA32F), the AO, the blur's x pass.
+        REQUIRE(p.intermediate_count == 4);
+        CHECK(p.intermediates[0].format == TexFormat::r32f);
+        CHECK(p.intermediates[1].format == TexFormat::rgba32f);
         for (int i = 0; i < p.intermediate_count; ++i) {
             CHECK(p.intermediates[i].width == 321);
             CHECK(p.intermediates[i].height == 180);
@@ -296,10 +311,12 @@ TEST_CASE("plan: half resolution of 641x359 - downsample, AO and blur on a 321x1
         CHECK(down.inputs[SSAO_UNIT_DEPTH].source == Source::depth);
         CHECK(down.inputs[SSAO_UNIT_NORMAL].source == Source::normal);
         CHECK(down.scale == 2);
+        CHECK(down.target == TexRef::of(Source::intermediate, 0));
+        CHECK(down.target2 == TexRef::of(Source::intermediate, 1));
         const Pass& ao = p.passes[1];
         CHECK(ao.scale == 2);
         CHECK(ao.inputs[SSAO_UNIT_DEPTH] == down.target);  // the grid, not the host's depth
-        CHECK(ao.inputs[SSAO_UNIT_NORMAL] == down.target);
+        CHECK(ao.inputs[SSAO_UNIT_NORMAL] == down.target2);
         CHECK(ao.inputs[SSAO_UNIT_NOISE].source == Source::noise);
         const Pass& up = p.passes[4];
         CHECK(up.program == ProgramId::upsample);
@@ -424,7 +441,14 @@ TEST_CASE("plan: multisampled inputs or normals from depth add the grid pass at 
                     const int scale = res == SSAO_RESOLUTION_HALF ? 2 : 1;
                     CHECK(first.scale == scale);
                     CHECK(p.intermediates[first.target.index].width == (67 + scale - 1) / scale);
-                    CHECK(p.intermediates[first.target.index].format == TexFormat::rgba32f);
+                    CHECK(p.intermediates[first.target.index].format == TexFormat::r32f);
+                    CHECK(p.intermediates[first.target2.index].format == TexFormat::rgba32f);
+                    // The sampling pass reads a 4-byte view z per step and the normals once.
+                    for (int i = 0; i < p.pass_count; ++i)
+                        if (p.passes[i].kind == PassKind::ao) {
+                            CHECK(p.passes[i].inputs[SSAO_UNIT_DEPTH] == first.target);
+                            CHECK(p.passes[i].inputs[SSAO_UNIT_NORMAL] == first.target2);
+                        }
                     // At full resolution nothing is upsampled.
                     CHECK(((p.passes_run() & SSAO_PASS_UPSAMPLE) != 0) == (scale > 1));
                 }

@@ -64,14 +64,15 @@ TEST_CASE("plan: the normal views run the full-resolution grid pass and the view
                         CHECK(grid.target.source == Source::intermediate);
                         CHECK(p.intermediates[grid.target.index].width == 67);
                         CHECK(p.intermediates[grid.target.index].height == 41);
-                        CHECK(p.intermediates[grid.target.index].format == TexFormat::rgba32f);
+                        CHECK(p.intermediates[grid.target.index].format == TexFormat::r32f);
+                        CHECK(p.intermediates[grid.target2.index].format == TexFormat::rgba32f);
                         const bool rebuild = from_depth || view == SSAO_DEBUG_VIEW_RECONSTRUCTED_NORMALS;
                         CHECK(((grid.variant & variant::normals_from_depth) != 0) == rebuild);
                         CHECK((grid.inputs[SSAO_UNIT_NORMAL].source == Source::normal) == !rebuild);
                         CHECK(out.program == ProgramId::normals_view);
                         CHECK(out.variant == variant::grid_input);
                         CHECK(out.inputs[SSAO_UNIT_DEPTH] == grid.target);
-                        CHECK(out.inputs[SSAO_UNIT_NORMAL] == grid.target);
+                        CHECK(out.inputs[SSAO_UNIT_NORMAL] == grid.target2);
                         CHECK(out.target.source == Source::output);
                         CHECK(out.rect.x == (host_output ? 3 : 0));
                         CHECK(out.rect.y == (host_output ? 2 : 0));

@@ -365,3 +365,80 @@ TEST_CASE("projection: a perspective with the near plane behind the camera is re
     m[3][2] = -m[3][2];  // near at -0.1 (behind)
     CHECK(analyse(m, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, info, why) == SSAO_ERROR_INVALID_PROJECTION);
 }
+
+TEST_CASE("projection: view position from view z by multiply-adds equals the inverse projection's") {
+    using ssao_impl::view_from_z;
+    using ssao_impl::ViewFromZ;
+    std::vector<Case> cases = all_cases();
+    // A shear (x depending on y) and an oblique near plane (clip z with x and
+    // y terms): the xy form holds for both, since neither changes clip w.
+    glm::mat4 shear = glm::perspective(glm::radians(60.0f), 1.5f, 0.1f, 100.0f);
+    shear[1][0] = 0.2f;
+    cases.push_back({"sheared perspective", shear, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, false, false, false, 0.1, 100.0});
+    glm::mat4 oblique = glm::perspective(glm::radians(60.0f), 1.5f, 0.1f, 100.0f);
+    oblique[0][2] = 0.05f;
+    oblique[1][2] = -0.03f;
+    cases.push_back({"oblique near plane", oblique, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, false, false, false, 0.1, 100.0});
+    std::mt19937_64 rng(7);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    const int vw = 641, vh = 359;
+    for (const Case& c : cases) {
+        CAPTURE(c.name);
+        ProjectionInfo info;
+        std::string why;
+        REQUIRE(analyse(c.m, c.clip, info, why) == SSAO_OK);
+        const ViewFromZ vz = view_from_z(info, vw, vh);
+        // What the shader does: float coefficients, float arithmetic.
+        const glm::mat2 mul_z(vz.mul_z), mul_1(vz.mul_1);
+        const glm::vec2 add_z(vz.add_z), add_1(vz.add_1);
+        if (c.ortho) {
+            CHECK(vz.mul_z == glm::dmat2(0.0));
+            CHECK(vz.add_z == glm::dvec2(0.0));
+        } else {
+            CHECK(vz.mul_1 == glm::dmat2(0.0));
+        }
+        double worst = 0.0;
+        for (int i = 0; i < 300; ++i) {
+            const double px = unit(rng) * vw, py = unit(rng) * vh;
+            const double nx = px / vw * 2.0 - 1.0, ny = py / vh * 2.0 - 1.0;
+            const double u = 0.05 + 0.9 * unit(rng);
+            const double d = c.reverse ? 1.0 - u : u;  // a depth value inside the range, either convention
+            const glm::dvec3 p = view_position(info, nx, ny, d);
+            if (!std::isfinite(p.x) || !std::isfinite(p.z)) continue;
+            const glm::vec2 pf(static_cast<float>(px), static_cast<float>(py));
+            const float zf = static_cast<float>(p.z);
+            const glm::vec2 xy = (mul_z * pf + add_z) * zf + (mul_1 * pf + add_1);
+            const glm::dvec3 q(xy.x, xy.y, zf);
+            worst = std::max(worst, glm::length(q - p) / std::max(glm::length(p), 1e-30));
+            // In double the form is exact.
+            const glm::dvec3 qd = ssao_impl::view_position_from_z(vz, px, py, p.z);
+            CHECK(glm::length(qd - p) <= 1e-9 * std::max(glm::length(p), 1.0));
+        }
+        CAPTURE(worst);
+        CHECK(worst < 2e-6);  // a few float roundings
+    }
+}
+
+TEST_CASE("projection: the depth step from view z follows the depth's own derivative") {
+    using ssao_impl::view_from_z;
+    for (const Case& c : all_cases()) {
+        CAPTURE(c.name);
+        ProjectionInfo info;
+        std::string why;
+        REQUIRE(analyse(c.m, c.clip, info, why) == SSAO_OK);
+        const ssao_impl::ViewFromZ vz = view_from_z(info, 64, 48);
+        for (double u : {0.1, 0.5, 0.9}) {
+            const double d = c.reverse ? 1.0 - u : u;
+            const double z = view_position(info, 0.0, 0.0, d).z;
+            if (!std::isfinite(z)) continue;
+            // d(view z)/d(ndc z) = w^2 / |det| against a central difference.
+            const double w = vz.w_z * z + vz.w_1;
+            const double analytic = w * w / std::abs(vz.det);
+            const double h = 1e-6 * (c.reverse ? -1.0 : 1.0);
+            const double ndc_per_depth = info.ndc_per_depth;
+            const double z1 = view_position(info, 0.0, 0.0, d + h).z, z0 = view_position(info, 0.0, 0.0, d - h).z;
+            const double numeric = std::abs(z1 - z0) / (2.0 * std::abs(h) * ndc_per_depth);
+            CHECK(analytic == doctest::Approx(numeric).epsilon(1e-3));
+        }
+    }
+}
