@@ -110,7 +110,7 @@ void check_invariants(const FramePlan& p, const AnalysedInputs& in) {
         }
         for (const TexRef& r : pass.inputs) {
             CHECK(r != pass.target);  // never sample what we render into
-            CHECK(r != pass.target2);
+            if (pass.target2.source != Source::none) CHECK(r != pass.target2);
             CHECK(r.source != Source::output);
             if (r.source == Source::intermediate) {
                 REQUIRE(r.index < p.intermediate_count);
