@@ -251,7 +251,9 @@ bool clip_to_texel(vec4 c, out ivec2 texel) {
     if (!(c.w > 0.0)) return false;
     vec2 spf = (c.xy / c.w * 0.5 + 0.5) * vec2(u_viewport.zw);
     if (any(lessThan(spf, vec2(0.0))) || any(greaterThanEqual(spf, vec2(u_viewport.zw)))) return false;
-    texel = ivec2(spf) / u_scale;
+    // spf / scale for a power-of-two scale is exact in float, so this is
+    // ivec2(spf) / u_scale without an integer division per step.
+    texel = ivec2(spf * (1.0 / float(u_scale)));
     return true;
 }
 

@@ -79,6 +79,9 @@ float depth_weighted_old(ivec2 p, float z0) {
 
 void main() {
     ivec2 p = ivec2(gl_FragCoord.xy) - u_target_origin;
+#ifdef EXP_SKIP_UP
+    o_ao = vec4(0.5); return;
+#endif
     float d = input_depth(p);
     float z = view_z_of_depth(p, d);
     if (is_sky(d) || !(abs(z) < 3.0e38)) {

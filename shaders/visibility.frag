@@ -30,10 +30,18 @@ float surface_in_front(vec3 s, vec3 Q, ivec2 spx, Surface sf) {
 #ifdef EXP_PLAIN
     return Q.z - s.z;
 #endif
-    vec3 to_eye_q = sf.ortho ? vec3(0.0, 0.0, 1.0) : normalize(-Q);
     vec3 nq;
-    if (!raw_normal(spx, nq) || !(dot(nq, to_eye_q) > 0.0)) return Q.z - snap_to_texel_ray(s, sf.n, Q, sf.ortho).z;
-    nq = normalize(nq);
+#ifdef SSAO_GRID_INPUT
+    // The grid pass stored it unit length already, zero when broken.
+    nq = texelFetch(u_normal_tex, spx, 0).xyz;
+    bool usable = dot(nq, nq) > 0.5;
+#else
+    bool usable = raw_normal(spx, nq);
+    nq = normalize(nq);  // not read when unusable
+#endif
+    // Facing the camera (towards the eye from Q; orthographic: +z): a sign, no normalisation.
+    float facing = sf.ortho ? nq.z : -dot(nq, Q);
+    if (!usable || !(facing > 0.0)) return Q.z - snap_to_texel_ray(s, sf.n, Q, sf.ortho).z;
     float plane = dot(Q, nq);
     if (sf.ortho) {
         if (abs(nq.z) > 1e-3) return (plane - nq.x * s.x - nq.y * s.y) / nq.z - s.z;
@@ -46,6 +54,9 @@ float surface_in_front(vec3 s, vec3 Q, ivec2 spx, Surface sf) {
 
 void main() {
     Surface sf;
+#ifdef EXP_SKIP_MARCH
+    o_ao = result(1.0, -1.0); return;
+#endif
     if (!load_surface(sf)) { o_ao = result(1.0, SKY_Z); return; }
 #ifdef SSAO_FADE
     if (fade_weight(sf.P) >= 1.0) { o_ao = result(1.0, sf.P.z); return; }  // faded out: nothing to march
@@ -64,6 +75,9 @@ void main() {
         vec3 dir = sf.TBN * u_kernel[i].xyz;
         vec4 clip_dir = u_proj * vec4(dir, 0.0);
         bool blocked = false;
+#ifdef EXP_SEG
+        float prev = -3.0e38;
+#endif
         for (int j = 0; j < steps && !blocked; ++j) {
 #ifdef EXP_QUAD
             float u = (float(j) + jitter) / float(steps);
@@ -80,6 +94,11 @@ void main() {
             float bias = u_ao.y * sf.radius_scale + u_ao.z * (sf.step + q_step);
             float in_front = surface_in_front(s, Q, spx, sf);  // > 0: the surface hides the step
             blocked = in_front >= bias && in_front <= thickness;
+#ifdef EXP_SEG
+            // the segment from the previous step crossed the slab [bias, thickness] entirely
+            blocked = blocked || (prev < bias && in_front > thickness && prev > -1e30);
+            prev = in_front;
+#endif
         }
         open += blocked ? 0.0 : 1.0;
     }
