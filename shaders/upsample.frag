@@ -21,29 +21,28 @@ float depth_weighted(ivec2 p, float z0) {
     // Floored as in the blur: an orthographic surface may sit at view z = 0.
     float inv_tolerance = 1.0 / max(u_ao2.z * abs(z0), 1e-30);
     float inv_scale = 1.0 / float(u_scale);
-    ivec2 size = grid_size();
+    ivec2 last = grid_size() - 1;
     // The blocks whose centres bracket p: p's own and its neighbour on the
-    // side of p's half of the block (a non-negative dividend: the division
-    // truncates).
-    ivec2 t0 = (p + u_scale - u_scale / 2) / u_scale - 1;
+    // side of p's half of the block (exact in float for a power-of-two
+    // scale), clamped into the grid: at the border a texel may be taken
+    // twice, which keeps the result a weighted mean of the texels there.
+    ivec2 t0 = ivec2(floor((vec2(p) + float(u_scale - u_scale / 2)) * inv_scale)) - 1;
     float sum = 0.0, weight = 0.0;
-    float nearest = 1.0, nearest_dz = 3.4e38;  // no surface tap at all: open
-    for (int y = 0; y <= 1; ++y)
-        for (int x = 0; x <= 1; ++x) {
-            ivec2 t = t0 + ivec2(x, y);
-            if (any(lessThan(t, ivec2(0))) || any(greaterThanEqual(t, size))) continue;
-            vec2 tap = texelFetch(u_ao_tex, t, 0).rg;
-            if (tap.g == SKY_Z) continue;
-            float dz = abs(tap.g - z0);
-            if (dz < nearest_dz) {
-                nearest_dz = dz;
-                nearest = tap.r;
-            }
-            vec2 tent = max(1.0 - abs(vec2(grid_pixel(t) - p)) * inv_scale, vec2(0.0625));
-            float w = tent.x * tent.y * clamp(1.0 - dz * inv_tolerance, 0.0, 1.0);
-            sum += tap.r * w;
-            weight += w;
-        }
+    float nearest = 1.0, nearest_dz = 3.4e38;
+    for (int k = 0; k < 4; ++k) {
+        ivec2 t = clamp(t0 + ivec2(k & 1, k >> 1), ivec2(0), last);
+        vec2 tap = texelFetch(u_ao_tex, t, 0).rg;
+        // A sky tap (view z SKY_Z, AO 1) is never within the tolerance, and
+        // the nearest in depth only when every tap is sky: then 1, open.
+        float dz = abs(tap.g - z0);
+        bool closer = dz < nearest_dz;
+        nearest_dz = closer ? dz : nearest_dz;
+        nearest = closer ? tap.r : nearest;
+        vec2 tent = max(1.0 - abs(vec2(grid_pixel(t) - p)) * inv_scale, vec2(0.0625));
+        float w = tent.x * tent.y * clamp(1.0 - dz * inv_tolerance, 0.0, 1.0);
+        sum += tap.r * w;
+        weight += w;
+    }
     return weight > 0.0 ? sum / weight : nearest;
 }
 

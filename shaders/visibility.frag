@@ -75,30 +75,20 @@ void main() {
         vec3 dir = sf.TBN * u_kernel[i].xyz;
         vec4 clip_dir = u_proj * vec4(dir, 0.0);
         bool blocked = false;
-#ifdef EXP_SEG
-        float prev = -3.0e38;
-#endif
         for (int j = 0; j < steps && !blocked; ++j) {
-#ifdef EXP_QUAD
-            float u = (float(j) + jitter) / float(steps);
-            float t = radius * u * u;
-#else
             float t = radius * (float(j) + jitter) / float(steps);
-#endif
             vec3 s = sf.P + dir * t;
+            // Every step does the same work and a mask decides (no branch per
+            // step): off screen or behind the eye is unknown and open (the
+            // texel read is then texel 0's, unused), and the sky blocks nothing.
             ivec2 spx;
-            if (!clip_to_texel(clip_p + clip_dir * t, spx)) continue;  // unknown: open
+            bool on_screen = clip_to_texel(clip_p + clip_dir * t, spx);
             vec3 Q;
             float q_step;
-            if (!texel_surface(spx, Q, q_step)) continue;   // the sky blocks nothing
+            bool surface = texel_surface(spx, Q, q_step);
             float bias = u_ao.y * sf.radius_scale + u_ao.z * (sf.step + q_step);
             float in_front = surface_in_front(s, Q, spx, sf);  // > 0: the surface hides the step
-            blocked = in_front >= bias && in_front <= thickness;
-#ifdef EXP_SEG
-            // the segment from the previous step crossed the slab [bias, thickness] entirely
-            blocked = blocked || (prev < bias && in_front > thickness && prev > -1e30);
-            prev = in_front;
-#endif
+            blocked = on_screen && surface && in_front >= bias && in_front <= thickness;
         }
         open += blocked ? 0.0 : 1.0;
     }
