@@ -1,5 +1,4 @@
 #include "shader_source.h"
-#include <cstdlib>
 
 #include <ssao_shaders_embedded.h>
 
@@ -33,16 +32,6 @@ std::string assemble(const char* body, SharedCode shared, uint32_t variant) {
     std::string s = "#version 330 core\n";
     for (int bit = 0; bit < variant::kBits; ++bit)
         if (variant & (1u << bit)) s += std::string("#define SSAO_") + kVariantNames[bit] + " 1\n";
-    if (const char* e = std::getenv("SSAO_EXP")) {  // EXPERIMENT ONLY
-        std::string v(e);
-        size_t a = 0;
-        while (a < v.size()) {
-            size_t b = v.find(',', a);
-            if (b == std::string::npos) b = v.size();
-            if (b > a) s += "#define " + v.substr(a, b - a) + " 1\n";
-            a = b + 1;
-        }
-    }
     s += k_ssao_constants_h;
     s += "\n";
     if (shared != SharedCode::none) s += k_common_glsl;

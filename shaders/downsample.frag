@@ -85,9 +85,6 @@ vec3 normal_from_depth(ivec2 p, float d0, vec3 P0, vec3 to_eye) {
 
 void main() {
     ivec2 t = ivec2(gl_FragCoord.xy) - u_target_origin;
-#ifdef EXP_SKIP_DOWN
-    o_ao = vec4(-1.0); o_normal = vec4(0.0, 0.0, 1.0, 0.0); return;
-#endif
     ivec2 p = grid_pixel(t);
     float d = input_depth(p);
     vec3 P = view_position_at(vec2(p) + 0.5, d).xyz;

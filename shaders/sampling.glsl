@@ -97,28 +97,26 @@ float pixel_hash(uvec2 p, uint seed) {
     return float(w >> 8) * (1.0 / 16777216.0);
 }
 
+// Interleaved gradient noise (Jimenez 2014) at grid texel p, in [0,1): no
+// period on the screen, and each 3x3 neighbourhood spreads its values evenly.
+float interleaved_gradient_noise(vec2 p) { return fract(52.9829189 * fract(dot(p, vec2(0.06711056, 0.00583715)))); }
+
 // Below full resolution a grid texel spans u_scale viewport pixels, so the
-// 4x4 tile would repeat every 4 u_scale pixels: a fixed stipple on the
-// screen that the upsample cannot hide. There each 4x4 tile of the grid gets
-// its own turn (a hash of the tile: cos, sin) and its own jitter shift, so
-// the 16 rotations and offsets stay stratified within a tile and no pattern
-// repeats. At full resolution the tile is used as it is (0 turn, 0 shift).
-vec3 tile_scramble(ivec2 vpx) {
-    if (u_scale == 1) return vec3(1.0, 0.0, 0.0);
-#ifdef EXP_NO_SCRAMBLE
-    return vec3(1.0, 0.0, 0.0);
-#endif
-    uvec2 tile = uvec2(vpx >> 2);
-    float a = pixel_hash(tile, uint(u_counts.y) ^ 0x68e31da4u) * 6.28318530718;
-    return vec3(cos(a), sin(a), pixel_hash(tile.yx, uint(u_counts.y) ^ 0xb5297a4du));
-}
+// 4x4 tile would repeat every 4 u_scale pixels: a stipple fixed on the
+// screen that the upsample cannot hide. There the rotation NOISE_4X4 takes its
+// angle and its step jitter from interleaved gradient noise on the grid
+// instead (two positions of it apart, so the two are not correlated): as
+// stratified between neighbours as the tile, with no fixed pattern. At full
+// resolution the 4x4 tile is used as it is.
+bool grid_noise() { return u_modes.y == SSAO_SHADER_ROTATION_NOISE && u_scale > 1; }
 
 vec2 fixed_rotation(ivec2 vpx) {
-    if (u_modes.y == SSAO_SHADER_ROTATION_NOISE) {
-        vec2 r = texelFetch(u_noise_tex, vpx & (SSAO_NOISE_SIZE - 1), 0).xy;  // tiles from the viewport's corner
-        vec3 turn = tile_scramble(vpx);
-        return vec2(r.x * turn.x - r.y * turn.y, r.x * turn.y + r.y * turn.x);
+    if (grid_noise()) {
+        float a = interleaved_gradient_noise(vec2(vpx)) * 6.28318530718;
+        return vec2(cos(a), sin(a));
     }
+    if (u_modes.y == SSAO_SHADER_ROTATION_NOISE)
+        return texelFetch(u_noise_tex, vpx & (SSAO_NOISE_SIZE - 1), 0).xy;  // tiles from the viewport's corner
     if (u_modes.y == SSAO_SHADER_ROTATION_HASH) {
         float a = pixel_hash(uvec2(vpx), uint(u_counts.y)) * 6.28318530718;
         return vec2(cos(a), sin(a));
@@ -140,14 +138,15 @@ vec2 rotation(ivec2 vpx) {
 }
 
 // Per-pixel offset in (0,1) of the visibility method's steps along each
-// direction; plugin/kernel.cpp step_jitter() computes the same. The 4x4 noise
-// gets an ordered (Bayer) pattern, so the 4x4 box blur averages 16 offsets.
+// direction; plugin/kernel.cpp step_jitter() computes the same at full
+// resolution. The 4x4 noise gets an ordered (Bayer) pattern, so the 4x4 box
+// blur averages 16 offsets; below full resolution see grid_noise().
 float fixed_step_jitter(ivec2 vpx) {
+    if (grid_noise()) return interleaved_gradient_noise(vec2(vpx) + vec2(47.0, 17.0)) * 0.9999 + 0.00005;
     if (u_modes.y == SSAO_SHADER_ROTATION_NOISE) {
         const int bayer[16] = int[16](0, 8, 2, 10, 12, 4, 14, 6, 3, 11, 1, 9, 15, 7, 13, 5);
         ivec2 t = vpx & 3;
-        float j = (float(bayer[t.y * 4 + t.x]) + 0.5) / 16.0;
-        return u_scale == 1 ? j : fract(j + tile_scramble(vpx).z);
+        return (float(bayer[t.y * 4 + t.x]) + 0.5) / 16.0;
     }
     if (u_modes.y == SSAO_SHADER_ROTATION_HASH)
         return pixel_hash(uvec2(vpx.yx), uint(u_counts.y) ^ 0x5bd1e995u) * 0.9999 + 0.00005;

@@ -1,7 +1,8 @@
 // The upsample (below full resolution): every viewport pixel takes the AO of
 // the 2x2 reduced-grid texels around it (the two nearest along each axis),
-// weighted bilinearly by where their picked pixels lie (a tent one block
-// wide, floored so a tap is never ignored on position alone) and by depth
+// weighted by where their picked pixels lie (a tent two blocks wide, so the
+// four taps also average the grid's noise; floored so a tap is never ignored
+// on position alone) and by depth
 // similarity: a tap whose view z differs from the pixel's own (read from the
 // full-resolution depth) by the blur's relative tolerance or more gets no
 // weight, so AO is never carried across a silhouette. When no tap is within
@@ -38,7 +39,7 @@ float depth_weighted(ivec2 p, float z0) {
         bool closer = dz < nearest_dz;
         nearest_dz = closer ? dz : nearest_dz;
         nearest = closer ? tap.r : nearest;
-        vec2 tent = max(1.0 - abs(vec2(grid_pixel(t) - p)) * inv_scale, vec2(0.0625));
+        vec2 tent = max(1.0 - abs(vec2(grid_pixel(t) - p)) * (0.5 * inv_scale), vec2(0.0625));
         float w = tent.x * tent.y * clamp(1.0 - dz * inv_tolerance, 0.0, 1.0);
         sum += tap.r * w;
         weight += w;
@@ -46,41 +47,8 @@ float depth_weighted(ivec2 p, float z0) {
     return weight > 0.0 ? sum / weight : nearest;
 }
 
-#ifdef EXP_OLD_UP
-float depth_weighted_old(ivec2 p, float z0) {
-    // Floored as in the blur: an orthographic surface may sit at view z = 0.
-    float tolerance = max(u_ao2.z * abs(z0), 1e-30);
-    float sigma = 0.5 * float(u_scale);
-    float inv2s2 = 0.5 / (sigma * sigma);
-    ivec2 size = grid_size();
-    ivec2 c = p / u_scale;
-    float sum = 0.0, weight = 0.0;
-    float nearest = 1.0, nearest_dz = 3.4e38;  // no surface tap at all: open
-    for (int y = -1; y <= 1; ++y)
-        for (int x = -1; x <= 1; ++x) {
-            ivec2 t = c + ivec2(x, y);
-            if (any(lessThan(t, ivec2(0))) || any(greaterThanEqual(t, size))) continue;
-            vec2 tap = texelFetch(u_ao_tex, t, 0).rg;
-            if (tap.g == SKY_Z) continue;
-            float dz = abs(tap.g - z0);
-            if (dz < nearest_dz) {
-                nearest_dz = dz;
-                nearest = tap.r;
-            }
-            vec2 off = vec2(grid_pixel(t) - p);
-            float w = exp(-dot(off, off) * inv2s2) * clamp(1.0 - dz / tolerance, 0.0, 1.0);
-            sum += tap.r * w;
-            weight += w;
-        }
-    return weight > 0.0 ? sum / weight : nearest;
-}
-#endif
-
 void main() {
     ivec2 p = ivec2(gl_FragCoord.xy) - u_target_origin;
-#ifdef EXP_SKIP_UP
-    o_ao = vec4(0.5); return;
-#endif
     float d = input_depth(p);
     float z = view_z_of_depth(p, d);
     if (is_sky(d) || !(abs(z) < 3.0e38)) {
@@ -90,11 +58,7 @@ void main() {
 #ifdef SSAO_UPSAMPLE_NEAREST
     float ao = texelFetch(u_ao_tex, p / u_scale, 0).r;
 #else
-#ifdef EXP_OLD_UP
-    float ao = depth_weighted_old(p, z);
-#else
     float ao = depth_weighted(p, z);
-#endif
 #endif
     o_ao = vec4(ao, ao, ao, 1.0);
 }

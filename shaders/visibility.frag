@@ -24,12 +24,6 @@
 // than the thickness: one such texel would shade the whole disc of pixels
 // whose marches cross it (hard case "normals: zero, NaN, ...").
 float surface_in_front(vec3 s, vec3 Q, ivec2 spx, Surface sf) {
-#ifdef EXP_SNAP
-    return Q.z - snap_to_texel_ray(s, sf.n, Q, sf.ortho).z;
-#endif
-#ifdef EXP_PLAIN
-    return Q.z - s.z;
-#endif
     vec3 nq;
 #ifdef SSAO_GRID_INPUT
     // The grid pass stored it unit length already, zero when broken.
@@ -54,9 +48,6 @@ float surface_in_front(vec3 s, vec3 Q, ivec2 spx, Surface sf) {
 
 void main() {
     Surface sf;
-#ifdef EXP_SKIP_MARCH
-    o_ao = result(1.0, -1.0); return;
-#endif
     if (!load_surface(sf)) { o_ao = result(1.0, SKY_Z); return; }
 #ifdef SSAO_FADE
     if (fade_weight(sf.P) >= 1.0) { o_ao = result(1.0, sf.P.z); return; }  // faded out: nothing to march
