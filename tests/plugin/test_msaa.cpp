@@ -104,11 +104,12 @@ TEST_CASE("4x MSAA inputs whose samples equal the single-sample G-buffer give it
                     } else {
                         // The copy writes a D24 depth back through float (gl_FragDepth),
                         // which llvmpipe may round to the neighbouring D24 step: a
-                        // handful of pixels then differ by one R16F step of AO.
+                        // handful of pixels then differ by one R16F step of AO (7 at
+                        // quarter resolution, where the grid's noise is not the 4x4 tile).
                         double worst = 0;
                         for (size_t i = 0; i < ref.ao.size(); ++i)
                             worst = std::max(worst, std::abs(double(got.ao[i]) - ref.ao[i]));
-                        CHECK(differ <= 4);
+                        CHECK(differ <= 8);
                         CHECK(worst <= 1.0 / 1024);
                     }
                 }
