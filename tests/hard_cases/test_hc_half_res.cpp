@@ -571,10 +571,12 @@ TEST_CASE("half resolution: the 4x4 rotation noise leaves no fixed pattern at th
     // the tile's pattern, a stipple fixed on the screen. The per-pixel hash
     // rotation has no pattern: the spread of its eight column means is what
     // noise alone leaves, and the 4x4 noise must stay within twice that
-    // (measured: 0.0005 against 0.0007 at half resolution, 0.0011 against
-    // 0.0007 at quarter; the tile repeating on the grid gave 0.0031 and 0.0019).
+    // (measured at 512x256: 0.00018 against 0.00046 at half resolution,
+    // 0.00026 against 0.00028 at quarter; the 4x4 tile repeating on the grid
+    // gave 0.0031 and 0.0019 at 256x128, where one seed's noise alone varied
+    // 0.0005-0.0009, too close to tell apart).
     testgl::Fixture fx;
-    const int W = 256, H = 128;
+    const int W = 512, H = 256;
     const auto proj = analytic::perspective(hc::kFov, double(W) / H, 0.1, 100.0);
     const GBuffer g = analytic::render(hc::to_view(hc::crease_world(1.0, false), hc::crease_view()), proj,
                                        SSAO_CLIP_NEGATIVE_ONE_TO_ONE, W, H);
@@ -598,14 +600,22 @@ TEST_CASE("half resolution: the 4x4 rotation noise leaves no fixed pattern at th
         CAPTURE(res);
         ssao_settings s = make(SSAO_METHOD_VISIBILITY, res, SSAO_BLUR_NONE, SSAO_ROTATION_HASH, 1.0f, 8);
         s.step_count = 4;
-        fx.settings(s);
-        const auto hash = run_checked(fx, g, proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE);
+        // The noise-only spread, averaged over four hash seeds: one seed's
+        // spread of eight column means is itself noisy (0.0005-0.0009).
+        double spread_hash = 0.0;
+        for (uint32_t seed = 1; seed <= 4; ++seed) {
+            s.seed = seed;
+            fx.settings(s);
+            const auto hash = run_checked(fx, g, proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE);
+            REQUIRE(hash.status == SSAO_OK);
+            spread_hash += column_spread(hash.ao) / 4.0;
+        }
+        s.seed = 1;
         s.rotation = SSAO_ROTATION_NOISE_4X4;
         fx.settings(s);
         const auto noise = run_checked(fx, g, proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE);
-        REQUIRE(hash.status == SSAO_OK);
         REQUIRE(noise.status == SSAO_OK);
-        const double spread_hash = column_spread(hash.ao), spread_noise = column_spread(noise.ao);
+        const double spread_noise = column_spread(noise.ao);
         MESSAGE("column-class spread: 4x4 noise " << spread_noise << ", hash " << spread_hash);
         CHECK(spread_noise <= 2.0 * spread_hash);
     }

@@ -135,7 +135,7 @@ TEST_CASE("settings: derived defaults follow the fields they derive from") {
     CHECK(r.bias == doctest::Approx(0.025 * 2.0));  // 0.025 * radius
     CHECK(r.blur_radius == 5u);
     CHECK(r.blur_sigma == 5.0f);  // = blur_radius
-    CHECK(r.thickness == 1.0f);   // radius / 2
+    CHECK(r.thickness == 2.0f);   // = radius
 
     // Explicit values are kept as given.
     in = zeroed();

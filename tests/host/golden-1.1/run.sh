@@ -1,18 +1,17 @@
 #!/usr/bin/env bash
-# Interface 1.2 added seven features, each off by default. This checks the
-# promise that a frame with all of them off is the frame of interface 1.1:
-# ssao-host's ao.exr for each case in cases.txt must hold, bit for bit, the
-# image the 1.1 library and host wrote (commit d421df5, Mesa 22.3 llvmpipe on
-# this project's machine) and that is committed here. The header's other
-# attributes (ssao-host now records the scene and camera there) are not part
-# of the frame: SAME (exr_same_image) compares the image only.
-# Two files are not 1.1's: ultra-corner and high-reverse-z-teapot take a
-# preset on a scene whose radius is not 0.5, and 1.1's preset_settings fixed
-# the thickness at 0.25 (half the default radius) where it now follows the
-# scene's radius, as a zeroed struct's does; they were rewritten with the
-# host of the commit that made that change.
+# Interface 1.2 added seven features, each off by default. This pins what a
+# frame with all of them off looks like: ssao-host's ao.exr for each case in
+# cases.txt must hold, bit for bit, the committed image (Mesa 22.3 llvmpipe on
+# this project's machine). They were the 1.1 library's output (commit
+# d421df5) until three deliberate changes: a preset's thickness follows the
+# scene's radius (ultra-corner, high-reverse-z-teapot), the default pass below
+# full resolution reads view z and upsamples 2x2 (every half-resolution case),
+# and the visibility thickness defaults to the radius (every visibility case);
+# the kernel cases at full resolution are still 1.1's. The header's other
+# attributes (ssao-host records the scene and camera there) are not part of
+# the frame: SAME (exr_same_image) compares the image only.
 #   run.sh check HOST SAME  compare HOST's output with the committed files
-#   run.sh make HOST        (re)write them with HOST (a 1.1 build: see README)
+#   run.sh make HOST        (re)write them with HOST, after a deliberate change of the frame
 set -euo pipefail
 mode=$1 host=$2 same=${3:-}
 here=$(cd "$(dirname "$0")" && pwd)
