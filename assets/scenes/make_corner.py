@@ -38,6 +38,31 @@ def box(lo, hi):
             quad((x0, y0, z0), (dx, 0, 0), (0, 0, dz)))       # -y
 
 
+def document(generator, name, tris, camera_node, yfov, aspect, radius):
+    """The glTF of one flat-shaded mesh (positions and normals in one embedded
+    buffer), one perspective camera node and an AO radius hint."""
+    data = b"".join(struct.pack("<3f", *p) for p, _ in tris) + b"".join(struct.pack("<3f", *n) for _, n in tris)
+    count = len(tris)
+    lo = [min(p[i] for p, _ in tris) for i in range(3)]
+    hi = [max(p[i] for p, _ in tris) for i in range(3)]
+    return {
+        "asset": {"version": "2.0", "generator": generator},
+        "scene": 0,
+        "scenes": [{"nodes": [0, 1]}],
+        "nodes": [{"name": name, "mesh": 0}, camera_node],
+        "cameras": [{"type": "perspective",
+                     "perspective": {"yfov": yfov, "znear": 0.05, "zfar": 30.0, "aspectRatio": aspect}}],
+        "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "NORMAL": 1}, "mode": 4}]}],
+        "buffers": [{"byteLength": len(data),
+                     "uri": "data:application/octet-stream;base64," + base64.b64encode(data).decode()}],
+        "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": count * 12},
+                        {"buffer": 0, "byteOffset": count * 12, "byteLength": count * 12}],
+        "accessors": [{"bufferView": 0, "componentType": 5126, "count": count, "type": "VEC3", "min": lo, "max": hi},
+                      {"bufferView": 1, "componentType": 5126, "count": count, "type": "VEC3"}],
+        "extras": {"ssao": {"radius": radius}},
+    }
+
+
 def main():
     tris = []
     tris += quad((-3, 0, 3), (6, 0, 0), (0, 0, -6))            # floor, normal +y
@@ -49,31 +74,10 @@ def main():
     tris += box((0.85, 0.8, -0.35), (1.35, 1.3, 0.15))         # stacked on it
     tris += box((-2.9, 0, 0.4), (-2.5, 1.6, 1.2))              # a slab against the left wall
 
-    data = b"".join(struct.pack("<3f", *p) for p, _ in tris) + b"".join(struct.pack("<3f", *n) for _, n in tris)
-    count = len(tris)
-    lo = [min(p[i] for p, _ in tris) for i in range(3)]
-    hi = [max(p[i] for p, _ in tris) for i in range(3)]
-    gltf = {
-        "asset": {"version": "2.0", "generator": "assets/scenes/make_corner.py"},
-        "scene": 0,
-        "scenes": [{"nodes": [0, 1]}],
-        "nodes": [
-            {"name": "corner", "mesh": 0},
-            # Looks into the corner from the open side, slightly from above.
-            {"name": "camera", "camera": 0, "translation": [3.2, 2.4, 3.4],
-             "rotation": [-0.1830127, 0.3535534, 0.0704416, 0.9146830]},
-        ],
-        "cameras": [{"type": "perspective",
-                     "perspective": {"yfov": 0.9, "znear": 0.05, "zfar": 30.0, "aspectRatio": 4.0 / 3.0}}],
-        "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "NORMAL": 1}, "mode": 4}]}],
-        "buffers": [{"byteLength": len(data),
-                     "uri": "data:application/octet-stream;base64," + base64.b64encode(data).decode()}],
-        "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": count * 12},
-                        {"buffer": 0, "byteOffset": count * 12, "byteLength": count * 12}],
-        "accessors": [{"bufferView": 0, "componentType": 5126, "count": count, "type": "VEC3", "min": lo, "max": hi},
-                      {"bufferView": 1, "componentType": 5126, "count": count, "type": "VEC3"}],
-        "extras": {"ssao": {"radius": 0.4}},
-    }
+    # Looks into the corner from the open side, slightly from above.
+    camera = {"name": "camera", "camera": 0, "translation": [3.2, 2.4, 3.4],
+              "rotation": [-0.1830127, 0.3535534, 0.0704416, 0.9146830]}
+    gltf = document("assets/scenes/make_corner.py", "corner", tris, camera, 0.9, 4.0 / 3.0, 0.4)
     path = os.path.join(os.path.dirname(os.path.abspath(__file__)), "corner.gltf")
     with open(path, "w") as f:
         json.dump(gltf, f, indent=1)

@@ -16,16 +16,14 @@ camera and an AO radius hint. Deterministic: the same bytes on every run.
 Run: python3 make_hard_scenes.py [--out DIR] (default: next to itself).
 """
 import argparse
-import base64
 import json
 import math
 import os
-import struct
 import sys
 
 sys.dont_write_bytecode = True  # nothing written beside the committed scenes
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from make_corner import box, quad  # noqa: E402  (the shared flat-shaded helpers)
+from make_corner import box, document, quad  # noqa: E402  (the shared flat-shaded helpers)
 
 
 def prism(centre, radius, height, sides):
@@ -91,29 +89,8 @@ def look_at_rotation(eye, target):
 
 
 def gltf(name, tris, eye, target, radius, yfov=0.8):
-    data = b"".join(struct.pack("<3f", *p) for p, _ in tris) + b"".join(struct.pack("<3f", *n) for _, n in tris)
-    count = len(tris)
-    lo = [min(p[i] for p, _ in tris) for i in range(3)]
-    hi = [max(p[i] for p, _ in tris) for i in range(3)]
-    return {
-        "asset": {"version": "2.0", "generator": "assets/scenes/make_hard_scenes.py"},
-        "scene": 0,
-        "scenes": [{"nodes": [0, 1]}],
-        "nodes": [
-            {"name": name, "mesh": 0},
-            {"name": "camera", "camera": 0, "translation": list(eye), "rotation": look_at_rotation(eye, target)},
-        ],
-        "cameras": [{"type": "perspective",
-                     "perspective": {"yfov": yfov, "znear": 0.05, "zfar": 30.0, "aspectRatio": 16.0 / 9.0}}],
-        "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "NORMAL": 1}, "mode": 4}]}],
-        "buffers": [{"byteLength": len(data),
-                     "uri": "data:application/octet-stream;base64," + base64.b64encode(data).decode()}],
-        "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": count * 12},
-                        {"buffer": 0, "byteOffset": count * 12, "byteLength": count * 12}],
-        "accessors": [{"bufferView": 0, "componentType": 5126, "count": count, "type": "VEC3", "min": lo, "max": hi},
-                      {"bufferView": 1, "componentType": 5126, "count": count, "type": "VEC3"}],
-        "extras": {"ssao": {"radius": radius}},
-    }
+    camera = {"name": "camera", "camera": 0, "translation": list(eye), "rotation": look_at_rotation(eye, target)}
+    return document("assets/scenes/make_hard_scenes.py", name, tris, camera, yfov, 16.0 / 9.0, radius)
 
 
 def overhang():
