@@ -261,6 +261,7 @@ void measure_scene(const std::string& path, const Options& o, int scale, const s
                 if (api.execute(ctx, &in, &out) != SSAO_OK) throw std::runtime_error(api.last_error(ctx));
                 gl.Finish();
                 Row row = row_for(c.name, Row::Kind::plugin);
+                row.thickness_variant = c.thickness_of_radius > 0;
                 row.family = c.family;
                 row.s.size = sizeof row.s;
                 api.get_settings(ctx, &row.s);

@@ -64,6 +64,7 @@ struct Summary {
     double psnr = 0, psnr_vs_limit = 0, min_psnr = 1e9;  // dB, means (and worst) over cases
     std::map<std::string, double> scene_psnr, scene_psnr_vs_limit, scene_ratio;  // by scene (main case)
     bool front_vr = false, front_limit = false;
+    bool thickness_variant = false;
     int cases = 0, with_error = 0;
 };
 
@@ -90,6 +91,7 @@ std::vector<Summary> summarise(const std::vector<Row>& rows, int width, RowFilte
             s.family = r.family;
             s.kind = r.kind;
             s.s = r.s;
+            s.thickness_variant = r.thickness_variant;
             out.push_back(s);
         }
         Summary& s = out[index[r.config]];
@@ -155,8 +157,7 @@ constexpr Budget kBudgets[] = {{"medium (= default)", 0.25}, {"high", 0.5}, {"ul
 // among sweep configurations a preset can express (no thickness or rotation
 // variants).
 bool in_sweep(const Summary& s) {
-    const bool expressible = s.s.rotation == SSAO_ROTATION_NOISE_4X4 &&
-                             std::fabs(s.s.thickness - 0.5f * s.s.radius) <= 1e-4f * s.s.radius;
+    const bool expressible = s.s.rotation == SSAO_ROTATION_NOISE_4X4 && !s.thickness_variant;
     return (s.family == Family::kernel || s.family == Family::visibility) && s.kind == Row::Kind::plugin &&
            std::isfinite(s.psnr) && expressible;
 }

@@ -100,8 +100,8 @@ std::vector<Config> sweep() {
     }
     c.push_back(visibility(32, 16, SSAO_BLUR_NONE));
     c.push_back(visibility(64, 32, SSAO_BLUR_NONE));  // converged: what the estimator tends to
-    // Thickness: the one knob the limit says matters most (R/2 is the default).
-    for (float t : {0.25f, 1.0f, 1e30f}) {
+    // Thickness: the one knob the limit says matters most (the default is R).
+    for (float t : {0.25f, 0.5f, 1e30f}) {
         Config v = visibility(8, 8, SSAO_BLUR_DEPTH_AWARE);
         v.thickness_of_radius = t;
         v.name += t > 1e29f ? ", thickness inf" : ", thickness " + std::to_string(t).substr(0, 4) + "R";
