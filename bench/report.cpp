@@ -377,7 +377,7 @@ void write_plot(const Options& o, const std::vector<Summary>& sum) {
     if (std::isfinite(limit_psnr))
         gp << "set arrow from graph 0, first " << limit_psnr << " to graph 1, first " << limit_psnr
            << " nohead dt 2 lw 2 lc rgb '#228833'\nset label 'depth-only limit' at graph 0.02, first " << limit_psnr + 0.4
-           << " tc rgb '#228833'\n";
+           << " tc rgb '#228833'\nset yrange [*:" << limit_psnr + 1.5 << "]\n";  // the line inside the frame
     const char* series =
         "plot 'bench.dat' using ($4==0 ? $1 : 1/0):COL with points pt 7 ps 0.8 lc rgb '#4477aa' title 'kernel', \\\n"
         "     'bench.dat' using ($4==1 ? $1 : 1/0):COL with points pt 7 ps 0.8 lc rgb '#ee7733' title 'visibility', \\\n"
@@ -390,7 +390,7 @@ void write_plot(const Options& o, const std::vector<Summary>& sum) {
         gp << p << "     '" << front_file << "' using 1:2 with lines lw 2 lc rgb '#cc3311' title 'front'\n";
     };
     plot("2", "front_vr.dat");
-    gp << "unset arrow\nunset label\nset ylabel 'PSNR against the depth-only limit (dB)'\n"
+    gp << "unset arrow\nunset label\nset yrange [*:*]\nset ylabel 'PSNR against the depth-only limit (dB)'\n"
           "set title 'against what one depth layer allows'\n";
     plot("3", "front_limit.dat");
     gp << "unset multiplot\n";

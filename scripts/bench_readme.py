@@ -46,6 +46,10 @@ def f(v, n=2):
     return "-" if v != v else ("%." + str(n) + "f") % v
 
 
+def signed(v, n=4):
+    return "-" if v != v else ("%+." + str(n) + "f") % v
+
+
 def mean(v):
     v = list(v)
     return sum(v) / len(v) if v else float("nan")
@@ -164,7 +168,7 @@ def targets(d, rows, base, widths, height, limit, of):
         t.append("- **|bias| of DEFAULT <= 0.003 in the contact shadows of the overhang scene (V_R < 0.5): %s** "
                  "(worst %s %+.4f; the limit there: %s)." % (
                      "met" if abs(contact[worst]) <= 0.003 else "missed", worst, contact[worst],
-                     ", ".join("%s %+.4f" % (k, limit[k]["bias_occluded"]) for k in sorted(contact) if k in limit)))
+                     ", ".join("%s %s" % (k, signed(limit[k]["bias_occluded"])) for k in sorted(contact) if k in limit)))
     spread = {k: (r["cell_spread"], limit[k]["cell_spread"]) for k, r in c.items() if k in limit}
     over = sorted(k for k, (a, b) in spread.items() if a > 1.5 * b)
     ratio = {k: a / b for k, (a, b) in spread.items() if b > 0}
