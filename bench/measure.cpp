@@ -167,6 +167,139 @@ ssao_settings settings_for(const Config& c, const ssao_api& api, float radius) {
     return s;
 }
 
+// One scene at one view and radius, at one size.
+struct Case {
+    std::string scene, label;
+    View view = View::standard;
+    float radius_scale = 1.0f, radius = 0.0f;
+    int width = 0, height = 0;
+    bool main = false;  // the standard view at the scene's radius: the sweep and the full reference run here
+};
+
+Row case_row(const Case& k, const std::string& config, Row::Kind kind) {
+    Row r;
+    r.scene = k.scene;
+    r.config = config;
+    r.kind = kind;
+    r.view = k.view;
+    r.radius_scale = k.radius_scale;
+    r.radius = k.radius;
+    r.width = k.width;
+    r.height = k.height;
+    return r;
+}
+
+ssao_inputs plugin_inputs(const gbuffer::GBuffer& gbuf, const glm::mat4& proj, bool normals_from_depth) {
+    ssao_inputs in{};
+    in.size = sizeof in;
+    in.depth_texture = gbuf.depth_texture();
+    in.normal_texture = normals_from_depth ? 0u : gbuf.normal_texture();
+    in.normal_space = SSAO_NORMAL_SPACE_VIEW;
+    in.normal_packing = SSAO_NORMAL_PACKING_SIGNED;
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r) in.projection[c * 4 + r] = proj[c][r];
+    in.clip_range = SSAO_CLIP_NEGATIVE_ONE_TO_ONE;
+    return in;
+}
+
+// The plugin's configuration c: its row (settings and errors from one frame)
+// and how to time it (the context, inputs and output must outlive the timing).
+Timed plugin_pass(GladGLContext& gl, const ssao_api& api, ssao_context* ctx, const ssao_inputs& in, ssao_output& out,
+                  const Config& c, const Case& k, const Truth* truth, std::vector<Row>& rows) {
+    const ssao_settings s = settings_for(c, api, k.radius);
+    if (api.set_settings(ctx, &s) != SSAO_OK) throw std::runtime_error(c.name + ": " + api.last_error(ctx));
+    if (api.execute(ctx, &in, &out) != SSAO_OK) throw std::runtime_error(api.last_error(ctx));
+    gl.Finish();
+    Row row = case_row(k, c.name, Row::Kind::plugin);
+    row.thickness_variant = c.thickness_of_radius > 0;
+    row.family = c.family;
+    row.s.size = sizeof row.s;
+    api.get_settings(ctx, &row.s);
+    if (truth)
+        fill_errors(row, gl_util::read_texture(gl, out.texture, out.origin[0], out.origin[1], k.width, k.height, 1), *truth);
+    rows.push_back(row);
+    Timed t;
+    t.prepare = [&api, ctx, s, name = c.name] {
+        if (api.set_settings(ctx, &s) != SSAO_OK) throw std::runtime_error(name + ": " + api.last_error(ctx));
+    };
+    t.frame = [&api, ctx, &in, &out] {
+        if (api.execute(ctx, &in, &out) != SSAO_OK) throw std::runtime_error(api.last_error(ctx));
+    };
+    t.gpu_ms = [&api, ctx] {
+        ssao_timings tm{};
+        tm.size = sizeof tm;
+        api.get_timings(ctx, &tm);
+        return tm.available ? double(tm.total_ms) : double(NAN);
+    };
+    return t;
+}
+
+void print_rows(const std::vector<Row>& rows, size_t first) {
+    for (size_t i = first; i < rows.size(); ++i) {
+        const Row& r = rows[i];
+        if (r.kind == Row::Kind::limit) continue;
+        if (r.has_error)
+            std::fprintf(stderr, "    %-52s %8.3f ms CPU (%.3f-%.3f)  PSNR %.2f dB (limit: %.2f dB)\n", r.config.c_str(),
+                         r.cpu_ms, r.cpu_min_ms, r.cpu_max_ms, r.all.psnr, r.vs_limit.psnr);
+        else
+            std::fprintf(stderr, "    %-52s %8.3f ms CPU (%.3f-%.3f)\n", r.config.c_str(), r.cpu_ms, r.cpu_min_ms,
+                         r.cpu_max_ms);
+    }
+}
+
+// What a view of a scene draws: the G-buffer, its matrices and the plugin's inputs.
+struct ViewSetup {
+    const scene::Scene& sc;
+    const gbuffer::GBuffer& gbuf;
+    glm::mat4 view, proj;
+    ssao_inputs in;
+};
+
+// Every configuration (the sweep on the main case), the textbook pass and the
+// floor on one case: their rows, then their CPU time interleaved over rounds.
+void measure_case(GladGLContext& gl, const ssao_api& api, const Options& o, int scale, const ViewSetup& vs,
+                  const Case& k, const Truth* truth, const std::vector<Config>& configs, std::vector<Row>& rows) {
+    ssao_context_desc cd{};
+    cd.size = sizeof cd;
+    cd.get_proc_address = &eglctx::Context::get_proc;
+    ssao_context* ctx = nullptr;
+    if (api.create_context(&cd, &ctx) != SSAO_OK) throw std::runtime_error("create_context failed");
+    ssao_output out{};
+    out.size = sizeof out;
+    textbook::Pass tb(gl, vs.sc.mesh, k.width, k.height, k.radius);
+    tb.render_positions(vs.view, vs.proj);
+    FloorPass fp(gl, k.width, k.height);
+
+    const size_t first = rows.size();
+    std::vector<Timed> passes;
+    for (const Config& c : configs) passes.push_back(plugin_pass(gl, api, ctx, vs.in, out, c, k, truth, rows));
+    // The chapter's pass, same process, same G-buffer normals, same clocks.
+    tb.run(vs.gbuf.normal_texture(), vs.proj);
+    gl.Finish();
+    Row row = case_row(k, "textbook (chapter: position G-buffer, 64 samples, 4x4 box)", Row::Kind::textbook);
+    if (truth) fill_errors(row, tb.read_ao(), *truth);
+    rows.push_back(row);
+    Timed textbook_timed;
+    textbook_timed.frame = [&] { tb.run(vs.gbuf.normal_texture(), vs.proj); };
+    textbook_timed.gpu_ms = [&] { return tb.last_ms(); };
+    passes.push_back(std::move(textbook_timed));
+    // The bandwidth floor: read depth and normal, write R8, nothing else.
+    rows.push_back(case_row(k, "bandwidth floor (read depth + normal, write R8)", Row::Kind::floor));
+    Timed floor_timed;
+    floor_timed.frame = [&] { fp.run(vs.gbuf.depth_texture(), vs.gbuf.normal_texture()); };
+    floor_timed.gpu_ms = [&] { return fp.last_ms(); };
+    passes.push_back(std::move(floor_timed));
+    // A frame at k x the base size costs k^2 as much and varies less:
+    // 1/k of the frames per round (at least one) keeps larger sizes affordable.
+    Options per_size = o;
+    per_size.frames = std::max(1, o.frames / scale);
+    per_size.warmup = std::max(1, o.warmup / scale);
+    time_interleaved(gl, passes, per_size);
+    for (size_t i = 0; i < passes.size(); ++i) set_timing(rows[first + i], passes[i]);
+    api.destroy_context(ctx);
+    print_rows(rows, first);
+}
+
 }  // namespace
 
 void measure_scene(const std::string& path, const Options& o, int scale, const ssao_api& api,
@@ -200,130 +333,31 @@ void measure_scene(const std::string& path, const Options& o, int scale, const s
         gbuffer::GBuffer gbuf(gl, desc, sc.mesh);
         const glm::mat4 view = camera::view_matrix(cam), proj = camera::projection_matrix(cam, aspect);
         gbuf.render(view, proj);
-        ssao_inputs in{};
-        in.size = sizeof in;
-        in.depth_texture = gbuf.depth_texture();
-        in.normal_texture = o.normals_from_depth ? 0u : gbuf.normal_texture();
-        in.normal_space = SSAO_NORMAL_SPACE_VIEW;
-        in.normal_packing = SSAO_NORMAL_PACKING_SIGNED;
-        for (int c = 0; c < 4; ++c)
-            for (int r = 0; r < 4; ++r) in.projection[c * 4 + r] = proj[c][r];
-        in.clip_range = SSAO_CLIP_NEGATIVE_ONE_TO_ONE;
-
+        const ViewSetup vs{sc, gbuf, view, proj, plugin_inputs(gbuf, proj, o.normals_from_depth)};
         for (float rs : scales) {
-            const float radius = scene_radius->radius * rs;
-            const bool main_case = v == View::standard && rs == 1.0f;
-            const std::string label = name + " " + view_name(v) + " " + fmt_scale(rs) + "R";
-            std::fprintf(stderr, "  %s at %dx%d (radius %.3g)\n", label.c_str(), w, h, radius);
-            auto row_for = [&](const std::string& config, Row::Kind kind) {
-                Row r;
-                r.scene = name;
-                r.config = config;
-                r.kind = kind;
-                r.view = v;
-                r.radius_scale = rs;
-                r.radius = radius;
-                r.width = w;
-                r.height = h;
-                return r;
-            };
-
+            Case k;
+            k.scene = name;
+            k.view = v;
+            k.radius_scale = rs;
+            k.radius = scene_radius->radius * rs;
+            k.width = w;
+            k.height = h;
+            k.main = v == View::standard && rs == 1.0f;
+            k.label = name + " " + view_name(v) + " " + fmt_scale(rs) + "R";
+            std::fprintf(stderr, "  %s at %dx%d (radius %.3g)\n", k.label.c_str(), w, h, k.radius);
             Truth truth;
             if (with_errors) {
-                truth = trace(tracer, cam, w, h, radius, main_case ? o.reference_samples : o.extra_samples,
-                              main_case ? o.limit_directions : o.extra_directions, label);
-                Row lim = row_for("depth-only limit (ideal march, T = R/2)", Row::Kind::limit);
+                truth = trace(tracer, cam, w, h, k.radius, k.main ? o.reference_samples : o.extra_samples,
+                              k.main ? o.limit_directions : o.extra_directions, k.label);
+                Row lim = case_row(k, "depth-only limit (ideal march, T = R/2)", Row::Kind::limit);
                 lim.median_ms = lim.p10_ms = lim.p90_ms = lim.wall_ms = NAN;
                 lim.cpu_ms = lim.cpu_min_ms = lim.cpu_max_ms = NAN;
                 fill_errors(lim, truth.limit, truth);
                 rows.push_back(lim);
             }
-            std::vector<Config> configs = with_errors && main_case && o.full_sweep ? sweep : std::vector<Config>{};
+            std::vector<Config> configs = with_errors && k.main && o.full_sweep ? sweep : std::vector<Config>{};
             configs.insert(configs.end(), presets.begin(), presets.end());
-
-            ssao_context_desc cd{};
-            cd.size = sizeof cd;
-            cd.get_proc_address = &eglctx::Context::get_proc;
-            ssao_context* ctx = nullptr;
-            if (api.create_context(&cd, &ctx) != SSAO_OK) throw std::runtime_error("create_context failed");
-            ssao_output out{};
-            out.size = sizeof out;
-            textbook::Pass tb(gl, sc.mesh, w, h, radius);
-            tb.render_positions(view, proj);
-            FloorPass fp(gl, w, h);
-
-            // Rows first (settings and errors from one frame each), then the interleaved timing.
-            const size_t first = rows.size();
-            std::vector<Timed> passes;
-            for (const Config& c : configs) {
-                const ssao_settings s = settings_for(c, api, radius);
-                if (api.set_settings(ctx, &s) != SSAO_OK) throw std::runtime_error(c.name + ": " + api.last_error(ctx));
-                if (api.execute(ctx, &in, &out) != SSAO_OK) throw std::runtime_error(api.last_error(ctx));
-                gl.Finish();
-                Row row = row_for(c.name, Row::Kind::plugin);
-                row.thickness_variant = c.thickness_of_radius > 0;
-                row.family = c.family;
-                row.s.size = sizeof row.s;
-                api.get_settings(ctx, &row.s);
-                if (with_errors)
-                    fill_errors(row, gl_util::read_texture(gl, out.texture, out.origin[0], out.origin[1], w, h, 1), truth);
-                rows.push_back(row);
-                Timed t;
-                t.prepare = [&api, ctx, s, name = c.name] {
-                    if (api.set_settings(ctx, &s) != SSAO_OK) throw std::runtime_error(name + ": " + api.last_error(ctx));
-                };
-                t.frame = [&api, ctx, &in, &out] {
-                    if (api.execute(ctx, &in, &out) != SSAO_OK) throw std::runtime_error(api.last_error(ctx));
-                };
-                t.gpu_ms = [&api, ctx] {
-                    ssao_timings tm{};
-                    tm.size = sizeof tm;
-                    api.get_timings(ctx, &tm);
-                    return tm.available ? double(tm.total_ms) : double(NAN);
-                };
-                passes.push_back(std::move(t));
-            }
-            // The chapter's pass, same process, same G-buffer normals, same clocks.
-            {
-                tb.run(gbuf.normal_texture(), proj);
-                gl.Finish();
-                Row row = row_for("textbook (chapter: position G-buffer, 64 samples, 4x4 box)", Row::Kind::textbook);
-                if (with_errors) fill_errors(row, tb.read_ao(), truth);
-                rows.push_back(row);
-                Timed t;
-                t.frame = [&] { tb.run(gbuf.normal_texture(), proj); };
-                t.gpu_ms = [&] { return tb.last_ms(); };
-                passes.push_back(std::move(t));
-            }
-            // The bandwidth floor: read depth and normal, write R8, nothing else.
-            {
-                rows.push_back(row_for("bandwidth floor (read depth + normal, write R8)", Row::Kind::floor));
-                Timed t;
-                t.frame = [&] { fp.run(gbuf.depth_texture(), gbuf.normal_texture()); };
-                t.gpu_ms = [&] { return fp.last_ms(); };
-                passes.push_back(std::move(t));
-            }
-            // A frame at k x the base size costs k^2 as much and varies less:
-            // 1/k of the frames per round (at least one) keeps larger sizes affordable.
-            Options per_size = o;
-            per_size.frames = std::max(1, o.frames / scale);
-            per_size.warmup = std::max(1, o.warmup / scale);
-            time_interleaved(gl, passes, per_size);
-            for (size_t i = 0; i < passes.size(); ++i) {
-                Row& row = rows[first + i];
-                set_timing(row, passes[i]);
-            }
-            api.destroy_context(ctx);
-            for (size_t i = first; i < rows.size(); ++i) {
-                const Row& r = rows[i];
-                if (r.kind == Row::Kind::limit) continue;
-                if (r.has_error)
-                    std::fprintf(stderr, "    %-52s %8.3f ms CPU (%.3f-%.3f)  PSNR %.2f dB (limit: %.2f dB)\n",
-                                 r.config.c_str(), r.cpu_ms, r.cpu_min_ms, r.cpu_max_ms, r.all.psnr, r.vs_limit.psnr);
-                else
-                    std::fprintf(stderr, "    %-52s %8.3f ms CPU (%.3f-%.3f)\n", r.config.c_str(), r.cpu_ms,
-                                 r.cpu_min_ms, r.cpu_max_ms);
-            }
+            measure_case(gl, api, o, scale, vs, k, with_errors ? &truth : nullptr, configs, rows);
         }
     }
 }
