@@ -162,21 +162,12 @@ bool Layer::point_blocked(const glm::dvec3& s, double thickness) const {
     return count > 0 && blocked_by_planes(p, count, s, thickness, ortho_);
 }
 
-bool Layer::segment_blocked(const glm::dvec3& p, const glm::dvec3& dir, double radius, double thickness) const {
-    // Clip coordinates along the segment: c(s) = c0 + s c1.
-    const glm::dvec4 c0 = proj_ * glm::dvec4(p, 1.0);
-    const glm::dvec4 c1 = proj_ * glm::dvec4(dir, 0.0);
-    if (!(c0.w > 0.0)) return false;
-    double s_end = radius;
-    // Perspective: stop where the segment reaches the eye plane; points that
-    // close to the eye are in front of every surface (open).
-    if (c1.w < 0.0) s_end = std::min(s_end, (1e-6 * c0.w - c0.w) / c1.w);
-    if (!(s_end > 0.0)) return false;
+namespace {
 
-    // Every pixel boundary the projected segment crosses (the projection of a
-    // segment in front of the eye is a segment, monotone in s).
-    thread_local std::vector<double> cuts, crit;  // reused: this runs per direction
-    cuts.clear();
+// Appends the segment parameters in (0, s_end) where the projection of p + s
+// dir crosses a pixel boundary or the image's edge (clip coordinates c0 + s c1).
+void pixel_cuts(const glm::dvec4& c0, const glm::dvec4& c1, double s_end, int width, int height,
+                std::vector<double>& cuts) {
     auto boundaries = [&](double a0, double a1, int size, bool flip) {
         // Window coordinate f(s) = (ndc + 1)/2 * size, or (1 - ndc)/2 * size when flipped.
         auto window = [&](double s) {
@@ -196,14 +187,79 @@ bool Layer::segment_blocked(const glm::dvec3& p, const glm::dvec3& dir, double r
             linear_roots(a0 - ndc * c0.w, a1 - ndc * c1.w, 0.0, s_end, cuts);
         }
     };
-    boundaries(c0.x, c1.x, width_, false);
-    boundaries(c0.y, c1.y, height_, true);
+    boundaries(c0.x, c1.x, width, false);
+    boundaries(c0.y, c1.y, height, true);
+}
+
+// Quick exit: where the texel's own plane t is read over the whole interval
+// (u0, u1) and both ends are on the camera's side of it (n.(S - Q) >= 0,
+// linear in s), its Delta <= 0 throughout, and the farthest plane only lowers
+// Delta: open. Most of every segment is like that.
+bool clearly_open(const Texel& t, const glm::dvec3& p, const glm::dvec3& dir, const Lin& depth, double u0, double u1,
+                  bool ortho) {
+    const double b0 = glm::dot(t.n, p + dir * u0 - t.q), b1 = glm::dot(t.n, p + dir * u1 - t.q);
+    if (!(b0 >= 0.0 && b1 >= 0.0)) return false;
+    if (ortho) return t.n.z > kEdgeOn;
+    auto reads_plane = [&](double s) { return glm::dot(t.n, p + dir * s) < -kEdgeOn * depth.at(s); };
+    return glm::dot(t.n, t.q) < 0.0 && reads_plane(u0) && reads_plane(u1);
+}
+
+// Appends the points in (u0, u1) where the rule's outcome can change: where
+// any plane's Delta crosses eps or the thickness, where any plane switches to
+// its edge-on fallback (the farthest plane can only change at a point where
+// two planes' depths cross, and the outcome only where the farthest one's
+// Delta crosses eps or T, which is one of these).
+void critical_points(const Texel* planes, int count, const glm::dvec3& p, const glm::dvec3& dir, const Lin& depth,
+                     double eps, double thickness, double u0, double u1, bool ortho, std::vector<double>& crit) {
+    for (int j = 0; j < count; ++j) {
+        const Texel& pl = planes[j];
+        const double d_j = -pl.q.z;
+        for (double k_ : {eps, thickness}) {
+            if (!std::isfinite(k_)) continue;
+            linear_roots(depth.v0 - d_j - k_, depth.v1, u0, u1, crit);  // edge-on fallback: depth - d_j = k
+            if (ortho) {
+                // Delta(s) = -n.(p + s dir - q) / n.z
+                const double nz = pl.n.z;
+                if (nz > kEdgeOn)
+                    linear_roots(-glm::dot(pl.n, p - pl.q) / nz - k_, -glm::dot(pl.n, dir) / nz, u0, u1, crit);
+            } else {
+                // Delta = A (C - nq) / C = k  <=>  A (C - nq) - k C = 0, with A = depth, C = n.S.
+                const double nq = glm::dot(pl.n, pl.q);
+                const Lin C{glm::dot(pl.n, p), glm::dot(pl.n, dir)};
+                quadratic_roots(depth.v1 * C.v1, depth.v0 * C.v1 + depth.v1 * (C.v0 - nq) - k_ * C.v1,
+                                depth.v0 * (C.v0 - nq) - k_ * C.v0, u0, u1, crit);
+            }
+        }
+        if (!ortho) {  // the edge-on switch: n.S = -kEdgeOn * depth(S)
+            linear_roots(glm::dot(pl.n, p) + kEdgeOn * depth.v0, glm::dot(pl.n, dir) + kEdgeOn * depth.v1, u0, u1,
+                         crit);
+        }
+    }
+}
+
+}  // namespace
+
+bool Layer::segment_blocked(const glm::dvec3& p, const glm::dvec3& dir, double radius, double thickness) const {
+    // Clip coordinates along the segment: c(s) = c0 + s c1.
+    const glm::dvec4 c0 = proj_ * glm::dvec4(p, 1.0);
+    const glm::dvec4 c1 = proj_ * glm::dvec4(dir, 0.0);
+    if (!(c0.w > 0.0)) return false;
+    double s_end = radius;
+    // Perspective: stop where the segment reaches the eye plane; points that
+    // close to the eye are in front of every surface (open).
+    if (c1.w < 0.0) s_end = std::min(s_end, (1e-6 * c0.w - c0.w) / c1.w);
+    if (!(s_end > 0.0)) return false;
+
+    // Every pixel boundary the projected segment crosses (the projection of a
+    // segment in front of the eye is a segment, monotone in s).
+    thread_local std::vector<double> cuts, crit;  // reused: this runs per direction
+    cuts.clear();
+    pixel_cuts(c0, c1, s_end, width_, height_, cuts);
     cuts.push_back(0.0);
     cuts.push_back(s_end);
     std::sort(cuts.begin(), cuts.end());
 
     const Lin depth{-p.z, -dir.z};
-    const double e_self = kSelfEpsilon;
     for (size_t k = 0; k + 1 < cuts.size(); ++k) {
         const double u0 = cuts[k], u1 = cuts[k + 1];
         if (!(u1 > u0)) continue;
@@ -215,56 +271,11 @@ bool Layer::segment_blocked(const glm::dvec3& p, const glm::dvec3& dir, double r
         Texel planes_here[5];
         const int count = planes(x, y, planes_here);
         if (count == 0) continue;  // sky: open
-        const Texel& t = planes_here[0];
-        const double d_q = -t.q.z, eps = e_self * d_q;
-        // Quick exit: where the texel's own plane is read over the whole interval
-        // and both ends are on the camera's side of it (n.(S - Q) >= 0, linear in s),
-        // its Delta <= 0 throughout, and the farthest plane only lowers Delta: open.
-        // Most of every segment is like that.
-        const double b0 = glm::dot(t.n, p + dir * u0 - t.q), b1 = glm::dot(t.n, p + dir * u1 - t.q);
-        if (b0 >= 0.0 && b1 >= 0.0) {
-            bool plane = false;
-            if (ortho_) {
-                plane = t.n.z > kEdgeOn;
-            } else {
-                auto reads_plane = [&](double s) {
-                    return glm::dot(t.n, p + dir * s) < -kEdgeOn * depth.at(s);
-                };
-                plane = glm::dot(t.n, t.q) < 0.0 && reads_plane(u0) && reads_plane(u1);
-            }
-            if (plane) continue;
-        }
-        // The points in (u0, u1) where the rule's outcome can change: where any
-        // plane's Delta crosses eps or the thickness, where any plane switches to
-        // its edge-on fallback (the farthest plane can only change at a point
-        // where two planes' depths cross, and the outcome only where the
-        // farthest one's Delta crosses eps or T, which is one of these).
+        if (clearly_open(planes_here[0], p, dir, depth, u0, u1, ortho_)) continue;
+        const double eps = kSelfEpsilon * -planes_here[0].q.z;
         crit.clear();
         crit.push_back(u0);
-        for (int j = 0; j < count; ++j) {
-            const Texel& pl = planes_here[j];
-            const double d_j = -pl.q.z;
-            for (double k_ : {eps, thickness}) {
-                if (!std::isfinite(k_)) continue;
-                linear_roots(depth.v0 - d_j - k_, depth.v1, u0, u1, crit);  // edge-on fallback: depth - d_j = k
-                if (ortho_) {
-                    // Delta(s) = -n.(p + s dir - q) / n.z
-                    const double nz = pl.n.z;
-                    if (nz > kEdgeOn)
-                        linear_roots(-glm::dot(pl.n, p - pl.q) / nz - k_, -glm::dot(pl.n, dir) / nz, u0, u1, crit);
-                } else {
-                    // Delta = A (C - nq) / C = k  <=>  A (C - nq) - k C = 0, with A = depth, C = n.S.
-                    const double nq = glm::dot(pl.n, pl.q);
-                    const Lin C{glm::dot(pl.n, p), glm::dot(pl.n, dir)};
-                    quadratic_roots(depth.v1 * C.v1, depth.v0 * C.v1 + depth.v1 * (C.v0 - nq) - k_ * C.v1,
-                                    depth.v0 * (C.v0 - nq) - k_ * C.v0, u0, u1, crit);
-                }
-            }
-            if (!ortho_) {  // the edge-on switch: n.S = -kEdgeOn * depth(S)
-                linear_roots(glm::dot(pl.n, p) + kEdgeOn * depth.v0, glm::dot(pl.n, dir) + kEdgeOn * depth.v1, u0,
-                             u1, crit);
-            }
-        }
+        critical_points(planes_here, count, p, dir, depth, eps, thickness, u0, u1, ortho_, crit);
         crit.push_back(u1);
         std::sort(crit.begin(), crit.end());
         for (size_t j = 0; j + 1 < crit.size(); ++j) {
