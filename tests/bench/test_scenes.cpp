@@ -35,8 +35,14 @@ double v_up(const raytrace::Tracer& t, glm::vec3 p, float radius) {
 TEST_SUITE("scenes") {
 
 TEST_CASE("each scene is small, has its own camera and an AO radius hint") {
-    for (const auto& [name, radius] : {std::pair<const char*, float>{"overhang.gltf", 0.4f}, {"creases.gltf", 0.25f},
-                                       {"clutter.gltf", 0.4f}}) {
+    struct Expected {
+        const char* name;
+        float radius;
+    };
+    for (const Expected& e : {Expected{"overhang.gltf", 0.4f}, Expected{"creases.gltf", 0.25f},
+                              Expected{"clutter.gltf", 0.4f}}) {
+        const char* name = e.name;
+        const float radius = e.radius;
         CAPTURE(name);
         const Loaded l = load(name);
         CHECK(l.sc.mesh.triangle_count() >= 100);
