@@ -191,14 +191,22 @@ Outcome walk(int argc, const char* const* argv, const Valued& valued, const Swit
     return help ? Outcome::Help : version ? Outcome::Version : Outcome::Run;
 }
 
-Outcome walk(int argc, const char* const* argv, const Valued& valued, const Switches& switches,
-             std::string& scene_path) {
-    bool seen = false;
-    return walk(argc, argv, valued, switches, [&](const std::string& arg) {
+namespace {
+
+// Takes the one positional argument into scene_path; refuses a second.
+Positional one_scene_file(std::string& scene_path) {
+    return [&scene_path, seen = false](const std::string& arg) mutable {
         if (seen) fail("more than one scene file given: " + quoted(scene_path) + " and " + quoted(arg));
         scene_path = arg;
         seen = true;
-    });
+    };
+}
+
+}  // namespace
+
+Outcome walk(int argc, const char* const* argv, const Valued& valued, const Switches& switches,
+             std::string& scene_path) {
+    return walk(argc, argv, valued, switches, one_scene_file(scene_path));
 }
 
 Outcome parse(int argc, const char* const* argv, const Valued& valued, const Switches& switches,
@@ -215,14 +223,7 @@ Outcome parse(int argc, const char* const* argv, const Valued& valued, const Swi
 
 Outcome parse(int argc, const char* const* argv, const Valued& valued, const Switches& switches,
               std::string& scene_path, std::string& error, const std::function<void()>& check) {
-    try {
-        const Outcome outcome = walk(argc, argv, valued, switches, scene_path);
-        if (outcome == Outcome::Run && check) check();
-        return outcome;
-    } catch (const Error& e) {
-        error = e.message;
-        return Outcome::Error;
-    }
+    return parse(argc, argv, valued, switches, one_scene_file(scene_path), error, check);
 }
 
 int finish_main(const std::string& tool, Outcome parsed, const std::string& error,
