@@ -5,7 +5,7 @@
 #pragma once
 
 #include "plan.h"
-#include "programs.h"
+#include "pass_uniforms.h"
 
 #include <ssao/ssao.h>
 

@@ -7,11 +7,11 @@ namespace ssao_impl {
 namespace {
 
 const ProgramInfo kPrograms[] = {
-    {ProgramId::ao, k_ao_frag, SharedCode::common_and_sampling, "ao.frag", "ssao: ao program"},
+    {ProgramId::ao, k_kernel_frag, SharedCode::common_and_sampling, "kernel.frag", "ssao: ao program"},
     {ProgramId::visibility, k_visibility_frag, SharedCode::common_and_sampling, "visibility.frag",
      "ssao: visibility program"},
     {ProgramId::blur, k_blur_frag, SharedCode::common, "blur.frag", "ssao: blur program"},
-    {ProgramId::downsample, k_downsample_frag, SharedCode::common_and_sampling, "downsample.frag",
+    {ProgramId::downsample, k_grid_frag, SharedCode::common_and_sampling, "grid.frag",
      "ssao: downsample program"},
     {ProgramId::upsample, k_upsample_frag, SharedCode::common, "upsample.frag", "ssao: upsample program"},
     {ProgramId::normals_view, k_normals_view_frag, SharedCode::common_and_sampling, "normals_view.frag",

@@ -1,4 +1,4 @@
-// passes.cpp - execute: check and analyse the inputs, plan the frame, update
+// execute.cpp - execute: check and analyse the inputs, plan the frame, update
 // the resources and constants the plan needs, and run it, all inside one GL
 // state guard (and, with KHR_debug, one debug group).
 #include "constants.h"

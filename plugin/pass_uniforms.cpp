@@ -1,6 +1,6 @@
-// programs.cpp - the per-pass uniforms. A new per-pass uniform adds a Pass
+// pass_uniforms.cpp - the per-pass uniforms. A new per-pass uniform adds a Pass
 // field (plan.h) and its two lines below.
-#include "programs.h"
+#include "pass_uniforms.h"
 
 namespace ssao_impl {
 

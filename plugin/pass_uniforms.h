@@ -1,4 +1,4 @@
-// programs.h - the per-pass uniforms every pass program may declare, set
+// pass_uniforms.h - the per-pass uniforms every pass program may declare, set
 // from the plan's Pass by the runner (the programs' sources are in
 // shader_source.cpp, their compiled variants in program_cache.cpp).
 #pragma once
