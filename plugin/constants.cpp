@@ -3,6 +3,7 @@
 
 #include "context.h"
 #include "kernel.h"
+#include "resources.h"
 #include "settings.h"
 
 #include <cmath>
@@ -75,12 +76,18 @@ void upload_frame_block(ssao_context& ctx, const SsaoFrame& frame) {
         ctx.last_frame = frame;
         ctx.frame_uploaded = true;
     }
-    gl.BindBufferBase(GL_UNIFORM_BUFFER, SSAO_UBO_FRAME, ctx.ubo_frame);
-    gl.BindBufferBase(GL_UNIFORM_BUFFER, SSAO_UBO_KERNEL, ctx.ubo_kernel);
 }
 
-void upload_kernel(ssao_context& ctx) {
+KernelKey kernel_key(const ssao_settings& s) {
+    return KernelKey{s.sample_count, static_cast<uint32_t>(s.kernel_shape), static_cast<uint32_t>(s.distribution),
+                     s.seed, static_cast<uint32_t>(s.method)};
+}
+
+void update_kernel(ssao_context& ctx, GlStateGuard& guard) {
+    const KernelKey key = kernel_key(ctx.settings);
+    if (ctx.kernel_uploaded && key == ctx.kernel_uploaded_for) return;
     const GladGLContext& gl = ctx.gl;
+    use_default_unpack(gl, guard);
     SsaoKernel block{};
     // The kernel estimator reads sample points, the visibility estimator directions.
     const std::vector<glm::vec3> kernel = ctx.settings.method == SSAO_METHOD_VISIBILITY
@@ -99,7 +106,8 @@ void upload_kernel(ssao_context& ctx) {
     gl.TexImage2D(GL_TEXTURE_2D, 0, GL_RG32F, SSAO_NOISE_SIZE, SSAO_NOISE_SIZE, 0, GL_RG, GL_FLOAT, noise.data());
     gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
     label_object(ctx, GL_TEXTURE, ctx.noise_texture, kLabelNoise);
-    ctx.kernel_dirty = false;
+    ctx.kernel_uploaded_for = key;
+    ctx.kernel_uploaded = true;
 }
 
 }  // namespace ssao_impl

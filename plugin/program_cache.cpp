@@ -4,6 +4,7 @@
 
 #include "context.h"
 #include "debug.h"
+#include "pass_table.h"
 #include "shader_source.h"
 #include "uniforms.h"
 
@@ -141,22 +142,23 @@ ssao_status compile_base_programs(ssao_context& ctx) {
 ssao_status compile_plan_programs(ssao_context& ctx, const FramePlan& plan) {
     for (int i = 0; i < plan.pass_count; ++i) {
         const Pass& pass = plan.passes[i];
-        if (pass.program == ProgramId::none) continue;
-        if (const CompiledProgram* known = find(ctx, pass.program, pass.variant)) {
+        const ProgramId program = program_of(pass.kind);
+        if (program == ProgramId::none) continue;
+        if (const CompiledProgram* known = find(ctx, program, pass.variant)) {
             if (known->failed)
-                return ctx.fail(SSAO_ERROR_SHADER, std::string("program ") + program_info(pass.program).file_name +
+                return ctx.fail(SSAO_ERROR_SHADER, std::string("program ") + program_info(program).file_name +
                                                        " (variant " + std::to_string(pass.variant) +
                                                        ") failed to compile on an earlier execute; it is not retried");
             continue;
         }
-        const ssao_status st = add_program(ctx, pass.program, pass.variant);
+        const ssao_status st = add_program(ctx, program, pass.variant);
         if (st != SSAO_OK) return st;
     }
     return SSAO_OK;
 }
 
 const CompiledProgram& program_for(const ssao_context& ctx, const Pass& pass) {
-    const CompiledProgram* p = find(ctx, pass.program, pass.variant);
+    const CompiledProgram* p = find(ctx, program_of(pass.kind), pass.variant);
     return p ? *p : ctx.programs.front();  // compile_plan_programs ran: always found
 }
 

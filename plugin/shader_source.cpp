@@ -1,24 +1,12 @@
 #include "shader_source.h"
 
+#include "pass_table.h"
+
 #include <ssao_shaders_embedded.h>
 
 namespace ssao_impl {
 
 namespace {
-
-const ProgramInfo kPrograms[] = {
-    {ProgramId::ao, k_kernel_frag, SharedCode::common_and_sampling, "kernel.frag", "ssao: ao program"},
-    {ProgramId::visibility, k_visibility_frag, SharedCode::common_and_sampling, "visibility.frag",
-     "ssao: visibility program"},
-    {ProgramId::blur, k_blur_frag, SharedCode::common, "blur.frag", "ssao: blur program"},
-    {ProgramId::downsample, k_grid_frag, SharedCode::common_and_sampling, "grid.frag",
-     "ssao: downsample program"},
-    {ProgramId::upsample, k_upsample_frag, SharedCode::common, "upsample.frag", "ssao: upsample program"},
-    {ProgramId::normals_view, k_normals_view_frag, SharedCode::common_and_sampling, "normals_view.frag",
-     "ssao: normals view program"},
-};
-static_assert(sizeof kPrograms / sizeof kPrograms[0] == static_cast<size_t>(ProgramId::count),
-              "one row per ProgramId");
 
 // Indexed by bit number (plan.h, namespace variant).
 const char* const kVariantNames[] = {
@@ -42,12 +30,6 @@ std::string assemble(const char* body, SharedCode shared, uint32_t variant) {
 }
 
 }  // namespace
-
-const ProgramInfo& program_info(ProgramId id) {
-    for (const ProgramInfo& p : kPrograms)
-        if (p.id == id) return p;
-    return kPrograms[0];  // not reached: every id has its row
-}
 
 const char* variant_name(int bit) { return bit >= 0 && bit < variant::kBits ? kVariantNames[bit] : "?"; }
 

@@ -1,8 +1,8 @@
 // shader_source.h - the GLSL text of every pass program and compiled variant:
-// which embedded fragment shader a ProgramId runs, what shared code goes in
-// front of it, and the `#define SSAO_<NAME>` lines of a variant (plan.h,
-// namespace variant). No GL here: tests compile every variant of every
-// program from these strings (tests/unit/test_shader_variants.cpp).
+// the program's embedded fragment shader (its row in pass_table.cpp), the
+// shared code in front of it, and the `#define SSAO_<NAME>` lines of a
+// variant (plan.h, namespace variant). No GL here: tests compile every variant
+// of every program from these strings (tests/unit/test_shader_variants.cpp).
 #pragma once
 
 #include "plan.h"
@@ -14,17 +14,6 @@ namespace ssao_impl {
 
 // The shared GLSL a fragment shader is built on, after the constants header.
 enum class SharedCode { none, common, common_and_sampling };
-
-struct ProgramInfo {
-    ProgramId id;
-    const char* fragment_source;  // the embedded shader (after the constants header and `shared`)
-    SharedCode shared;
-    const char* file_name;        // for compile errors
-    const char* label;            // glObjectLabel name
-};
-
-// The row of `id` (id != none).
-const ProgramInfo& program_info(ProgramId id);
 
 // The define a variant bit turns on, without its SSAO_ prefix ("GRID_INPUT", ...).
 const char* variant_name(int bit);

@@ -7,6 +7,7 @@
 #include <doctest/doctest.h>
 
 #include "egl_context.h"
+#include "pass_table.h"
 #include "plan.h"
 #include "settings.h"
 #include "shader_source.h"
@@ -117,8 +118,8 @@ std::set<std::pair<ProgramId, uint32_t>> planned_pairs() {
                             a.output_texture = a.multiply_output ? 9u : 0u;
                             const FramePlan plan = plan_frame(s, a);
                             for (int i = 0; i < plan.pass_count; ++i)
-                                if (plan.passes[i].program != ProgramId::none)
-                                    pairs.insert({plan.passes[i].program, plan.passes[i].variant});
+                                if (program_of(plan.passes[i].kind) != ProgramId::none)
+                                    pairs.insert({program_of(plan.passes[i].kind), plan.passes[i].variant});
                         }
     return pairs;
 }
@@ -149,8 +150,8 @@ TEST_CASE("shader variants: each bit's define is in the source and no other") {
     for (int bit = 0; bit < variant::kBits; ++bit) {
         CAPTURE(bit);
         const std::string define = std::string("#define SSAO_") + variant_name(bit) + " 1\n";
-        CHECK(fragment_source(ProgramId::ao, 1u << bit).find(define) != std::string::npos);
-        CHECK(fragment_source(ProgramId::ao, 0).find(define) == std::string::npos);
+        CHECK(fragment_source(ProgramId::kernel, 1u << bit).find(define) != std::string::npos);
+        CHECK(fragment_source(ProgramId::kernel, 0).find(define) == std::string::npos);
     }
     // #version must stay the first line for GLSL to accept the source.
     CHECK(fragment_source(ProgramId::blur, (1u << variant::kBits) - 1u).rfind("#version 330 core\n", 0) == 0);
