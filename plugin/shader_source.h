@@ -40,6 +40,8 @@ std::string vertex_source();
 // #version, the variant's defines, the constants header, the shared code and
 // the pass's own code. Each file starts with `#line 1 N`, N its index in
 // vertex_files() / fragment_files(): a driver's "N:LINE" is line LINE of file N.
+// (Mesa keeps N for syntax errors only; the errors it finds later it reports
+// as "0:LINE", LINE still the line of the file that holds the error.)
 std::string fragment_source(ProgramId id, uint32_t variant);
 
 // The file of each source-string number of vertex_source() and of
