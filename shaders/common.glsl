@@ -141,7 +141,8 @@ float depth_step(vec4 p, float d) {
     // storing d, and view_position goes back through it, so no float depth is
     // finer than one ulp of NDC z (reverse-Z without a [0,1] clip range keeps
     // standard-Z precision; README "Depth precision").
-    if (consts.unorm_depth_step == 0.0 && consts.ndc_per_depth == 2.0) ulp = max(ulp, abs(d * 2.0 - 1.0) * 0.5 * 1.1920929e-7);
+    if (consts.unorm_depth_step == 0.0 && consts.ndc_per_depth == 2.0)
+        ulp = max(ulp, abs(d * 2.0 - 1.0) * 0.5 * 1.1920929e-7);
     return abs(dz_dndc) * consts.ndc_per_depth * ulp;
 }
 

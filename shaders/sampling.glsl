@@ -129,7 +129,8 @@ vec2 fixed_rotation(ivec2 vpx) {
 vec2 rotation(ivec2 vpx) {
     vec2 r = fixed_rotation(vpx);
 #ifdef SSAO_FRAME_NOISE
-    r = vec2(r.x * consts.frame_rotation.x - r.y * consts.frame_rotation.y, r.x * consts.frame_rotation.y + r.y * consts.frame_rotation.x);
+    vec2 f = consts.frame_rotation;
+    r = vec2(r.x * f.x - r.y * f.y, r.x * f.y + r.y * f.x);
 #endif
     return r;
 }
@@ -202,10 +203,12 @@ float pixel_size_at(float z) {
 #endif
 
 #ifdef SSAO_FADE
-// Distance fade (settings fade_start = consts.fade_start, fade_end = consts.fade_end): the
+// Distance fade (settings fade_start and fade_end, in consts): the
 // weight of "no occlusion" at view-space P, linear in view depth -P.z (the
 // distance along the view axis): 0 up to fade_start, 1 from fade_end on.
-float fade_weight(vec3 P) { return clamp((-P.z - consts.fade_start) / (consts.fade_end - consts.fade_start), 0.0, 1.0); }
+float fade_weight(vec3 P) {
+    return clamp((-P.z - consts.fade_start) / (consts.fade_end - consts.fade_start), 0.0, 1.0);
+}
 
 // AO blended towards 1 by the fade weight; exactly `ao` before fade_start.
 float apply_fade(float ao, vec3 P) {
@@ -231,7 +234,7 @@ bool load_surface(out Surface sf) {
     sf.radius = consts.radius;
     sf.radius_scale = 1.0;
 #ifdef SSAO_RADIUS_PIXELS
-    // radius_pixels (consts.radius_pixels) pixels at this depth, at most `radius`; a
+    // consts.radius_pixels pixels at this depth, at most `radius`; a
     // degenerate size (NaN) keeps `radius`.
     float pixels = consts.radius_pixels * pixel_size_at(sf.P.z);
     sf.radius = pixels < consts.radius ? pixels : consts.radius;

@@ -8,6 +8,7 @@
 
 #include "egl_context.h"
 #include "plan.h"
+#include "shader_build.h"
 #include "shader_source.h"
 #include "uniforms.h"
 
@@ -91,17 +92,12 @@ int index_of(const std::vector<const char*>& files, const std::string& file) {
     return -1;
 }
 
+// The driver's log of `source`, "" when it compiles.
 std::string compile_log(GladGLContext& gl, GLenum type, const std::string& source) {
-    const GLuint shader = gl.CreateShader(type);
-    const char* src = source.c_str();
-    gl.ShaderSource(shader, 1, &src, nullptr);
-    gl.CompileShader(shader);
-    GLint ok = 0;
-    gl.GetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-    char log[4096] = {};
-    if (!ok) gl.GetShaderInfoLog(shader, sizeof log, nullptr, log);
+    GLuint shader = 0;
+    const std::string log = shader_build::compile_log(gl, type, source, shader);
     gl.DeleteShader(shader);
-    return ok ? "" : log;
+    return log;
 }
 
 std::unique_ptr<eglctx::Context> gl_context() {
@@ -286,21 +282,8 @@ TEST_CASE("shader source: every SsaoFrame and SsaoKernel member sits at the same
     auto egl = gl_context();
     GladGLContext& gl = egl->gl();
     // The visibility pass reads both blocks; std140 keeps every member active.
-    const GLuint vs = gl.CreateShader(GL_VERTEX_SHADER), fs = gl.CreateShader(GL_FRAGMENT_SHADER);
-    const std::string vsrc = vertex_source(), fsrc = fragment_source(ProgramId::visibility, 0);
-    const char* v = vsrc.c_str();
-    const char* f = fsrc.c_str();
-    gl.ShaderSource(vs, 1, &v, nullptr);
-    gl.ShaderSource(fs, 1, &f, nullptr);
-    gl.CompileShader(vs);
-    gl.CompileShader(fs);
-    const GLuint program = gl.CreateProgram();
-    gl.AttachShader(program, vs);
-    gl.AttachShader(program, fs);
-    gl.LinkProgram(program);
-    GLint linked = 0;
-    gl.GetProgramiv(program, GL_LINK_STATUS, &linked);
-    REQUIRE(linked);
+    GLuint program = 0;
+    REQUIRE(shader_build::link_pass_program(gl, ProgramId::visibility, 0, program) == "");
     std::map<std::string, size_t> glsl;
     size_t members = 0;
     for (const auto& [block, size] : {std::pair<const char*, size_t>{"SsaoFrame", sizeof(SsaoFrame)},
@@ -325,8 +308,6 @@ TEST_CASE("shader source: every SsaoFrame and SsaoKernel member sits at the same
         }
     }
     gl.DeleteProgram(program);
-    gl.DeleteShader(vs);
-    gl.DeleteShader(fs);
     CHECK(members == cpp.size());  // every member of the blocks is in the table above
     CHECK(glsl == cpp);
 }
