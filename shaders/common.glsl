@@ -2,14 +2,18 @@
 // writes, the sky test, view positions (through the inverse projection or
 // from view z), and the depth step used for the format-aware bias.
 
+// The texel of the host's texture `tex` (depth or normals) at viewport pixel
+// vpx. Variant MULTISAMPLE: the host's textures are
+// GL_TEXTURE_2D_MULTISAMPLE and every pixel reads sample u_sample_index
+// (Pass::sample_index). Only the passes that read the host's textures (the
+// grid pass, the upsample) have this variant.
 #ifdef SSAO_MULTISAMPLE
-// (1.2) The host's depth is a GL_TEXTURE_2D_MULTISAMPLE: every pixel reads
-// sample u_sample_index (Pass::sample_index). Only the passes that read the
-// host's textures (the grid pass, the upsample) have this variant.
 uniform sampler2DMS u_depth_tex;
 uniform int u_sample_index;
+#define SSAO_INPUT_TEXEL(tex, vpx) texelFetch(tex, (vpx) + consts.viewport_origin, u_sample_index)
 #else
 uniform sampler2D u_depth_tex;
+#define SSAO_INPUT_TEXEL(tex, vpx) texelFetch(tex, (vpx) + consts.viewport_origin, 0)
 #endif
 
 // Where viewport pixel (0,0) (or grid texel (0,0)) lands in the pass's render target.
@@ -20,11 +24,7 @@ uniform ivec2 u_target_origin;
 uniform int u_scale;
 
 // The host's depth at viewport pixel vpx.
-#ifdef SSAO_MULTISAMPLE
-float input_depth(ivec2 vpx) { return texelFetch(u_depth_tex, vpx + consts.viewport_origin, u_sample_index).r; }
-#else
-float input_depth(ivec2 vpx) { return texelFetch(u_depth_tex, vpx + consts.viewport_origin, 0).r; }
-#endif
+float input_depth(ivec2 vpx) { return SSAO_INPUT_TEXEL(u_depth_tex, vpx).r; }
 
 // The grid: ceil(viewport / scale) texels, so an odd size's last block is
 // partial and still has its texel.

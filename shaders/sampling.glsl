@@ -5,18 +5,14 @@
 // the surface a sampling pass shades.
 
 #ifdef SSAO_MULTISAMPLE
-uniform sampler2DMS u_normal_tex;  // (1.2) multisampled: sample u_sample_index (common.glsl)
+uniform sampler2DMS u_normal_tex;  // multisampled: sample u_sample_index (common.glsl)
 #else
 uniform sampler2D u_normal_tex;
 #endif
 uniform sampler2D u_noise_tex;
 
 // The host's stored normal at viewport pixel vpx.
-#ifdef SSAO_MULTISAMPLE
-vec3 input_normal(ivec2 vpx) { return texelFetch(u_normal_tex, vpx + consts.viewport_origin, u_sample_index).xyz; }
-#else
-vec3 input_normal(ivec2 vpx) { return texelFetch(u_normal_tex, vpx + consts.viewport_origin, 0).xyz; }
-#endif
+vec3 input_normal(ivec2 vpx) { return SSAO_INPUT_TEXEL(u_normal_tex, vpx).xyz; }
 
 // The stored normal `stored` in view space, scaled so that its largest
 // component is 1 (not yet unit length); false when it is zero, NaN or infinite.
