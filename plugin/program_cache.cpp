@@ -9,12 +9,16 @@
 #include "uniforms.h"
 
 #include <string>
+#include <vector>
 
 namespace ssao_impl {
 
 namespace {
 
-bool compile(ssao_context& ctx, GLenum type, const std::string& source, const char* name, GLuint& out) {
+// `files`: the file of each source-string number of `source`, named in the
+// error so that the driver's "N:LINE" can be read.
+bool compile(ssao_context& ctx, GLenum type, const std::string& source, const char* name,
+             const std::vector<const char*>& files, GLuint& out) {
     const GladGLContext& gl = ctx.gl;
     GLuint sh = gl.CreateShader(type);
     const char* src = source.c_str();
@@ -26,7 +30,7 @@ bool compile(ssao_context& ctx, GLenum type, const std::string& source, const ch
         char log[4096] = {};
         gl.GetShaderInfoLog(sh, sizeof log, nullptr, log);
         gl.DeleteShader(sh);
-        ctx.fail(SSAO_ERROR_SHADER, std::string("shader ") + name + " failed to compile: " + log);
+        ctx.fail(SSAO_ERROR_SHADER, compile_error_message(name, files, log));
         return false;
     }
     out = sh;
@@ -64,12 +68,13 @@ void set_sampler_units(const GladGLContext& gl, GLuint program) {
     gl.UseProgram(static_cast<GLuint>(previous));
 }
 
-ssao_status link(ssao_context& ctx, const std::string& fragment, const char* name, GLuint& program) {
+ssao_status link(ssao_context& ctx, const std::string& fragment, const char* name,
+                 const std::vector<const char*>& fragment_files, GLuint& program) {
     const GladGLContext& gl = ctx.gl;
     GLuint vs = 0, fs = 0;
-    if (!compile(ctx, GL_VERTEX_SHADER, vertex_source(), "fullscreen.vert", vs))
+    if (!compile(ctx, GL_VERTEX_SHADER, vertex_source(), "fullscreen.vert", vertex_files(), vs))
         return SSAO_ERROR_SHADER;
-    if (!compile(ctx, GL_FRAGMENT_SHADER, fragment, name, fs)) {
+    if (!compile(ctx, GL_FRAGMENT_SHADER, fragment, name, fragment_files, fs)) {
         gl.DeleteShader(vs);
         return SSAO_ERROR_SHADER;
     }
@@ -106,7 +111,7 @@ ssao_status add_program(ssao_context& ctx, ProgramId id, uint32_t variant) {
     compiled.variant = variant;
     // Room first: a push_back that throws after linking would leak the program.
     ctx.programs.reserve(ctx.programs.size() + 1);
-    const ssao_status st = link(ctx, fragment_source(id, variant), name.c_str(), compiled.program);
+    const ssao_status st = link(ctx, fragment_source(id, variant), name.c_str(), fragment_files(id), compiled.program);
     if (st != SSAO_OK) {
         if (compiled.program) ctx.gl.DeleteProgram(compiled.program);
         compiled.program = 0;
