@@ -59,10 +59,10 @@ struct Options {
     std::optional<ssao_method> method;
     std::optional<float> thickness;  // visibility: view units
     std::optional<int> steps;        // visibility: steps per direction
-    // (1.2) Distance fade (view depth; --fade-end 0 turns a scene hint's fade
+    // Distance fade (view depth; --fade-end 0 turns a scene hint's fade
     // off) and the radius in viewport pixels (0 = off).
     std::optional<float> fade_start, fade_end, radius_pixels;
-    // (1.2) inputs.frame_index of the first frame (0 = the fixed noise), and
+    // inputs.frame_index of the first frame (0 = the fixed noise), and
     // how many consecutive frame indices ao.png/ao.exr average (1 = none).
     uint32_t frame_index = 0;
     int accumulate = 1;
@@ -70,7 +70,7 @@ struct Options {
     // no extra execute, no file). Names: debug_view_text.h.
     ssao_debug_view debug_view = SSAO_DEBUG_VIEW_NONE;
 
-    // (issue 12) MSAA inputs and the multiply output mode.
+    // MSAA inputs and the multiply output mode.
     int msaa = 0;                    // > 1: the plugin reads a G-buffer rendered with this many samples
     uint32_t sample_index = 0;       // the sample it reads, < msaa
     bool output_multiply = false;    // lit_ao.png: the plugin multiplies AO into the lit image

@@ -319,7 +319,7 @@ public:
         out_.normals.insert(out_.normals.end(), wnrm.begin(), wnrm.end());
         // No reserve(size + n) here: called once per node instance, an exact
         // reserve reallocates (and copies) the whole index list every time,
-        // quadratic in the instances (found by fuzz_scene, issue 11); the
+        // quadratic in the instances (fuzz_scene finds it); the
         // vector's own geometric growth is linear.
         for (uint32_t i : tri) out_.indices.push_back(base + i);
         return true;

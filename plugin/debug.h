@@ -17,7 +17,7 @@ struct DebugState {
     bool objects_labelled = false;  // the framebuffer (labelled after its first bind)
 };
 
-// Labels of the library's objects (programs are labelled from programs.cpp).
+// Labels of the library's objects (programs carry their pass-table label: pass_table.cpp).
 constexpr const char* kLabelFramebuffer = "ssao: framebuffer";
 constexpr const char* kLabelVertexArray = "ssao: vertex array";  // + " <n>", unique in the process
 constexpr const char* kLabelSampler = "ssao: sampler";

@@ -1,6 +1,6 @@
-// inputs.cpp - validation and analysis of ssao_inputs (moved unchanged out of
-// execute): every refusal happens here, before anything of the library's
-// changes, so a refused call leaves the library's own output as it was.
+// inputs.cpp - validation and analysis of ssao_inputs: every refusal of the
+// inputs happens here, before anything of the library's changes, so a
+// refused call leaves the library's own output as it was.
 #include "inputs.h"
 
 #include "context.h"

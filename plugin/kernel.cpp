@@ -101,7 +101,7 @@ std::vector<glm::vec2> make_noise(uint32_t seed) {
 }
 
 float pixel_hash(uint32_t x, uint32_t y, uint32_t seed) {
-    // PCG-style integer hash; shaders/ao.frag computes exactly this.
+    // PCG-style integer hash; shaders/sampling.glsl pixel_hash computes exactly this.
     uint32_t v = x * 1973u + y * 9277u + seed * 26699u;
     v = v * 747796405u + 2891336453u;
     uint32_t w = ((v >> ((v >> 28u) + 4u)) ^ v) * 277803737u;

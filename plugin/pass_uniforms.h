@@ -1,6 +1,6 @@
 // pass_uniforms.h - the per-pass uniforms every pass program may declare, set
-// from the plan's Pass by the runner (the programs' sources are in
-// shader_source.cpp, their compiled variants in program_cache.cpp).
+// from the plan's Pass by the runner (a program's shader and label are its
+// row in pass_table.cpp, its compiled variants in program_cache.cpp).
 #pragma once
 
 #include "plan.h"

@@ -191,7 +191,7 @@ bool read_channel(const std::string& path, const std::vector<std::string>& prefe
         if (x.header.pixel_types[c] == TINYEXR_PIXELTYPE_HALF) x.header.requested_pixel_types[c] = TINYEXR_PIXELTYPE_FLOAT;
     // tinyexr (1.0.1) frees a failed load with FreeEXRImage, which frees the
     // channel buffers only up to image.num_channels, set after a successful
-    // decode: set it now so a truncated file leaks nothing (issue 11).
+    // decode: set it now so a truncated file leaks nothing.
     x.image.num_channels = x.header.num_channels;
     const char* err = nullptr;
     if (LoadEXRImageFromMemory(&x.image, &x.header, x.bytes.data(), x.bytes.size(), &err) != TINYEXR_SUCCESS) {

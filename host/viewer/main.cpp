@@ -51,6 +51,66 @@ void write_screenshot(viewer::Window& window, const std::string& dir, long frame
     std::fflush(stdout);
 }
 
+scene::Scene load_scene(const viewer::Options& o, const std::string& path) {
+    scene::Scene sc;
+    scene::Limits limits;
+    limits.allow_outside_files = o.allow_outside_files;
+    std::string error;
+    if (!scene::load(path, sc, error, limits)) throw std::runtime_error("cannot load the scene: " + error);
+    if (sc.mesh.triangle_count() == 0) throw std::runtime_error("'" + path + "' has nothing to draw (no triangles)");
+    return sc;
+}
+
+// Plays the script's events due at `frame`, each said as it happens so a
+// scripted run leaves a log to check. False when one quits.
+bool play_script(const std::vector<viewer::ScriptEvent>& script, size_t& next, long frame, viewer::Controls& controls,
+                 viewer::Window& window, int width, int height) {
+    for (; next < script.size() && script[next].frame <= frame; ++next) {
+        const viewer::ScriptEvent& e = script[next];
+        switch (e.kind) {
+            case viewer::ScriptEvent::Kind::Press:
+                std::printf("frame %ld: press %s\n", frame, viewer::key_name(e.key).c_str());
+                controls.key(e.key, GLFW_PRESS);
+                break;
+            case viewer::ScriptEvent::Kind::Release:
+                std::printf("frame %ld: release %s\n", frame, viewer::key_name(e.key).c_str());
+                controls.key(e.key, GLFW_RELEASE);
+                break;
+            case viewer::ScriptEvent::Kind::Resize:
+                std::printf("frame %ld: resize %d %d\n", frame, e.width, e.height);
+                window.request_size(e.width, e.height);
+                window.poll();
+                break;
+            case viewer::ScriptEvent::Kind::Memory:
+                std::printf("frame %ld: %dx%d, resident %ld KiB\n", frame, width, height, resident_kib());
+                std::fflush(stdout);
+                break;
+            case viewer::ScriptEvent::Kind::Quit:
+                std::printf("frame %ld: quit\n", frame);
+                std::fflush(stdout);
+                return false;
+        }
+    }
+    std::fflush(stdout);
+    return true;
+}
+
+// Follows the window's framebuffer size into the renderer and the camera.
+// False while it is minimised: nothing to draw until it comes back.
+bool follow_size(viewer::Window& window, viewer::Renderer& renderer, viewer::Controls& controls, int& width,
+                 int& height) {
+    int w = 0, h = 0;
+    window.framebuffer_size(w, h);
+    if (w <= 0 || h <= 0) return false;
+    if (w != width || h != height) {
+        width = w;
+        height = h;
+        renderer.resize(width, height);
+        controls.set_aspect(float(width) / float(height));
+    }
+    return true;
+}
+
 int run(const viewer::Options& o) {
     std::vector<viewer::ScriptEvent> script;
     std::string error;
@@ -58,14 +118,9 @@ int run(const viewer::Options& o) {
 
     const std::string scene_path = o.scene_path.empty() ? scene::default_path() : o.scene_path;
     plugin::Library library;
-    if (!library.open_default(o.plugin_path, error))
-        throw std::runtime_error(error);
+    if (!library.open_default(o.plugin_path, error)) throw std::runtime_error(error);
     const ssao_api& api = library.api();
-    scene::Scene sc;
-    scene::Limits limits;
-    limits.allow_outside_files = o.allow_outside_files;
-    if (!scene::load(scene_path, sc, error, limits)) throw std::runtime_error("cannot load the scene: " + error);
-    if (sc.mesh.triangle_count() == 0) throw std::runtime_error("'" + scene_path + "' has nothing to draw (no triangles)");
+    const scene::Scene sc = load_scene(o, scene_path);
 
     cli::Options base;
     base.scene_path = o.scene_path;
@@ -89,34 +144,7 @@ int run(const viewer::Options& o) {
     auto last = std::chrono::steady_clock::now();
     for (long frame = 0; o.frames == 0 || frame < o.frames; ++frame) {
         window->poll();
-        for (; next_event < script.size() && script[next_event].frame <= frame; ++next_event) {
-            const viewer::ScriptEvent& e = script[next_event];
-            // Each key and resize said as it happens, so a scripted run leaves a log to check.
-            switch (e.kind) {
-                case viewer::ScriptEvent::Kind::Press:
-                    std::printf("frame %ld: press %s\n", frame, viewer::key_name(e.key).c_str());
-                    controls.key(e.key, GLFW_PRESS);
-                    break;
-                case viewer::ScriptEvent::Kind::Release:
-                    std::printf("frame %ld: release %s\n", frame, viewer::key_name(e.key).c_str());
-                    controls.key(e.key, GLFW_RELEASE);
-                    break;
-                case viewer::ScriptEvent::Kind::Resize:
-                    std::printf("frame %ld: resize %d %d\n", frame, e.width, e.height);
-                    window->request_size(e.width, e.height);
-                    window->poll();
-                    break;
-                case viewer::ScriptEvent::Kind::Memory:
-                    std::printf("frame %ld: %dx%d, resident %ld KiB\n", frame, width, height, resident_kib());
-                    std::fflush(stdout);
-                    break;
-                case viewer::ScriptEvent::Kind::Quit:
-                    std::printf("frame %ld: quit\n", frame);
-                    std::fflush(stdout);
-                    return 0;
-            }
-        }
-        std::fflush(stdout);
+        if (!play_script(script, next_event, frame, controls, *window, width, height)) return 0;
         if (window->should_close() || controls.quit()) break;
 
         const auto now = std::chrono::steady_clock::now();
@@ -124,18 +152,9 @@ int run(const viewer::Options& o) {
                                                     : kScriptSecondsPerFrame;
         last = now;
         controls.advance(seconds);
-
-        int w = 0, h = 0;
-        window->framebuffer_size(w, h);
-        if (w <= 0 || h <= 0) {   // minimised: nothing to draw until it comes back
+        if (!follow_size(*window, renderer, controls, width, height)) {
             window->wait(0.1);
             continue;
-        }
-        if (w != width || h != height) {
-            width = w;
-            height = h;
-            renderer.resize(width, height);
-            controls.set_aspect(float(width) / float(height));
         }
 
         renderer.render(controls.camera(), controls.state());

@@ -111,7 +111,8 @@
  *   ARB_clip_control), timer queries and GL_TEXTURE_TARGET queries (4.5) are
  *   used when present.
  * - Debug names: with KHR_debug (GL 4.3 or the extension) execute wraps its
- *   work in the debug group "ssao" and each pass in its own ("ssao: ao", ...);
+ *   work in the debug group "ssao" and each pass in its own ("ssao: grid",
+ *   "ssao: kernel", ...: see ssao_pass);
  *   pushes and pops are balanced on every return, so the debug-group stack
  *   depth is unchanged, and no group is pushed when the stack has no room for
  *   two more. The library's GL objects carry glObjectLabel names "ssao: ...".
@@ -260,7 +261,7 @@ typedef enum ssao_method {
 } ssao_method;
 
 /** At which resolution the sampling pass runs (settings.resolution). Below full
- * resolution a downsample pass picks one real texel of each 2x2 (4x4) block of
+ * resolution the grid pass picks one real texel of each 2x2 (4x4) block of
  * the viewport (never an average of depths), the sampling pass and the blur
  * run on that grid, and a depth-aware upsample writes every viewport pixel
  * (docs/api.md, "Half resolution"). */
@@ -508,7 +509,7 @@ typedef struct ssao_timings {
     uint32_t size;               /**< sizeof(ssao_timings) */
     uint32_t available;          /**< 1 when the fields below hold a measured frame */
     uint64_t frame;              /**< which successful execute (1 = first) they were measured on */
-    double ao_ms;                /**< sampling pass (or clear) and downsample: every pass that is not a blur */
+    double ao_ms;                /**< the grid pass, the estimator (or the normals view) and the clear */
     double blur_ms;              /**< all blur passes and the upsample */
     double total_ms;             /**< whole execute on the GPU (= the sum of pass_ms) */
     /** 1.1 */
