@@ -1,5 +1,6 @@
 #include "gl_fixture.h"
 
+#include <cstdlib>
 #include <stdexcept>
 #include <utility>
 
@@ -47,21 +48,32 @@ std::unique_ptr<eglctx::Context> make_debug_context(int major, int minor) {
     return egl;
 }
 
+ssao_status create_default_context(const ssao_api& api, ssao_context** out) {
+    ssao_context_desc desc{};
+    desc.size = sizeof desc;
+    desc.get_proc_address = &eglctx::Context::get_proc;
+    return api.create_context(&desc, out);
+}
+
 Fixture::Fixture(int major, int minor) {
     egl_ = make_debug_context(major, minor);
     std::string error;
     if (!lib_.open(plugin::Library::default_path(), error)) throw std::runtime_error(error);
     errors_ = std::make_unique<DebugErrors>(gl());
-    ssao_context_desc desc{};
-    desc.size = sizeof desc;
-    desc.get_proc_address = &eglctx::Context::get_proc;
-    const ssao_status st = api().create_context(&desc, &ctx_);
+    const ssao_status st = create_default_context(api(), &ctx_);
     if (st != SSAO_OK) throw std::runtime_error(std::string("create_context: ") + api().status_string(st));
 }
 
 Fixture::~Fixture() {
     if (!textures_.empty()) gl().DeleteTextures(static_cast<GLsizei>(textures_.size()), textures_.data());
     api().destroy_context(ctx_);
+}
+
+MesaGl33Override::MesaGl33Override() { setenv("MESA_GL_VERSION_OVERRIDE", "3.3", 1); }
+
+Gl33Fixture::Gl33Fixture() : Fixture(3, 3) {
+    const std::string version = reinterpret_cast<const char*>(gl().GetString(GL_VERSION));
+    if (version.rfind("3.3", 0) != 0) throw std::runtime_error("asked for GL 3.3 core, got GL_VERSION " + version);
 }
 
 GLuint Fixture::make_depth(GLenum internal, int w, int h, const std::vector<float>& depth) {

@@ -35,6 +35,10 @@ GLuint make_host_program(GladGLContext& gl);
 // A debug EGL context (4.5 core unless asked otherwise) or an exception.
 std::unique_ptr<eglctx::Context> make_debug_context(int major = 4, int minor = 5);
 
+// create_context on the current GL context with the default description
+// (EGL's get_proc_address, no log, default settings); *out is the new context.
+ssao_status create_default_context(const ssao_api& api, ssao_context** out);
+
 class Fixture {
 public:
     explicit Fixture(int major = 4, int minor = 5);
@@ -74,6 +78,19 @@ private:
     ssao_context* ctx_ = nullptr;
     std::unique_ptr<DebugErrors> errors_;
     std::vector<GLuint> textures_;
+};
+
+// Sets MESA_GL_VERSION_OVERRIDE=3.3 for the rest of the process: Mesa's EGL
+// hands out 4.5 when 3.3 is asked for, unless this is set before the context.
+struct MesaGl33Override {
+    MesaGl33Override();
+};
+
+// The fixture on a genuine GL 3.3 core context (GL_VERSION starts with 3.3,
+// else the constructor throws, naming the version it got).
+class Gl33Fixture : private MesaGl33Override, public Fixture {
+public:
+    Gl33Fixture();
 };
 
 }  // namespace testgl
