@@ -80,8 +80,7 @@ TEST_CASE("4x MSAA inputs whose samples equal the single-sample G-buffer give it
     const GBuffer g = analytic::render(crease_scene(), proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, kW, kH);
     for (GLenum depth_format : {GLenum(GL_DEPTH_COMPONENT32F), GLenum(GL_DEPTH24_STENCIL8), GLenum(GL_DEPTH_COMPONENT16)}) {
         CAPTURE(depth_format);
-        const msaa::Textures single{fx.make_depth(depth_format, kW, kH, g.depth),
-                                    fx.make_normals(GL_RGBA16F, kW, kH, g.normal)};
+        const msaa::Textures single = fx.upload(g, depth_format);
         const msaa::Textures ms = msaa::make(gl, {single}, kW, kH, 4, depth_format, GL_RGBA16F);
         for (ssao_method method : {SSAO_METHOD_KERNEL, SSAO_METHOD_VISIBILITY})
             for (ssao_resolution res : {SSAO_RESOLUTION_FULL, SSAO_RESOLUTION_HALF, SSAO_RESOLUTION_QUARTER}) {
@@ -129,10 +128,8 @@ TEST_CASE("4x MSAA depth without a normal texture: each sample_index gives its o
     const auto proj = projection();
     const GBuffer a = analytic::render(crease_scene(), proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, kW, kH);
     const GBuffer b = analytic::render(floor_scene(), proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, kW, kH);
-    const msaa::Textures ta{fx.make_depth(GL_DEPTH_COMPONENT32F, kW, kH, a.depth),
-                            fx.make_normals(GL_RGBA16F, kW, kH, a.normal)};
-    const msaa::Textures tb{fx.make_depth(GL_DEPTH_COMPONENT32F, kW, kH, b.depth),
-                            fx.make_normals(GL_RGBA16F, kW, kH, b.normal)};
+    const msaa::Textures ta = fx.upload(a);
+    const msaa::Textures tb = fx.upload(b);
     const msaa::Textures ms = msaa::make(gl, {ta, tb}, kW, kH, 4, GL_DEPTH_COMPONENT32F, GL_RGBA16F);
     for (ssao_method method : {SSAO_METHOD_KERNEL, SSAO_METHOD_VISIBILITY})
         for (ssao_resolution res : {SSAO_RESOLUTION_FULL, SSAO_RESOLUTION_HALF}) {
@@ -166,10 +163,8 @@ TEST_CASE("sample_index picks the sample: samples holding two different scenes g
     const auto proj = projection();
     const GBuffer a = analytic::render(crease_scene(), proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, kW, kH);
     const GBuffer b = analytic::render(floor_scene(), proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, kW, kH);
-    const msaa::Textures ta{fx.make_depth(GL_DEPTH_COMPONENT32F, kW, kH, a.depth),
-                            fx.make_normals(GL_RGBA16F, kW, kH, a.normal)};
-    const msaa::Textures tb{fx.make_depth(GL_DEPTH_COMPONENT32F, kW, kH, b.depth),
-                            fx.make_normals(GL_RGBA16F, kW, kH, b.normal)};
+    const msaa::Textures ta = fx.upload(a);
+    const msaa::Textures tb = fx.upload(b);
     // Samples 0 and 2 hold the crease, 1 and 3 the floor.
     const msaa::Textures ms = msaa::make(gl, {ta, tb}, kW, kH, 4, GL_DEPTH_COMPONENT32F, GL_RGBA16F);
     for (ssao_resolution res : {SSAO_RESOLUTION_FULL, SSAO_RESOLUTION_HALF}) {
@@ -202,8 +197,7 @@ TEST_CASE("MSAA inputs: mixed targets and mismatched sample counts and sample_in
     auto& gl = fx.gl();
     const auto proj = projection();
     const GBuffer g = analytic::render(crease_scene(), proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, kW, kH);
-    const msaa::Textures single{fx.make_depth(GL_DEPTH_COMPONENT32F, kW, kH, g.depth),
-                                fx.make_normals(GL_RGBA16F, kW, kH, g.normal)};
+    const msaa::Textures single = fx.upload(g);
     const msaa::Textures ms4 = msaa::make(gl, {single}, kW, kH, 4, GL_DEPTH_COMPONENT32F, GL_RGBA16F);
     // The driver may round a sample count up (llvmpipe: 2 -> 4): the counts are read back.
     const msaa::Textures ms2 = msaa::make(gl, {single}, kW, kH, 2, GL_DEPTH_COMPONENT32F, GL_RGBA16F);
@@ -277,8 +271,7 @@ TEST_CASE("with MSAA inputs the multisample bindings of units 0..3 and every lis
     auto& gl = fx.gl();
     const auto proj = projection();
     const GBuffer g = analytic::render(crease_scene(), proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, kW, kH);
-    const msaa::Textures single{fx.make_depth(GL_DEPTH24_STENCIL8, kW, kH, g.depth),
-                                fx.make_normals(GL_RGBA16F, kW, kH, g.normal)};
+    const msaa::Textures single = fx.upload(g, GL_DEPTH24_STENCIL8);
     const msaa::Textures ms = msaa::make(gl, {single}, kW, kH, 4, GL_DEPTH24_STENCIL8, GL_RGBA16F);
     // The host's own textures on both targets of every unit the library uses.
     GLuint host2d[4] = {}, host_ms[4] = {};

@@ -57,8 +57,7 @@ TEST_CASE("GL 3.3: MSAA inputs give the single-sample AO and errors are refused 
     const int w = 32, h = 24;
     const auto proj = analytic::perspective(kFov, double(w) / h, 0.1, 100.0);
     const GBuffer g = analytic::render(crease_scene(), proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, w, h);
-    const msaa::Textures single{fx.make_depth(GL_DEPTH_COMPONENT32F, w, h, g.depth),
-                                fx.make_normals(GL_RGBA8, w, h, g.normal)};
+    const msaa::Textures single = fx.upload(g, GL_DEPTH_COMPONENT32F, GL_RGBA8);
     const msaa::Textures ms = msaa::make(gl, {single}, w, h, 4, GL_DEPTH_COMPONENT32F, GL_RGBA8);
     ssao_settings s = testscenes::make(16, SSAO_BLUR_DEPTH_AWARE);
     s.output_format = SSAO_OUTPUT_R16F;

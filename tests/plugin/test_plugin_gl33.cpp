@@ -17,6 +17,7 @@
 
 #include "child_process.h"
 #include "cpu_ssao.h"
+#include "crease_textures.h"
 #include "debug_groups.h"
 #include "gl_fixture.h"
 #include "other_context.h"
@@ -69,10 +70,9 @@ TEST_CASE("a GL 3.3 core context works: AO from D24S8 depth matches the CPU form
 TEST_CASE("below GL 4.5 a texture of another target is refused (INVALID_TEXTURE) and the host's binding kept") {
     testgl::Gl33Fixture fx;
     auto& gl = fx.gl();
-    const auto proj = analytic::perspective(kFov, 1.0, 0.1, 100.0);
-    const GBuffer g = analytic::render(crease_scene(), proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, 16, 16);
-    const GLuint depth = fx.make_depth(GL_DEPTH_COMPONENT32F, 16, 16, g.depth);
-    const GLuint normal = fx.make_normals(GL_RGBA16F, 16, 16, g.normal);
+    const testscenes::CreaseTextures scene(fx, 16);
+    const glm::dmat4& proj = scene.proj;
+    const GLuint depth = scene.depth, normal = scene.normal;
     GLuint array = 0;
     gl.GenTextures(1, &array);
     gl.BindTexture(GL_TEXTURE_2D_ARRAY, array);
@@ -198,13 +198,10 @@ TEST_CASE("GL 3.3: create_context with the host's program flagged for deletion l
     CHECK(current == 0);
     CHECK(fx.gl_errors().empty());
     // Its samplers were still set: it renders the same AO as the fixture's context.
-    const auto proj = analytic::perspective(kFov, 1.0, 0.1, 100.0);
-    const GBuffer g = analytic::render(crease_scene(), proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, 16, 16);
-    const auto reference = fx.run(g, proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE);
+    const testscenes::CreaseTextures scene(fx, 16);
+    const auto reference = fx.run(scene.g, scene.proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE);
     REQUIRE(reference.status == SSAO_OK);
-    const GLuint depth = fx.make_depth(GL_DEPTH_COMPONENT32F, 16, 16, g.depth);
-    const GLuint normal = fx.make_normals(GL_RGBA16F, 16, 16, g.normal);
-    const ssao_inputs in = fx.inputs(depth, normal, proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE);
+    const ssao_inputs& in = scene.in;
     ssao_output out{};
     out.size = sizeof out;
     REQUIRE(fx.api().execute(second, &in, &out) == SSAO_OK);

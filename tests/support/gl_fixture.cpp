@@ -118,6 +118,13 @@ GLuint Fixture::make_normals(GLenum internal, int w, int h, const std::vector<gl
     return t;
 }
 
+Textures Fixture::upload(const analytic::GBuffer& g, GLenum depth_format, GLenum normal_format) {
+    Textures t;
+    t.depth = make_depth(depth_format, g.width, g.height, g.depth);
+    t.normal = make_normals(normal_format, g.width, g.height, g.normal);
+    return t;
+}
+
 std::vector<float> Fixture::read_red(GLuint texture, int w, int h) {
     auto& g = gl();
     GLuint fbo = 0;
@@ -157,9 +164,8 @@ ssao_inputs Fixture::inputs(GLuint depth, GLuint normal, const glm::dmat4& proj,
 Fixture::Result Fixture::run(const analytic::GBuffer& g, const glm::dmat4& proj, ssao_clip_range clip,
                              GLenum depth_format) {
     Result r;
-    const GLuint depth = make_depth(depth_format, g.width, g.height, g.depth);
-    const GLuint normal = make_normals(GL_RGBA16F, g.width, g.height, g.normal);
-    ssao_inputs in = inputs(depth, normal, proj, clip);
+    const Textures t = upload(g, depth_format);
+    ssao_inputs in = inputs(t.depth, t.normal, proj, clip);
     r.output.size = sizeof r.output;
     r.status = api().execute(ctx_, &in, &r.output);
     if (r.status == SSAO_OK) r.ao = read_red(r.output.texture, g.width, g.height);

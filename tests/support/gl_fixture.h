@@ -39,6 +39,11 @@ std::unique_ptr<eglctx::Context> make_debug_context(int major = 4, int minor = 5
 // (EGL's get_proc_address, no log, default settings); *out is the new context.
 ssao_status create_default_context(const ssao_api& api, ssao_context** out);
 
+// A G-buffer's depth and normal textures.
+struct Textures {
+    GLuint depth = 0, normal = 0;
+};
+
 class Fixture {
 public:
     explicit Fixture(int major = 4, int minor = 5);
@@ -58,6 +63,9 @@ public:
     GLuint make_depth(GLenum internal, int w, int h, const std::vector<float>& depth);
     // Normal texture: RGBA16F signed (default), RGBA32F, or RGBA8 packed to [0,1].
     GLuint make_normals(GLenum internal, int w, int h, const std::vector<glm::vec3>& normals);
+    // The G-buffer's depth and normals as textures of those formats (owned by the fixture).
+    Textures upload(const analytic::GBuffer& g, GLenum depth_format = GL_DEPTH_COMPONENT32F,
+                    GLenum normal_format = GL_RGBA16F);
     // Reads the red channel of a texture's level 0 (any colour format) as floats.
     std::vector<float> read_red(GLuint texture, int w, int h);
 
