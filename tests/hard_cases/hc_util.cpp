@@ -263,8 +263,20 @@ Diff diff(const std::vector<float>& a, const std::vector<float>& b, const std::f
     return d;
 }
 
+analytic::Scene crease_scene(double scale, bool boxes) {
+    return to_view(crease_world(scale, boxes), crease_view(scale));
+}
+
+analytic::Scene sky_scene() {
+    analytic::Scene s;
+    s.add_quad({-2, -2, -6}, {3, 0, 0}, {0, 3, 0});
+    s.add_box({0.5, -1.0, -5.0}, {1.5, 0.5, -4.0});
+    s.add_quad({-3, 0.5, -7}, {2, 0, 0}, {0, 0, 2});
+    return s;
+}
+
 analytic::GBuffer crease_gbuffer(const glm::dmat4& proj, ssao_clip_range clip, int w, int h) {
-    return analytic::render(to_view(crease_world(), crease_view()), proj, clip, w, h);
+    return analytic::render(crease_scene(), proj, clip, w, h);
 }
 
 }  // namespace hc

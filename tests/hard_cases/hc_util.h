@@ -106,8 +106,14 @@ glm::dmat4 crease_view(double scale = 1.0, glm::dvec3 eye_offset = glm::dvec3(0.
 analytic::Scene crease_world(double scale = 1.0, bool boxes = true, glm::dvec3 offset = glm::dvec3(0.0));
 // The scene's quads mapped into view space.
 analytic::Scene to_view(const analytic::Scene& world, const glm::dmat4& view);
-// The crease scene with its boxes, seen from crease_view(), rendered w x h
-// with `proj`: the setup most cases start from.
+// The crease scene (times scale, with or without its boxes) in view space,
+// seen from crease_view(scale).
+analytic::Scene crease_scene(double scale = 1.0, bool boxes = true);
+// Two quads and a box floating in the sky, and a ledge (view space): a scene
+// whose geometry borders the sky everywhere.
+analytic::Scene sky_scene();
+// The crease scene with its boxes rendered w x h with `proj`: the setup most
+// cases start from.
 analytic::GBuffer crease_gbuffer(const glm::dmat4& proj, ssao_clip_range clip, int w, int h);
 
 // Compares two AO images over a mask: counts and worst difference.

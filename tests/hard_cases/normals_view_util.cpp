@@ -1,5 +1,7 @@
 #include "normals_view_util.h"
 
+#include "conventions.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -7,26 +9,20 @@
 namespace nfd {
 
 std::vector<Convention> conventions(double aspect, double hh) {
-    const double n = 0.1, f = 100.0, fov = hc::kFov, t = std::tan(fov / 2);
-    const ssao_clip_range gl = SSAO_CLIP_NEGATIVE_ONE_TO_ONE, zo = SSAO_CLIP_ZERO_TO_ONE;
-    const double hw = hh * aspect;
-    return {
-        {"GL [-1,1] D32F", analytic::perspective(fov, aspect, n, f), gl, GL_DEPTH_COMPONENT32F, false, t},
-        {"GL [-1,1] D24", analytic::perspective(fov, aspect, n, f), gl, GL_DEPTH_COMPONENT24, false, t},
-        {"GL [-1,1] D24S8", analytic::perspective(fov, aspect, n, f), gl, GL_DEPTH24_STENCIL8, false, t},
-        {"GL [-1,1] D16", analytic::perspective(fov, aspect, n, f), gl, GL_DEPTH_COMPONENT16, false, t},
-        {"[0,1] D32F", analytic::perspective_zo(fov, aspect, n, f), zo, GL_DEPTH_COMPONENT32F, false, t},
-        {"reverse-Z [0,1] D32F", analytic::reverse_z(fov, aspect, n, f), zo, GL_DEPTH_COMPONENT32F, false, t},
-        {"reverse-Z [0,1] D32FS8", analytic::reverse_z(fov, aspect, n, f), zo, GL_DEPTH32F_STENCIL8, false, t},
-        {"reverse-Z infinite D32F", analytic::reverse_z_infinite(fov, aspect, n), zo, GL_DEPTH_COMPONENT32F, false, t},
-        {"GL infinite D32F", analytic::infinite(fov, aspect, n), gl, GL_DEPTH_COMPONENT32F, false, t},
-        {"GL infinite D24", analytic::infinite(fov, aspect, n), gl, GL_DEPTH_COMPONENT24, false, t},
-        {"reverse-Z [-1,1] D32F", hc::reverse_z_gl(fov, aspect, n, f), gl, GL_DEPTH_COMPONENT32F, false, t},
-        {"ortho GL [-1,1] D32F", analytic::orthographic(hw, hh, n, f), gl, GL_DEPTH_COMPONENT32F, true, hh},
-        {"ortho GL [-1,1] D16", analytic::orthographic(hw, hh, n, f), gl, GL_DEPTH_COMPONENT16, true, hh},
-        {"ortho [0,1] D32F", hc::ortho_zo(hw, hh, n, f), zo, GL_DEPTH_COMPONENT32F, true, hh},
-        {"ortho reverse [0,1] D32F", hc::ortho_reverse(hw, hh, n, f), zo, GL_DEPTH_COMPONENT32F, true, hh},
-    };
+    const double n = 0.1, f = 100.0;
+    const auto all =
+        hc::perspective_conventions(aspect, n, f,
+                                    {"GL [-1,1] D32F", "GL [-1,1] D24", "GL [-1,1] D24S8", "GL [-1,1] D16",
+                                     "[0,1] D32F", "reverse-Z [0,1] D32F", "reverse-Z [0,1] D32FS8",
+                                     "reverse-Z infinite D32F", "GL infinite D32F", "GL infinite D24",
+                                     "reverse-Z [-1,1] D32F"}) +
+        hc::ortho_conventions(hh * aspect, hh, n, f,
+                              {"ortho GL [-1,1] D32F", "ortho GL [-1,1] D16", "ortho [0,1] D32F",
+                               "ortho reverse [0,1] D32F"});
+    std::vector<Convention> out;
+    for (const hc::Convention& c : all)
+        out.push_back({c.name, c.proj, c.clip, c.format, c.ortho, c.ortho ? hh : std::tan(hc::kFov / 2)});
+    return out;
 }
 
 ViewResult run_view(testgl::Fixture& fx, const analytic::GBuffer& g, const glm::dmat4& proj, ssao_clip_range clip,

@@ -9,6 +9,7 @@
 // cases hold with it on.
 #include <doctest/doctest.h>
 
+#include "conventions.h"
 #include "hc_util.h"
 
 #include <algorithm>
@@ -66,7 +67,7 @@ TEST_CASE("radius in pixels: orthographic - every pixel gets the view-unit radiu
     HC_EACH_METHOD(method);
     testgl::Fixture fx;
     const int W = 64, H = 48;
-    const Scene scene = hc::to_view(hc::crease_world(), hc::crease_view());
+    const Scene scene = hc::crease_scene();
     const double hw = 4.0, hh = 3.0;  // 0.125 view units per pixel both ways
     struct C { const char* name; glm::dmat4 proj; ssao_clip_range clip; };
     const C cases[] = {
@@ -205,22 +206,16 @@ TEST_CASE("radius in pixels: hard cases with it on - every depth convention alik
     testgl::Fixture fx;
     const int W = 64, H = 48;
     const double aspect = double(W) / H, n = 0.1, f = 100.0;
-    const Scene scene = hc::to_view(hc::crease_world(), hc::crease_view());
-    struct C { const char* name; glm::dmat4 proj; ssao_clip_range clip; GLenum format; };
-    const C cases[] = {
-        {"GL [-1,1] D32F", analytic::perspective(hc::kFov, aspect, n, f), SSAO_CLIP_NEGATIVE_ONE_TO_ONE, GL_DEPTH_COMPONENT32F},
-        {"GL [-1,1] D24", analytic::perspective(hc::kFov, aspect, n, f), SSAO_CLIP_NEGATIVE_ONE_TO_ONE, GL_DEPTH_COMPONENT24},
-        {"[0,1] D32F", analytic::perspective_zo(hc::kFov, aspect, n, f), SSAO_CLIP_ZERO_TO_ONE, GL_DEPTH_COMPONENT32F},
-        {"reverse-Z [0,1] D32F", analytic::reverse_z(hc::kFov, aspect, n, f), SSAO_CLIP_ZERO_TO_ONE, GL_DEPTH_COMPONENT32F},
-        {"reverse-Z infinite D32F", analytic::reverse_z_infinite(hc::kFov, aspect, n), SSAO_CLIP_ZERO_TO_ONE, GL_DEPTH_COMPONENT32F},
-        {"GL infinite D24", analytic::infinite(hc::kFov, aspect, n), SSAO_CLIP_NEGATIVE_ONE_TO_ONE, GL_DEPTH_COMPONENT24},
-        {"reverse-Z [-1,1] D32F", hc::reverse_z_gl(hc::kFov, aspect, n, f), SSAO_CLIP_NEGATIVE_ONE_TO_ONE, GL_DEPTH_COMPONENT32F},
-    };
+    const Scene scene = hc::crease_scene();
+    const auto cases = hc::perspective_conventions(aspect, n, f,
+                                                   {"GL [-1,1] D32F", "GL [-1,1] D24", "[0,1] D32F",
+                                                    "reverse-Z [0,1] D32F", "reverse-Z infinite D32F",
+                                                    "GL infinite D24", "reverse-Z [-1,1] D32F"});
     ssao_settings s = hc::make(16, SSAO_BLUR_NONE, SSAO_ROTATION_HASH, 2.0f, method);
     s.radius_pixels = 10.0f;
     fx.settings(s);
     std::vector<float> ref;
-    for (const C& c : cases) {
+    for (const hc::Convention& c : cases) {
         const std::string cname = c.name;
         CAPTURE(cname);
         const GBuffer g = analytic::render(scene, c.proj, c.clip, W, H);

@@ -3,6 +3,7 @@
 #include <doctest/doctest.h>
 
 #include "cpu_ssao.h"
+#include "conventions.h"
 #include "hc_util.h"
 
 #include <algorithm>
@@ -75,7 +76,7 @@ TEST_CASE("scale: the scene modelled 1000 times larger with a 1000 times larger 
             const auto proj = c.reverse ? analytic::reverse_z(hc::kFov, double(W) / H, n, f)
                                         : analytic::perspective(hc::kFov, double(W) / H, n, f);
             fx.settings(hc::make(16, SSAO_BLUR_DEFAULT, SSAO_ROTATION_NOISE_4X4, static_cast<float>(1.0 * k), method));
-            const GBuffer g = analytic::render(hc::to_view(hc::crease_world(k), hc::crease_view(k)), proj, c.clip, W, H);
+            const GBuffer g = analytic::render(hc::crease_scene(k), proj, c.clip, W, H);
             hc::RunOptions o;
             o.depth_format = c.fmt;
             const auto r = hc::run(fx, g, proj, c.clip, o);
@@ -331,7 +332,7 @@ TEST_CASE("screen borders: panning the projection by whole pixels shifts the AO 
     testgl::Fixture fx;
     const int W = 64, H = 48;
     const auto proj = analytic::perspective(hc::kFov, double(W) / H, 0.1, 100.0);
-    const Scene scene = hc::to_view(hc::crease_world(), hc::crease_view());
+    const Scene scene = hc::crease_scene();
     const GBuffer g0 = analytic::render(scene, proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, W, H);
     struct Case { ssao_rotation rot; int kx, ky; };
     // NONE: any shift. NOISE_4X4 tiles from the viewport's corner: only shifts
@@ -378,22 +379,13 @@ TEST_CASE("sky: far-plane pixels output exactly 1 in every convention and do not
     HC_EACH_METHOD(method);
     testgl::Fixture fx;
     const int W = 48, H = 40;
-    Scene scene;  // two quads and a box floating in the sky, and a corner
-    scene.add_quad({-2, -2, -6}, {3, 0, 0}, {0, 3, 0});
-    scene.add_box({0.5, -1.0, -5.0}, {1.5, 0.5, -4.0});
-    scene.add_quad({-3, 0.5, -7}, {2, 0, 0}, {0, 0, 2});
-    struct Case { const char* name; glm::dmat4 proj; ssao_clip_range clip; GLenum fmt; };
-    const double aspect = double(W) / H;
-    const Case cases[] = {
-        {"GL D24", analytic::perspective(hc::kFov, aspect, 0.1, 100), SSAO_CLIP_NEGATIVE_ONE_TO_ONE, GL_DEPTH_COMPONENT24},
-        {"GL D16", analytic::perspective(hc::kFov, aspect, 0.1, 100), SSAO_CLIP_NEGATIVE_ONE_TO_ONE, GL_DEPTH_COMPONENT16},
-        {"[0,1] D32F", analytic::perspective_zo(hc::kFov, aspect, 0.1, 100), SSAO_CLIP_ZERO_TO_ONE, GL_DEPTH_COMPONENT32F},
-        {"reverse-Z D32F", analytic::reverse_z(hc::kFov, aspect, 0.1, 100), SSAO_CLIP_ZERO_TO_ONE, GL_DEPTH_COMPONENT32F},
-        {"reverse-Z infinite D32F", analytic::reverse_z_infinite(hc::kFov, aspect, 0.1), SSAO_CLIP_ZERO_TO_ONE, GL_DEPTH_COMPONENT32F},
-        {"GL infinite D24S8", analytic::infinite(hc::kFov, aspect, 0.1), SSAO_CLIP_NEGATIVE_ONE_TO_ONE, GL_DEPTH24_STENCIL8},
-        {"ortho GL D32F", analytic::orthographic(4, 3.3, 0.1, 50), SSAO_CLIP_NEGATIVE_ONE_TO_ONE, GL_DEPTH_COMPONENT32F},
-    };
-    for (const Case& c : cases) {
+    const Scene scene = hc::sky_scene();
+    const auto cases =
+        hc::perspective_conventions(double(W) / H, 0.1, 100.0,
+                                    {"GL [-1,1] D24", "GL [-1,1] D16", "[0,1] D32F", "reverse-Z [0,1] D32F",
+                                     "reverse-Z infinite D32F", "GL infinite D24S8"}) +
+        hc::ortho_conventions(4.0, 3.3, 0.1, 50.0, {"ortho GL [-1,1] D32F"});
+    for (const hc::Convention& c : cases) {
         const std::string cname = c.name;
         CAPTURE(cname);
         const GBuffer g = analytic::render(scene, c.proj, c.clip, W, H);
@@ -401,7 +393,7 @@ TEST_CASE("sky: far-plane pixels output exactly 1 in every convention and do not
         for (int i = 0; i < W * H; ++i) sky += g.sky(i % W, i / W);
         REQUIRE(sky > W * H / 4);
         hc::RunOptions o;
-        o.depth_format = c.fmt;
+        o.depth_format = c.format;
         fx.settings(hc::make(16, SSAO_BLUR_NONE, SSAO_ROTATION_HASH, 0.8f, method));
         const auto raw = hc::run(fx, g, c.proj, c.clip, o);
         REQUIRE(raw.status == SSAO_OK);
@@ -578,7 +570,7 @@ TEST_CASE("radius: the wall case is non-increasing in the radius") {
     const int W = 96, H = 72;
     const glm::dmat4 view = hc::crease_view();
     const auto proj = analytic::perspective(hc::kFov, double(W) / H, 0.1, 100.0);
-    const GBuffer g = analytic::render(hc::to_view(hc::crease_world(1.0, false), view), proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, W, H);
+    const GBuffer g = analytic::render(hc::crease_scene(1.0, false), proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, W, H);
     std::vector<double> prev;
     for (double radius : {0.25, 0.5, 1.0, 1.5, 2.0, 3.0}) {
         CAPTURE(radius);
