@@ -1,7 +1,8 @@
 #include "conventions.h"
 
 #include "analytic_scene.h"
-#include "hc_util.h"
+
+#include <doctest/doctest.h>
 
 #include <cmath>
 #include <stdexcept>
@@ -104,6 +105,22 @@ std::vector<Convention> ortho_conventions(double hw, double hh, double n, double
 std::vector<Convention> operator+(std::vector<Convention> a, const std::vector<Convention>& b) {
     a.insert(a.end(), b.begin(), b.end());
     return a;
+}
+
+Out run(testgl::Fixture& fx, const analytic::GBuffer& g, const Convention& c, const RunOptions& base) {
+    RunOptions o = base;
+    o.depth_format = c.format;
+    return run(fx, g, c.proj, c.clip, o);
+}
+
+void check_same_ao(const std::vector<float>& ref, const std::vector<float>& ao, uint32_t sample_count,
+                   const std::string& what) {
+    const Diff d = diff(ref, ao, {}, 1.0 / sample_count);
+    MESSAGE(what << ": mean |diff| " << d.mean_abs << ", worst " << d.worst << ", " << d.over_1e3 << " px > 1e-3, "
+                 << d.over_one_sample << " px > one sample, of " << d.compared);
+    CHECK(d.mean_abs < 0.004);
+    CHECK(d.over_one_sample <= d.compared / 100);
+    CHECK(d.worst <= 2.0 / sample_count + 2e-3);
 }
 
 }  // namespace hc

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "gl_fixture.h"
+#include "hc_util.h"
 
 #include <ssao/ssao.h>
 
@@ -39,5 +40,16 @@ std::vector<Convention> ortho_conventions(double hw, double hh, double n, double
 
 // `a` then `b`.
 std::vector<Convention> operator+(std::vector<Convention> a, const std::vector<Convention>& b);
+
+// One execute of the G-buffer rendered under `c`, its depth in c's format.
+Out run(testgl::Fixture& fx, const analytic::GBuffer& g, const Convention& c, const RunOptions& base = {});
+
+// CHECKs that `ao` is the reference convention's AO up to depth precision,
+// which only moves samples lying within a few depth steps of a comparison
+// threshold: at most one sample flips at a pixel, rarely (mean |diff| below
+// 0.004, at most 1 % of the pixels off by more than one sample, none by more
+// than two). Reports the difference, labelled `what`.
+void check_same_ao(const std::vector<float>& ref, const std::vector<float>& ao, uint32_t sample_count,
+                   const std::string& what);
 
 }  // namespace hc

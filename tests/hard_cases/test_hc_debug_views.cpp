@@ -50,12 +50,6 @@ std::vector<Convention> conventions(double aspect) {
                                  {"ortho GL [-1,1] D32F", "ortho [0,1] D16", "ortho reverse [0,1] D32F"});
 }
 
-hc::Out run(testgl::Fixture& fx, const GBuffer& g, const Convention& c, const hc::RunOptions& base = {}) {
-    hc::RunOptions o = base;
-    o.depth_format = c.format;
-    return hc::run(fx, g, c.proj, c.clip, o);
-}
-
 // Pixels at least `margin` pixels from any pixel whose depth differs from
 // the wall's (the box, or the sky): where every blur tap lies on the wall.
 std::vector<bool> far_from_box(const GBuffer& g, float wall_depth, int margin) {

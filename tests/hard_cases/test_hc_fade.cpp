@@ -83,18 +83,16 @@ TEST_CASE("fade: before fade_start bit for bit, beyond fade_end exactly 1, linea
         const std::string cname = c.name;
         CAPTURE(cname);
         const GBuffer g = analytic::render(scene, c.proj, c.clip, W, H);
-        hc::RunOptions o;
-        o.depth_format = c.format;
         ssao_settings s = hc::make(16, SSAO_BLUR_NONE, SSAO_ROTATION_HASH, 1.0f, method);
         s.output_format = SSAO_OUTPUT_R16F;
         fx.settings(s);
-        const auto plain = hc::run(fx, g, c.proj, c.clip, o);
+        const auto plain = hc::run(fx, g, c);
         REQUIRE(plain.status == SSAO_OK);
         // The crease scene spans view depths of about 2..7 (orthographic: and sky).
         s.fade_start = 3.0f;
         s.fade_end = 5.0f;
         fx.settings(s);
-        const auto faded = hc::run(fx, g, c.proj, c.clip, o);
+        const auto faded = hc::run(fx, g, c);
         REQUIRE(faded.status == SSAO_OK);
         hc::check_unit_finite(faded.ao, c.name);
         // R16F output: each value carries at most half an ulp of 1 (2^-12)

@@ -392,10 +392,8 @@ TEST_CASE("sky: far-plane pixels output exactly 1 in every convention and do not
         int sky = 0;
         for (int i = 0; i < W * H; ++i) sky += g.sky(i % W, i / W);
         REQUIRE(sky > W * H / 4);
-        hc::RunOptions o;
-        o.depth_format = c.format;
         fx.settings(hc::make(16, SSAO_BLUR_NONE, SSAO_ROTATION_HASH, 0.8f, method));
-        const auto raw = hc::run(fx, g, c.proj, c.clip, o);
+        const auto raw = hc::run(fx, g, c);
         REQUIRE(raw.status == SSAO_OK);
         for (ssao_output_format of : {SSAO_OUTPUT_R8, SSAO_OUTPUT_R16F})
             for (ssao_blur blur : {SSAO_BLUR_DEPTH_AWARE, SSAO_BLUR_GAUSSIAN, SSAO_BLUR_BOX_4X4}) {
@@ -405,7 +403,7 @@ TEST_CASE("sky: far-plane pixels output exactly 1 in every convention and do not
                 s.output_format = of;
                 s.blur_radius = 3;
                 fx.settings(s);
-                const auto r = hc::run(fx, g, c.proj, c.clip, o);
+                const auto r = hc::run(fx, g, c);
                 REQUIRE(r.status == SSAO_OK);
                 hc::check_unit_finite(r.ao, c.name);
                 int sky_not_one = 0, darkened = 0;
