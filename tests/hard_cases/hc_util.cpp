@@ -279,4 +279,13 @@ analytic::GBuffer crease_gbuffer(const glm::dmat4& proj, ssao_clip_range clip, i
     return analytic::render(crease_scene(), proj, clip, w, h);
 }
 
+CreaseSetup::CreaseSetup(int w, int h, const glm::dmat4& projection, ssao_clip_range clip)
+    : W(w), H(h), proj(projection), g(crease_gbuffer(projection, clip, w, h)) {}
+
+CreaseReverseZ::CreaseReverseZ()
+    : CreaseSetup(64, 48, analytic::reverse_z(kFov, 64.0 / 48.0, 0.1, 100.0), SSAO_CLIP_ZERO_TO_ONE) {}
+
+CreaseGl::CreaseGl()
+    : CreaseSetup(64, 48, analytic::perspective(kFov, 64.0 / 48.0, 0.1, 100.0), SSAO_CLIP_NEGATIVE_ONE_TO_ONE) {}
+
 }  // namespace hc

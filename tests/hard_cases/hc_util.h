@@ -116,6 +116,25 @@ analytic::Scene sky_scene();
 // cases start from.
 analytic::GBuffer crease_gbuffer(const glm::dmat4& proj, ssao_clip_range clip, int w, int h);
 
+// The setup most hard cases start from: a fixture and the crease scene's
+// G-buffer, W x H under `proj`. A case declared with TEST_CASE_FIXTURE on one
+// of the setups below sees fx, W, H, proj and g as its own.
+struct CreaseSetup {
+    testgl::Fixture fx;
+    const int W, H;
+    const glm::dmat4 proj;
+    const analytic::GBuffer g;
+    CreaseSetup(int w, int h, const glm::dmat4& projection, ssao_clip_range clip);
+};
+// 64 x 48, reverse-Z [0,1], near 0.1, far 100.
+struct CreaseReverseZ : CreaseSetup {
+    CreaseReverseZ();
+};
+// 64 x 48, GL [-1,1], near 0.1, far 100.
+struct CreaseGl : CreaseSetup {
+    CreaseGl();
+};
+
 // Compares two AO images over a mask: counts and worst difference.
 struct Diff {
     size_t compared = 0, over_1e3 = 0, over_one_sample = 0;

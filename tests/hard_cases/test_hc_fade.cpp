@@ -113,12 +113,8 @@ TEST_CASE("fade: before fade_start bit for bit, beyond fade_end exactly 1, linea
     CHECK(fx.gl_errors().empty());
 }
 
-TEST_CASE("fade: fading from the camera (fade_start 0) and a fade beyond the scene change what they should") {
+TEST_CASE_FIXTURE(hc::CreaseGl, "fade: fading from the camera (fade_start 0) and a fade beyond the scene change what they should") {
     HC_EACH_METHOD(method);
-    testgl::Fixture fx;
-    const int W = 64, H = 48;
-    const glm::dmat4 proj = analytic::perspective(hc::kFov, double(W) / H, 0.1, 100.0);
-    const GBuffer g = hc::crease_gbuffer(proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, W, H);
     ssao_settings s = hc::make(16, SSAO_BLUR_NONE, SSAO_ROTATION_NOISE_4X4, 1.0f, method);
     fx.settings(s);
     const auto plain = hc::run(fx, g, proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE);

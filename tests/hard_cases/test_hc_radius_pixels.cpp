@@ -136,12 +136,8 @@ TEST_CASE("radius in pixels: perspective, off-centre, reverse-Z infinite - a fro
     CHECK(fx.gl_errors().empty());
 }
 
-TEST_CASE("radius in pixels: the clamp - where N pixels span more than `radius` the AO is the plain run's bit for bit") {
+TEST_CASE_FIXTURE(hc::CreaseGl, "radius in pixels: the clamp - where N pixels span more than `radius` the AO is the plain run's bit for bit") {
     HC_EACH_METHOD(method);
-    testgl::Fixture fx;
-    const int W = 64, H = 48;
-    const glm::dmat4 proj = analytic::perspective(hc::kFov, double(W) / H, 0.1, 100.0);
-    const GBuffer g = hc::crease_gbuffer(proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, W, H);
     ssao_settings s = base(method);
     s.radius = 1.0f, s.bias = 0.025f, s.thickness = 1.0f;
     fx.settings(s);

@@ -429,12 +429,8 @@ TEST_CASE("sky: far-plane pixels output exactly 1 in every convention and do not
     CHECK(fx.gl_errors().empty());
 }
 
-TEST_CASE("normals: zero, NaN, infinite, non-unit and back-facing normals stay finite and in [0,1] and spread no further than the blur") {
+TEST_CASE_FIXTURE(hc::CreaseReverseZ, "normals: zero, NaN, infinite, non-unit and back-facing normals stay finite and in [0,1] and spread no further than the blur") {
     HC_EACH_METHOD(method);
-    testgl::Fixture fx;
-    const int W = 64, H = 48;
-    const auto proj = analytic::reverse_z(hc::kFov, double(W) / H, 0.1, 100.0);
-    const GBuffer g = hc::crease_gbuffer(proj, SSAO_CLIP_ZERO_TO_ONE, W, H);
     const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
     struct Bad { const char* name; std::function<glm::vec3(glm::vec3)> make; bool same_ao; };
     const Bad bads[] = {
@@ -518,12 +514,8 @@ TEST_CASE("normals: zero, NaN, infinite, non-unit and back-facing normals stay f
     CHECK(fx.gl_errors().empty());
 }
 
-TEST_CASE("radius: as the radius goes to 0 the AO goes to 1 monotonically - a huge radius stays finite and fast") {
+TEST_CASE_FIXTURE(hc::CreaseGl, "radius: as the radius goes to 0 the AO goes to 1 monotonically - a huge radius stays finite and fast") {
     HC_EACH_METHOD(method);
-    testgl::Fixture fx;
-    const int W = 64, H = 48;
-    const auto proj = analytic::perspective(hc::kFov, double(W) / H, 0.1, 100.0);
-    const GBuffer g = hc::crease_gbuffer(proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, W, H);
     double previous = -1;
     std::vector<float> prev_ao;
     for (double radius : {4.0, 2.0, 1.0, 0.5, 0.25, 0.1, 0.03, 0.01, 1e-3, 1e-4}) {
@@ -707,12 +699,8 @@ TEST_CASE("sizes: swapping width and height with the camera rolled 90 degrees ro
     CHECK(fx.gl_errors().empty());
 }
 
-TEST_CASE("float16 inputs: RGBA16F and RGB16F normals give the AO of RGBA32F normals - R16F output matches R8") {
+TEST_CASE_FIXTURE(hc::CreaseReverseZ, "float16 inputs: RGBA16F and RGB16F normals give the AO of RGBA32F normals - R16F output matches R8") {
     HC_EACH_METHOD(method);
-    testgl::Fixture fx;
-    const int W = 64, H = 48;
-    const auto proj = analytic::reverse_z(hc::kFov, double(W) / H, 0.1, 100.0);
-    const GBuffer g = hc::crease_gbuffer(proj, SSAO_CLIP_ZERO_TO_ONE, W, H);
     fx.settings(hc::make(16, SSAO_BLUR_NONE, SSAO_ROTATION_HASH, 1.0f, method));
     hc::RunOptions o;
     o.normal_format = GL_RGBA32F;
@@ -744,15 +732,11 @@ TEST_CASE("float16 inputs: RGBA16F and RGB16F normals give the AO of RGBA32F nor
     CHECK(fx.gl_errors().empty());
 }
 
-TEST_CASE("normals: a huge but finite normal (x 1e20, RGBA32F) is the same direction as the unit one") {
+TEST_CASE_FIXTURE(hc::CreaseReverseZ, "normals: a huge but finite normal (x 1e20, RGBA32F) is the same direction as the unit one") {
     // Finding F2: dot(n, n) overflows to +inf for |n| > ~1.8e19, and the
     // shader then treats the normal as broken (falls back to the direction
     // towards the camera) instead of normalising it.
     HC_EACH_METHOD(method);
-    testgl::Fixture fx;
-    const int W = 64, H = 48;
-    const auto proj = analytic::reverse_z(hc::kFov, double(W) / H, 0.1, 100.0);
-    const GBuffer g = hc::crease_gbuffer(proj, SSAO_CLIP_ZERO_TO_ONE, W, H);
     fx.settings(hc::make(16, SSAO_BLUR_NONE, SSAO_ROTATION_HASH, 1.0f, method));
     hc::RunOptions o;
     o.normal_format = GL_RGBA32F;
@@ -772,16 +756,12 @@ TEST_CASE("normals: a huge but finite normal (x 1e20, RGBA32F) is the same direc
     CHECK(fx.gl_errors().empty());
 }
 
-TEST_CASE("depth: NaN, infinite and out-of-range values in a D32F input stay finite, in [0,1] and contained") {
+TEST_CASE_FIXTURE(hc::CreaseReverseZ, "depth: NaN, infinite and out-of-range values in a D32F input stay finite, in [0,1] and contained") {
     // A float depth buffer can hold anything the host writes (or uploads).
     // Whatever GL keeps of such values, the output must stay finite and in
     // range, and pixels farther than the kernel footprint + blur radius from
     // the bad ones must be unchanged.
     HC_EACH_METHOD(method);
-    testgl::Fixture fx;
-    const int W = 64, H = 48;
-    const auto proj = analytic::reverse_z(hc::kFov, double(W) / H, 0.1, 100.0);
-    const GBuffer g = hc::crease_gbuffer(proj, SSAO_CLIP_ZERO_TO_ONE, W, H);
     const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
     for (ssao_blur blur : {SSAO_BLUR_NONE, SSAO_BLUR_DEPTH_AWARE, SSAO_BLUR_GAUSSIAN, SSAO_BLUR_BOX_4X4}) {
         ssao_settings s = hc::make(16, blur, SSAO_ROTATION_HASH, 0.5f, method);
@@ -815,15 +795,11 @@ TEST_CASE("depth: NaN, infinite and out-of-range values in a D32F input stay fin
     CHECK(fx.gl_errors().empty());
 }
 
-TEST_CASE("normals: every broken normal (zero, NaN in any component, inf) takes the same documented fallback") {
+TEST_CASE_FIXTURE(hc::CreaseReverseZ, "normals: every broken normal (zero, NaN in any component, inf) takes the same documented fallback") {
     // ao.frag: "a broken normal (zero, NaN, inf) falls back to the direction
     // towards the camera". Whole-image runs, RGBA32F, no blur: each kind of
     // broken normal must give the AO of the all-zero normal buffer.
     HC_EACH_METHOD(method);
-    testgl::Fixture fx;
-    const int W = 64, H = 48;
-    const auto proj = analytic::reverse_z(hc::kFov, double(W) / H, 0.1, 100.0);
-    const GBuffer g = hc::crease_gbuffer(proj, SSAO_CLIP_ZERO_TO_ONE, W, H);
     fx.settings(hc::make(16, SSAO_BLUR_NONE, SSAO_ROTATION_HASH, 1.0f, method));
     hc::RunOptions o;
     o.normal_format = GL_RGBA32F;
