@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 namespace hc {
 
@@ -13,27 +14,11 @@ Out run(testgl::Fixture& fx, const analytic::GBuffer& g, const glm::dmat4& proj,
         const RunOptions& o) {
     Out r;
     const int W = g.width + o.pad_x + o.pad_right, H = g.height + o.pad_y + o.pad_top;
-    const std::vector<glm::vec3>& normals = o.normals ? *o.normals : g.normal;
-    std::vector<float> depth(static_cast<size_t>(W) * H);
-    std::vector<glm::vec3> nrm(static_cast<size_t>(W) * H);
-    // Padding holds geometry-like garbage: a near depth and a skewed normal,
-    // so anything read outside the viewport would show.
-    for (size_t i = 0; i < depth.size(); ++i) {
-        depth[i] = 0.37f;
-        nrm[i] = glm::vec3(0.6f, -0.8f, 0.0f);
-    }
-    glm::dmat3 to_world = glm::transpose(glm::dmat3(o.view_matrix));
-    for (int y = 0; y < g.height; ++y)
-        for (int x = 0; x < g.width; ++x) {
-            const size_t s = at(x, y, g.width), d = at(x + o.pad_x, y + o.pad_y, W);
-            depth[d] = g.depth[s];
-            glm::vec3 n = normals[s];
-            if (o.normal_space == SSAO_NORMAL_SPACE_WORLD) n = glm::vec3(to_world * glm::dvec3(n));
-            nrm[d] = n;
-        }
-    const GLuint dt = fx.make_depth(o.depth_format, W, H, depth);
-    const GLuint nt = fx.make_normals(o.normal_format, W, H, nrm);
-    ssao_inputs in = fx.inputs(dt, nt, proj, clip);
+    analytic::GBuffer shown = g;
+    if (o.normals) shown.normal = *o.normals;
+    if (o.normal_space == SSAO_NORMAL_SPACE_WORLD) shown = with_world_normals(std::move(shown), o.view_matrix);
+    const testgl::Textures t = inset_textures(fx, shown, o.pad_x, o.pad_y, W, H, o.depth_format, o.normal_format);
+    ssao_inputs in = fx.inputs(t.depth, t.normal, proj, clip);
     in.normal_space = o.normal_space;
     in.normal_packing = o.normal_format == GL_RGBA8 ? SSAO_NORMAL_PACKING_UNORM : SSAO_NORMAL_PACKING_SIGNED;
     if (o.normal_space == SSAO_NORMAL_SPACE_WORLD) analytic::to_floats(o.view_matrix, in.view_matrix);
@@ -52,6 +37,27 @@ Out run(testgl::Fixture& fx, const analytic::GBuffer& g, const glm::dmat4& proj,
     r.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     if (r.status == SSAO_OK) r.ao = fx.read_red(r.output.texture, g.width, g.height);
     return r;
+}
+
+testgl::Textures inset_textures(testgl::Fixture& fx, const analytic::GBuffer& g, int x, int y, int tw, int th,
+                                GLenum depth_format, GLenum normal_format) {
+    std::vector<float> depth(static_cast<size_t>(tw) * th, 0.37f);
+    std::vector<glm::vec3> normal(depth.size(), glm::vec3(0.6f, -0.8f, 0.0f));
+    for (int gy = 0; gy < g.height; ++gy)
+        for (int gx = 0; gx < g.width; ++gx) {
+            depth[at(gx + x, gy + y, tw)] = g.depth[at(gx, gy, g.width)];
+            normal[at(gx + x, gy + y, tw)] = g.normal[at(gx, gy, g.width)];
+        }
+    testgl::Textures t;
+    t.depth = fx.make_depth(depth_format, tw, th, depth);
+    t.normal = fx.make_normals(normal_format, tw, th, normal);
+    return t;
+}
+
+analytic::GBuffer with_world_normals(analytic::GBuffer g, const glm::dmat4& view) {
+    const glm::dmat3 to_world = glm::transpose(glm::dmat3(view));
+    for (glm::vec3& n : g.normal) n = glm::vec3(to_world * glm::dvec3(n));
+    return g;
 }
 
 int check_unit_finite(const std::vector<float>& ao, const char* what) {

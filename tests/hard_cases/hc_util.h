@@ -40,6 +40,16 @@ struct Out {
 Out run(testgl::Fixture& fx, const analytic::GBuffer& g, const glm::dmat4& proj, ssao_clip_range clip,
         const RunOptions& o = {});
 
+// The G-buffer's depth and normals at (x, y) in tw x th textures of the given
+// formats. The texels around it hold geometry-like garbage, a near depth and
+// a skewed normal, so anything read outside the viewport would show.
+testgl::Textures inset_textures(testgl::Fixture& fx, const analytic::GBuffer& g, int x, int y, int tw, int th,
+                                GLenum depth_format = GL_DEPTH_COMPONENT32F, GLenum normal_format = GL_RGBA16F);
+
+// The G-buffer with its normals rotated from view to world space by the
+// inverse of `view` (the rotation part), as a host with world normals holds them.
+analytic::GBuffer with_world_normals(analytic::GBuffer g, const glm::dmat4& view);
+
 // CHECKs that every value is finite and in [0,1]; returns how many were not.
 int check_unit_finite(const std::vector<float>& ao, const char* what = "");
 

@@ -29,22 +29,13 @@ ViewResult run_view(testgl::Fixture& fx, const analytic::GBuffer& g, const glm::
                     GLenum depth_format, const ViewOptions& o) {
     ViewResult r;
     const int P = o.pad, W = g.width + 2 * P, H = g.height + 2 * P;
-    // Padding: a near depth and a skewed normal, so that a read outside the
-    // viewport would show in the border pixels' normals.
-    std::vector<float> depth(static_cast<size_t>(W) * H, 0.37f);
-    std::vector<glm::vec3> nrm(depth.size(), glm::vec3(0.6f, -0.8f, 0.0f));
-    const glm::dmat3 to_world = glm::transpose(glm::dmat3(o.view_matrix));
-    for (int y = 0; y < g.height; ++y)
-        for (int x = 0; x < g.width; ++x) {
-            const size_t s = hc::at(x, y, g.width), d = hc::at(x + P, y + P, W);
-            depth[d] = g.depth[s];
-            glm::vec3 n = g.normal[s];
-            if (o.normal_space == SSAO_NORMAL_SPACE_WORLD) n = glm::vec3(to_world * glm::dvec3(n));
-            nrm[d] = n;
-        }
+    // The padding would show in the border pixels' normals if it were read.
+    const testgl::Textures t =
+        hc::inset_textures(fx, o.normal_space == SSAO_NORMAL_SPACE_WORLD ? hc::with_world_normals(g, o.view_matrix) : g,
+                           P, P, W, H, depth_format, o.normal_format);
     auto& gl = fx.gl();
-    const GLuint dt = fx.make_depth(depth_format, W, H, depth);
-    const GLuint nt = o.depth_only ? 0u : fx.make_normals(o.normal_format, W, H, nrm);
+    const GLuint dt = t.depth;
+    const GLuint nt = o.depth_only ? 0u : t.normal;
     GLuint out = 0;
     gl.GenTextures(1, &out);
     gl.BindTexture(GL_TEXTURE_2D, out);

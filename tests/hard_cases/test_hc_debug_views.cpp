@@ -234,15 +234,8 @@ TEST_CASE("debug views: odd sizes and inset viewports - every viewport pixel wri
         const auto proj = analytic::reverse_z(hc::kFov, double(W) / H, 0.1, 100.0);
         const GBuffer g = analytic::render(hc::crease_scene(), proj, SSAO_CLIP_ZERO_TO_ONE, W, H);
         const int TW = W + 4, TH = H + 6, ox = 2, oy = 3;
-        std::vector<float> depth(size_t(TW) * TH, 0.37f);
-        std::vector<glm::vec3> nrm(size_t(TW) * TH, glm::vec3(0.6f, -0.8f, 0.0f));
-        for (int y = 0; y < H; ++y)
-            for (int x = 0; x < W; ++x) {
-                depth[hc::at(x + ox, y + oy, TW)] = g.depth[hc::at(x, y, W)];
-                nrm[hc::at(x + ox, y + oy, TW)] = g.normal[hc::at(x, y, W)];
-            }
-        const GLuint dt = fx.make_depth(GL_DEPTH_COMPONENT32F, TW, TH, depth);
-        const GLuint nt = fx.make_normals(GL_RGBA16F, TW, TH, nrm);
+        const testgl::Textures inset = hc::inset_textures(fx, g, ox, oy, TW, TH);
+        const GLuint dt = inset.depth, nt = inset.normal;
         for (ssao_debug_view view : kViews)
             for (ssao_resolution res : kResolutions) {
                 CAPTURE(view);

@@ -267,15 +267,8 @@ TEST_CASE("half resolution: odd sizes, 1x1 and 2x1 - every viewport pixel writte
         // The viewport at (2,3) of textures with 2 more texels on each side;
         // the host's output texture holds a sentinel that AO never takes.
         const int TW = W + 4, TH = H + 6, ox = 2, oy = 3;
-        std::vector<float> depth(size_t(TW) * TH, 0.37f);
-        std::vector<glm::vec3> nrm(size_t(TW) * TH, glm::vec3(0.6f, -0.8f, 0.0f));
-        for (int y = 0; y < H; ++y)
-            for (int x = 0; x < W; ++x) {
-                depth[hc::at(x + ox, y + oy, TW)] = g.depth[hc::at(x, y, W)];
-                nrm[hc::at(x + ox, y + oy, TW)] = g.normal[hc::at(x, y, W)];
-            }
-        const GLuint dt = fx.make_depth(GL_DEPTH_COMPONENT32F, TW, TH, depth);
-        const GLuint nt = fx.make_normals(GL_RGBA16F, TW, TH, nrm);
+        const testgl::Textures inset = hc::inset_textures(fx, g, ox, oy, TW, TH);
+        const GLuint dt = inset.depth, nt = inset.normal;
         for (ssao_method method : kMethods)
             for (ssao_resolution res : {SSAO_RESOLUTION_FULL, SSAO_RESOLUTION_HALF, SSAO_RESOLUTION_QUARTER}) {
                 CAPTURE(method);
