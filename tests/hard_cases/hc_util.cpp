@@ -20,15 +20,10 @@ Out run(testgl::Fixture& fx, const analytic::GBuffer& g, const glm::dmat4& proj,
     const testgl::Textures t = inset_textures(fx, shown, o.pad_x, o.pad_y, W, H, o.depth_format, o.normal_format);
     ssao_inputs in = fx.inputs(t.depth, t.normal, proj, clip);
     in.normal_space = o.normal_space;
-    in.normal_packing = o.normal_format == GL_RGBA8 ? SSAO_NORMAL_PACKING_UNORM : SSAO_NORMAL_PACKING_SIGNED;
+    in.normal_packing = testgl::packing_of(o.normal_format);
     if (o.normal_space == SSAO_NORMAL_SPACE_WORLD) analytic::to_floats(o.view_matrix, in.view_matrix);
     if (o.depth_only) in.normal_texture = 0;
-    if (W != g.width || H != g.height) {
-        in.viewport[0] = o.pad_x;
-        in.viewport[1] = o.pad_y;
-        in.viewport[2] = g.width;
-        in.viewport[3] = g.height;
-    }
+    if (W != g.width || H != g.height) testgl::set_viewport(in, o.pad_x, o.pad_y, g.width, g.height);
     r.output.size = sizeof r.output;
     fx.gl().Finish();
     const auto t0 = std::chrono::steady_clock::now();
@@ -51,6 +46,17 @@ testgl::Textures inset_textures(testgl::Fixture& fx, const analytic::GBuffer& g,
     testgl::Textures t;
     t.depth = fx.make_depth(depth_format, tw, th, depth);
     t.normal = fx.make_normals(normal_format, tw, th, normal);
+    return t;
+}
+
+GLuint sentinel_texture(GladGLContext& gl, int tw, int th, float value) {
+    const std::vector<float> texels(static_cast<size_t>(tw) * th, value);
+    GLuint t = 0;
+    gl.GenTextures(1, &t);
+    gl.BindTexture(GL_TEXTURE_2D, t);
+    gl.TexImage2D(GL_TEXTURE_2D, 0, GL_R32F, tw, th, 0, GL_RED, GL_FLOAT, texels.data());
+    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    gl.BindTexture(GL_TEXTURE_2D, 0);
     return t;
 }
 

@@ -46,6 +46,10 @@ Out run(testgl::Fixture& fx, const analytic::GBuffer& g, const glm::dmat4& proj,
 testgl::Textures inset_textures(testgl::Fixture& fx, const analytic::GBuffer& g, int x, int y, int tw, int th,
                                 GLenum depth_format = GL_DEPTH_COMPONENT32F, GLenum normal_format = GL_RGBA16F);
 
+// A host output texture, R32F tw x th with nearest filtering, every texel
+// `value` (one AO never takes, so that a texel execute wrote shows).
+GLuint sentinel_texture(GladGLContext& gl, int tw, int th, float value);
+
 // The G-buffer with its normals rotated from view to world space by the
 // inverse of `view` (the rotation part), as a host with world normals holds them.
 analytic::GBuffer with_world_normals(analytic::GBuffer g, const glm::dmat4& view);

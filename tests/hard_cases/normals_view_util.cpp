@@ -48,13 +48,10 @@ ViewResult run_view(testgl::Fixture& fx, const analytic::GBuffer& g, const glm::
     fx.settings(s);
     ssao_inputs in = fx.inputs(dt, nt, proj, clip);
     in.normal_space = o.normal_space;
-    in.normal_packing = o.normal_format == GL_RGBA8 ? SSAO_NORMAL_PACKING_UNORM : SSAO_NORMAL_PACKING_SIGNED;
+    in.normal_packing = testgl::packing_of(o.normal_format);
     if (o.normal_space == SSAO_NORMAL_SPACE_WORLD) analytic::to_floats(o.view_matrix, in.view_matrix);
     in.output_texture = out;
-    in.viewport[0] = P;
-    in.viewport[1] = P;
-    in.viewport[2] = g.width;
-    in.viewport[3] = g.height;
+    testgl::set_viewport(in, P, P, g.width, g.height);
     ssao_output res{};
     res.size = sizeof res;
     r.status = fx.api().execute(fx.ctx(), &in, &res);

@@ -244,18 +244,9 @@ TEST_CASE("debug views: odd sizes and inset viewports - every viewport pixel wri
                 // The same G-buffer alone, in the library's own output.
                 const auto alone = hc::run(fx, g, proj, SSAO_CLIP_ZERO_TO_ONE);
                 REQUIRE(alone.status == SSAO_OK);
-                const std::vector<float> sentinel(size_t(TW) * TH, -7.0f);
-                GLuint out = 0;
-                gl.GenTextures(1, &out);
-                gl.BindTexture(GL_TEXTURE_2D, out);
-                gl.TexImage2D(GL_TEXTURE_2D, 0, GL_R32F, TW, TH, 0, GL_RED, GL_FLOAT, sentinel.data());
-                gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-                gl.BindTexture(GL_TEXTURE_2D, 0);
+                const GLuint out = hc::sentinel_texture(gl, TW, TH, -7.0f);
                 ssao_inputs in = fx.inputs(dt, nt, proj, SSAO_CLIP_ZERO_TO_ONE);
-                in.viewport[0] = ox;
-                in.viewport[1] = oy;
-                in.viewport[2] = W;
-                in.viewport[3] = H;
+                testgl::set_viewport(in, ox, oy, W, H);
                 in.output_texture = out;
                 ssao_output o{};
                 o.size = sizeof o;

@@ -62,11 +62,8 @@ Inputs make_inputs(testgl::Fixture& fx, const analytic::GBuffer& g, const Conven
 
 std::vector<float> run(testgl::Fixture& fx, const Convention& c, GLuint depth, GLuint normal, uint32_t sample) {
     ssao_inputs in = fx.inputs(depth, normal, c.proj, c.clip);
-    in.normal_packing = c.normal_format == GL_RGBA8 ? SSAO_NORMAL_PACKING_UNORM : SSAO_NORMAL_PACKING_SIGNED;
-    in.viewport[0] = c.pad_x;
-    in.viewport[1] = c.pad_y;
-    in.viewport[2] = c.w;
-    in.viewport[3] = c.h;
+    in.normal_packing = testgl::packing_of(c.normal_format);
+    testgl::set_viewport(in, c.pad_x, c.pad_y, c.w, c.h);
     in.sample_index = sample;
     ssao_output out{};
     out.size = sizeof out;

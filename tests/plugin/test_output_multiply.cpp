@@ -49,10 +49,7 @@ Frame make_frame(testgl::Fixture& fx) {
 
 ssao_inputs inputs_for(testgl::Fixture& fx, const Frame& f, GLuint output, ssao_output_mode mode) {
     ssao_inputs in = fx.inputs(f.depth, f.normal, f.proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE);
-    in.viewport[0] = kVX;
-    in.viewport[1] = kVY;
-    in.viewport[2] = kVW;
-    in.viewport[3] = kVH;
+    testgl::set_viewport(in, kVX, kVY, kVW, kVH);
     in.output_texture = output;
     in.output_mode = mode;
     return in;

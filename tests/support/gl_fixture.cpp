@@ -48,6 +48,17 @@ std::unique_ptr<eglctx::Context> make_debug_context(int major, int minor) {
     return egl;
 }
 
+void set_viewport(ssao_inputs& in, int x, int y, int w, int h) {
+    in.viewport[0] = x;
+    in.viewport[1] = y;
+    in.viewport[2] = w;
+    in.viewport[3] = h;
+}
+
+ssao_normal_packing packing_of(GLenum normal_format) {
+    return normal_format == GL_RGBA8 ? SSAO_NORMAL_PACKING_UNORM : SSAO_NORMAL_PACKING_SIGNED;
+}
+
 ssao_status create_default_context(const ssao_api& api, ssao_context** out) {
     ssao_context_desc desc{};
     desc.size = sizeof desc;

@@ -35,6 +35,12 @@ GLuint make_host_program(GladGLContext& gl);
 // A debug EGL context (4.5 core unless asked otherwise) or an exception.
 std::unique_ptr<eglctx::Context> make_debug_context(int major = 4, int minor = 5);
 
+// Sets in.viewport to (x, y, w, h).
+void set_viewport(ssao_inputs& in, int x, int y, int w, int h);
+// The normal_packing of a normal texture Fixture::make_normals made in this
+// format: RGBA8 holds n * 0.5 + 0.5, the float formats n itself.
+ssao_normal_packing packing_of(GLenum normal_format);
+
 // create_context on the current GL context with the default description
 // (EGL's get_proc_address, no log, default settings); *out is the new context.
 ssao_status create_default_context(const ssao_api& api, ssao_context** out);
