@@ -55,6 +55,18 @@ ssao_settings settings_for(ssao_method method, ssao_resolution resolution) {
     return s;
 }
 
+// The crease and the floor scene, each alone and together in 4x textures
+// whose samples 0 and 2 hold the crease, 1 and 3 the floor.
+struct TwoScenes {
+    glm::dmat4 proj = projection();
+    msaa::Textures alone[2], ms;
+    explicit TwoScenes(testgl::Fixture& fx) {
+        alone[0] = fx.upload(analytic::render(crease_scene(), proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, kW, kH));
+        alone[1] = fx.upload(analytic::render(floor_scene(), proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, kW, kH));
+        ms = msaa::make(fx.gl(), {alone[0], alone[1]}, kW, kH, 4, GL_DEPTH_COMPONENT32F, GL_RGBA16F);
+    }
+};
+
 struct Run {
     ssao_status status = SSAO_OK;
     std::vector<float> ao;
@@ -125,12 +137,9 @@ TEST_CASE("4x MSAA depth without a normal texture: each sample_index gives its o
     // 3 the floor, so a neighbour read from another sample would show.
     testgl::Fixture fx;
     auto& gl = fx.gl();
-    const auto proj = projection();
-    const GBuffer a = analytic::render(crease_scene(), proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, kW, kH);
-    const GBuffer b = analytic::render(floor_scene(), proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, kW, kH);
-    const msaa::Textures ta = fx.upload(a);
-    const msaa::Textures tb = fx.upload(b);
-    const msaa::Textures ms = msaa::make(gl, {ta, tb}, kW, kH, 4, GL_DEPTH_COMPONENT32F, GL_RGBA16F);
+    const TwoScenes two(fx);
+    const glm::dmat4& proj = two.proj;
+    const msaa::Textures &ta = two.alone[0], &tb = two.alone[1], &ms = two.ms;
     for (ssao_method method : {SSAO_METHOD_KERNEL, SSAO_METHOD_VISIBILITY})
         for (ssao_resolution res : {SSAO_RESOLUTION_FULL, SSAO_RESOLUTION_HALF}) {
             CAPTURE(method);
@@ -159,14 +168,9 @@ TEST_CASE("4x MSAA depth without a normal texture: each sample_index gives its o
 
 TEST_CASE("sample_index picks the sample: samples holding two different scenes give each scene's AO") {
     testgl::Fixture fx;
-    auto& gl = fx.gl();
-    const auto proj = projection();
-    const GBuffer a = analytic::render(crease_scene(), proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, kW, kH);
-    const GBuffer b = analytic::render(floor_scene(), proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, kW, kH);
-    const msaa::Textures ta = fx.upload(a);
-    const msaa::Textures tb = fx.upload(b);
-    // Samples 0 and 2 hold the crease, 1 and 3 the floor.
-    const msaa::Textures ms = msaa::make(gl, {ta, tb}, kW, kH, 4, GL_DEPTH_COMPONENT32F, GL_RGBA16F);
+    const TwoScenes two(fx);
+    const glm::dmat4& proj = two.proj;
+    const msaa::Textures &ta = two.alone[0], &tb = two.alone[1], &ms = two.ms;
     for (ssao_resolution res : {SSAO_RESOLUTION_FULL, SSAO_RESOLUTION_HALF}) {
         CAPTURE(res);
         fx.settings(settings_for(SSAO_METHOD_VISIBILITY, res));
