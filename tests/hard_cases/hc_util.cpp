@@ -1,5 +1,7 @@
 #include "hc_util.h"
 
+#include "test_scenes.h"
+
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -77,18 +79,8 @@ int check_unit_finite(const std::vector<float>& ao, const char* what) {
 }
 
 ssao_settings make(uint32_t samples, ssao_blur blur, ssao_rotation rotation, float radius, ssao_method method) {
-    ssao_settings s{};
-    s.size = sizeof s;
-    // The accelerating distribution, as these cases were written for (a
-    // zeroed struct is the DEFAULT preset, which may not use it).
+    ssao_settings s = testscenes::make(samples, blur, rotation);
     s.method = method;
-    s.distribution = SSAO_DISTRIBUTION_ACCELERATING;
-    s.resolution = SSAO_RESOLUTION_FULL;  // full resolution: the CPU formula is per pixel
-    s.sample_count = samples;
-    // DEFAULT meant the depth-aware blur when these cases were written (the
-    // kernel method's own default is now the chapter's box).
-    s.blur = blur == SSAO_BLUR_DEFAULT ? SSAO_BLUR_DEPTH_AWARE : blur;
-    s.rotation = rotation;
     s.radius = radius;
     s.output_format = SSAO_OUTPUT_R16F;
     return s;
