@@ -552,7 +552,7 @@ void report_plugin(const cli::Options& o, const Setup& s, const Rendered& r, con
         std::printf("  debug view: %s (one more execute, debug_view.png)\n", debug_view_text::name(o.debug_view));
     if (r.timings.available)
         std::printf("  GPU times (frame %llu of %d): %s\n", static_cast<unsigned long long>(r.timings.frame), o.frames,
-                    report_text::pass_times(r.timings).c_str());
+                    report_text::pass_times(r.timings, st.method).c_str());
     else
         std::printf("  GPU times: n/a (no timer results after %d frames)\n", o.frames);
 }

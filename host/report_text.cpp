@@ -19,14 +19,15 @@ std::string ms(const char* name, double v) {
 
 // The debug groups' names, so the printed times and a GPU debugger's capture
 // say the same.
-const char* pass_name(uint32_t kind, bool brief) {
+const char* pass_name(uint32_t kind, uint32_t method, bool brief) {
     switch (kind) {
-        case SSAO_PASS_AO: return "ao";
+        case SSAO_PASS_OCCLUSION: return method == SSAO_METHOD_VISIBILITY ? (brief ? "vis" : "visibility") : "kernel";
         case SSAO_PASS_BLUR_X: return "blur x";
         case SSAO_PASS_BLUR_Y: return "blur y";
         case SSAO_PASS_CLEAR: return "clear";
-        case SSAO_PASS_DOWNSAMPLE: return brief ? "down" : "downsample";
+        case SSAO_PASS_GRID: return "grid";
         case SSAO_PASS_UPSAMPLE: return brief ? "up" : "upsample";
+        case SSAO_PASS_NORMALS_VIEW: return brief ? "normals" : "normals view";
         default: return "pass";
     }
 }
@@ -43,10 +44,10 @@ std::string estimator(const ssao_settings& s) {
     return words;
 }
 
-std::string pass_times(const ssao_timings& t) {
+std::string pass_times(const ssao_timings& t, uint32_t method) {
     std::string line;
     for (uint32_t i = 0; i < t.pass_count && i < SSAO_MAX_PASSES; ++i)
-        line += ms(pass_name(t.pass_kind[i]), t.pass_ms[i]) + ", ";
+        line += ms(pass_name(t.pass_kind[i], method), t.pass_ms[i]) + ", ";
     return line + ms("total", t.total_ms);
 }
 

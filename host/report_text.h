@@ -13,12 +13,13 @@ namespace report_text {
 // reads: thickness for visibility, the kernel's shape for the kernel).
 std::string estimator(const ssao_settings& resolved);
 
-// A pass's name: its debug group's ("downsample", docs/api.md "Debugger
-// names"), or with `brief` the viewer overlay's shorter one ("down").
-const char* pass_name(uint32_t kind, bool brief = false);
+// A pass's name: its debug group's ("grid", docs/api.md "Debugger names";
+// the estimator's bit is named by `method`, the settings' method), or with
+// `brief` the viewer overlay's shorter one ("up").
+const char* pass_name(uint32_t kind, uint32_t method, bool brief = false);
 
-// "downsample 1.2 ms, ao 30.1 ms, upsample 13.7 ms, total 45.0 ms": each pass
-// under its debug-group name, in the order it ran.
-std::string pass_times(const ssao_timings& timings);
+// "grid 1.2 ms, visibility 30.1 ms, upsample 13.7 ms, total 45.0 ms": each
+// pass under its debug-group name, in the order it ran.
+std::string pass_times(const ssao_timings& timings, uint32_t method);
 
 }  // namespace report_text

@@ -139,10 +139,6 @@ ssao_status SSAO_CALL api_set_settings(ssao_context* ctx, const ssao_settings* s
         std::string why;
         const ssao_status st = resolve_settings(*settings, resolved, why);
         if (st != SSAO_OK) return ctx->fail(st, "settings: " + why);
-        const ssao_settings& old = ctx->settings;
-        if (resolved.sample_count != old.sample_count || resolved.kernel_shape != old.kernel_shape ||
-            resolved.distribution != old.distribution || resolved.seed != old.seed || resolved.method != old.method)
-            ctx->kernel_dirty = true;
         ctx->settings = resolved;
         ctx->last_error.clear();
         return SSAO_OK;

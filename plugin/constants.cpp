@@ -3,6 +3,7 @@
 
 #include "context.h"
 #include "kernel.h"
+#include "resources.h"
 #include "settings.h"
 
 #include <cmath>
@@ -22,46 +23,58 @@ void set_mat4(ssao_std140::mat4& dst, const glm::dmat4& m) {
 
 SsaoFrame make_frame_block(const ssao_settings& s, const AnalysedInputs& in) {
     const ProjectionInfo& proj = in.proj;
-    SsaoFrame frame{};
-    set_mat4(frame.u_proj, proj.proj);
-    set_mat4(frame.u_inv_proj, proj.inverse);
-    set_mat4(frame.u_normal_to_view, in.normal_to_view);
-    frame.u_viewport = {{in.viewport[0], in.viewport[1], in.viewport[2], in.viewport[3]}};
-    frame.u_method = {{static_cast<int32_t>(s.method), static_cast<int32_t>(s.step_count), 0, 0}};
-    frame.u_march = {{s.thickness, 0.0f, 0.0f, 0.0f}};
-    frame.u_modes = {{static_cast<int32_t>(s.kernel_shape), static_cast<int32_t>(s.rotation),
-                      in.world_normals ? 2 : 1, in.signed_normals ? 2 : 1}};
-    frame.u_counts = {{static_cast<int32_t>(s.sample_count), static_cast<int32_t>(s.seed),
-                       static_cast<int32_t>(s.blur_radius), static_cast<int32_t>(s.blur)}};
-    frame.u_ao = {{s.radius, s.bias, s.depth_step_bias, effective_strength(s)}};
-    frame.u_ao2 = {{s.power, s.blur_sigma, s.blur_depth_tolerance, static_cast<float>(proj.ndc_per_depth)}};
-    const DepthFormat& fmt = in.depth;
-    const float unorm_step = fmt.is_float ? 0.0f : static_cast<float>(1.0 / (std::ldexp(1.0, fmt.bits) - 1.0));
-    frame.u_depth = {{proj.sky_depth, unorm_step, proj.reverse_z ? 1.0f : 0.0f, proj.orthographic ? 1.0f : 0.0f}};
-    // Read only by the variants the plan sets for them (FADE, RADIUS_PIXELS,
-    // FRAME_NOISE); zero otherwise, so the block of a frame without them does
-    // not change from frame to frame.
-    frame.u_fade = {{s.fade_start, s.fade_end, s.radius_pixels, 0.0f}};
-    const ViewFromZ vz = view_from_z(proj, in.viewport[2], in.viewport[3]);
-    frame.u_vz_mul_z = {{static_cast<float>(vz.mul_z[0][0]), static_cast<float>(vz.mul_z[0][1]),
-                         static_cast<float>(vz.mul_z[1][0]), static_cast<float>(vz.mul_z[1][1])}};
-    frame.u_vz_mul_1 = {{static_cast<float>(vz.mul_1[0][0]), static_cast<float>(vz.mul_1[0][1]),
-                         static_cast<float>(vz.mul_1[1][0]), static_cast<float>(vz.mul_1[1][1])}};
-    frame.u_vz_add = {{static_cast<float>(vz.add_z.x), static_cast<float>(vz.add_z.y), static_cast<float>(vz.add_1.x),
-                       static_cast<float>(vz.add_1.y)}};
-    frame.u_z_clip = {{static_cast<float>(vz.w_z), static_cast<float>(vz.w_1), static_cast<float>(vz.z_z),
-                       static_cast<float>(vz.z_1)}};
+    SsaoFrame c{};  // value-initialised: the padding is zero, so equal blocks compare equal bytewise
+    set_mat4(c.proj, proj.proj);
+    set_mat4(c.inv_proj, proj.inverse);
+    set_mat4(c.normal_to_view, in.normal_to_view);
+    c.viewport_origin = {{in.viewport[0], in.viewport[1]}};
+    c.viewport_size = {{in.viewport[2], in.viewport[3]}};
+    c.sample_count = static_cast<int32_t>(s.sample_count);
+    c.step_count = static_cast<int32_t>(s.step_count);
+    c.seed = static_cast<int32_t>(s.seed);
+    c.rotation = static_cast<int32_t>(s.rotation);
+    c.normal_space = in.world_normals ? SSAO_SHADER_NORMAL_WORLD : SSAO_SHADER_NORMAL_VIEW;
+    c.normal_packing = in.signed_normals ? SSAO_SHADER_PACKING_SIGNED : SSAO_SHADER_PACKING_UNORM;
+    c.blur_radius = static_cast<int32_t>(s.blur_radius);
+    c.blur_kind = static_cast<int32_t>(s.blur);
+    c.orthographic = proj.orthographic ? 1 : 0;
     // Clip z with view x or y terms (an oblique near plane): view z is not a
     // function of the depth alone, the upsample reads it through the inverse.
-    const bool oblique = proj.proj[0][2] != 0.0 || proj.proj[1][2] != 0.0;
-    frame.u_z_det = {{static_cast<float>(1.0 / std::abs(vz.det)), oblique ? 1.0f : 0.0f, 0.0f, 0.0f}};
+    c.oblique_near_plane = proj.proj[0][2] != 0.0 || proj.proj[1][2] != 0.0 ? 1 : 0;
+    c.ndc_per_depth = static_cast<float>(proj.ndc_per_depth);
+    c.sky_depth = proj.sky_depth;
+    const DepthFormat& fmt = in.depth;
+    c.unorm_depth_step = fmt.is_float ? 0.0f : static_cast<float>(1.0 / (std::ldexp(1.0, fmt.bits) - 1.0));
+    c.radius = s.radius;
+    c.bias = s.bias;
+    c.depth_step_bias = s.depth_step_bias;
+    c.strength = effective_strength(s);
+    c.power = s.power;
+    c.thickness = s.thickness;
+    c.blur_sigma = s.blur_sigma;
+    c.blur_depth_tolerance = s.blur_depth_tolerance;
+    c.fade_start = s.fade_start;
+    c.fade_end = s.fade_end;
+    c.radius_pixels = s.radius_pixels;
     if (in.frame_index != 0) {
         const glm::dvec2 off = frame_noise_offsets(in.frame_index);
         const double turn = off.x * 6.283185307179586;
-        frame.u_frame = {{static_cast<float>(std::cos(turn)), static_cast<float>(std::sin(turn)),
-                          static_cast<float>(off.y), 0.0f}};
+        c.frame_rotation = {{static_cast<float>(std::cos(turn)), static_cast<float>(std::sin(turn))}};
+        c.frame_step_offset = static_cast<float>(off.y);
     }
-    return frame;
+    const ViewFromZ vz = view_from_z(proj, in.viewport[2], in.viewport[3]);
+    c.view_mul_z = {{static_cast<float>(vz.mul_z[0][0]), static_cast<float>(vz.mul_z[0][1]),
+                     static_cast<float>(vz.mul_z[1][0]), static_cast<float>(vz.mul_z[1][1])}};
+    c.view_mul_1 = {{static_cast<float>(vz.mul_1[0][0]), static_cast<float>(vz.mul_1[0][1]),
+                     static_cast<float>(vz.mul_1[1][0]), static_cast<float>(vz.mul_1[1][1])}};
+    c.view_add_z = {{static_cast<float>(vz.add_z.x), static_cast<float>(vz.add_z.y)}};
+    c.view_add_1 = {{static_cast<float>(vz.add_1.x), static_cast<float>(vz.add_1.y)}};
+    c.clip_w_z = static_cast<float>(vz.w_z);
+    c.clip_w_1 = static_cast<float>(vz.w_1);
+    c.clip_z_z = static_cast<float>(vz.z_z);
+    c.clip_z_1 = static_cast<float>(vz.z_1);
+    c.inv_det = static_cast<float>(1.0 / std::abs(vz.det));
+    return c;
 }
 
 void upload_frame_block(ssao_context& ctx, const SsaoFrame& frame) {
@@ -75,19 +88,25 @@ void upload_frame_block(ssao_context& ctx, const SsaoFrame& frame) {
         ctx.last_frame = frame;
         ctx.frame_uploaded = true;
     }
-    gl.BindBufferBase(GL_UNIFORM_BUFFER, SSAO_UBO_FRAME, ctx.ubo_frame);
-    gl.BindBufferBase(GL_UNIFORM_BUFFER, SSAO_UBO_KERNEL, ctx.ubo_kernel);
 }
 
-void upload_kernel(ssao_context& ctx) {
+KernelKey kernel_key(const ssao_settings& s) {
+    return KernelKey{s.sample_count, static_cast<uint32_t>(s.kernel_shape), static_cast<uint32_t>(s.distribution),
+                     s.seed, static_cast<uint32_t>(s.method)};
+}
+
+void update_kernel(ssao_context& ctx, GlStateGuard& guard) {
+    const KernelKey key = kernel_key(ctx.settings);
+    if (ctx.kernel_uploaded && key == ctx.kernel_uploaded_for) return;
     const GladGLContext& gl = ctx.gl;
+    use_default_unpack(gl, guard);
     SsaoKernel block{};
     // The kernel estimator reads sample points, the visibility estimator directions.
     const std::vector<glm::vec3> kernel = ctx.settings.method == SSAO_METHOD_VISIBILITY
                                               ? make_directions(ctx.settings)
                                               : make_kernel(ctx.settings);
     for (size_t i = 0; i < kernel.size(); ++i) {
-        block.u_kernel[i] = {{kernel[i].x, kernel[i].y, kernel[i].z, 0.0f}};
+        block.vectors[i] = {{kernel[i].x, kernel[i].y, kernel[i].z, 0.0f}};
     }
     gl.BindBuffer(GL_UNIFORM_BUFFER, ctx.ubo_kernel);
     gl.BufferData(GL_UNIFORM_BUFFER, sizeof block, &block, GL_STATIC_DRAW);
@@ -99,7 +118,8 @@ void upload_kernel(ssao_context& ctx) {
     gl.TexImage2D(GL_TEXTURE_2D, 0, GL_RG32F, SSAO_NOISE_SIZE, SSAO_NOISE_SIZE, 0, GL_RG, GL_FLOAT, noise.data());
     gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
     label_object(ctx, GL_TEXTURE, ctx.noise_texture, kLabelNoise);
-    ctx.kernel_dirty = false;
+    ctx.kernel_uploaded_for = key;
+    ctx.kernel_uploaded = true;
 }
 
 }  // namespace ssao_impl

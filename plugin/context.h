@@ -1,11 +1,12 @@
 // context.h - the opaque ssao_context: the GL function table, the compiled
 // programs, the GL objects, the resolved settings and the timer ring.
-// execute (passes.cpp) runs: check_inputs / inspect_textures (inputs.cpp) ->
-// plan_frame (plan.cpp, pure) -> update_resources (resources.cpp) -> frame
-// constants (constants.cpp) -> run_plan (runner.cpp, with timers.cpp and the
-// debug groups of debug.cpp).
+// execute (execute.cpp) runs: check_inputs / inspect_textures (inputs.cpp) ->
+// plan_frame (plan.cpp, pure) -> compile_plan_programs (program_cache.cpp) ->
+// update_resources (resources.cpp) -> constants (constants.cpp) -> run_plan
+// (runner.cpp, with timers.cpp and the debug groups of debug.cpp).
 #pragma once
 
+#include "constants.h"
 #include "debug.h"
 #include "gl_state_guard.h"
 #include "plan.h"
@@ -31,8 +32,10 @@ struct ssao_context {
     ssao_settings settings{};   // resolved
     SsaoFrame last_frame{};     // the frame block last uploaded
     bool frame_uploaded = false;
-    bool kernel_dirty = true;   // kernel / noise need uploading
-    // (1.2) The target the last execute's inputs had (GL_TEXTURE_2D or
+    // The settings the kernel block and noise texture were last made from.
+    ssao_impl::KernelKey kernel_uploaded_for;
+    bool kernel_uploaded = false;
+    // The target the last execute's inputs had (GL_TEXTURE_2D or
     // GL_TEXTURE_2D_MULTISAMPLE). Below GL 4.5 inputs are told apart by
     // binding them, and that target is tried first: a host that keeps
     // multisampled inputs raises no failed-bind GL error frame after frame.
@@ -70,7 +73,7 @@ struct ssao_context {
     bool query_labelled[kFrames][kStamps] = {};
     bool timers = false;
     ssao_timings timings{};
-    uint64_t frame = 0;
+    uint64_t executes = 0;  // executes that ran their plan: ssao_timings.frame numbers them
 
     // KHR_debug (debug.cpp): groups and labels, or nothing without it.
     ssao_impl::DebugState debug;

@@ -1,6 +1,9 @@
-// execute.cpp - execute: check and analyse the inputs, plan the frame, update
-// the resources and constants the plan needs, and run it, all inside one GL
-// state guard (and, with KHR_debug, one debug group).
+// execute.cpp - execute, one way through: check and analyse the inputs
+// (every refusal of the inputs happens first, before planning),
+// plan the frame (pure), compile its programs, update its resources and
+// constants, and run it, all inside one GL state guard (and, with KHR_debug,
+// one debug group). Each step binds what it uses; none relies on what an
+// earlier one left bound.
 #include "constants.h"
 #include "context.h"
 #include "inputs.h"
@@ -27,18 +30,14 @@ namespace ssao_impl {
 
 namespace {
 
-// Leaves the plugin's framebuffer without an attachment on every way out of
-// execute, so it never keeps a host texture alive (declared after the state
-// guard, so it runs first, while the plugin's framebuffer is still bound).
-struct DetachOnExit {
-    const GladGLContext& gl;
-    GLuint fbo;
-    ~DetachOnExit() {
-        gl.BindFramebuffer(GL_FRAMEBUFFER, fbo);
-        gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, 0, 0);
-        gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, 0, 0);
-    }
-};
+// Settings that ask something of the inputs: a normals debug view writes x,
+// y and z into red, green and blue (ssao.h), so a host output needs them.
+ssao_status check_settings_against_inputs(const ssao_context& ctx, const AnalysedInputs& in) {
+    if (in.output_texture != 0 && writes_normals(ctx.settings) && !in.output_rgb)
+        return ctx.fail(SSAO_ERROR_UNSUPPORTED_FORMAT,
+                        "a normals debug view needs an output_texture with red, green and blue channels");
+    return SSAO_OK;
+}
 
 void record_frame_info(ssao_context& ctx, const AnalysedInputs& in) {
     const ProjectionInfo& proj = in.proj;
@@ -54,38 +53,31 @@ void record_frame_info(ssao_context& ctx, const AnalysedInputs& in) {
 }  // namespace
 
 ssao_status execute(ssao_context& ctx, const ssao_inputs& in, ssao_output* out) {
-    const GladGLContext& gl = ctx.gl;
     // Outermost: its pop comes after the guard restored the host's state.
     const ExecuteGroup debug_group(ctx);
 
     AnalysedInputs analysed;
     ssao_status st = check_inputs(ctx, in, analysed);  // changes no GL state
     if (st != SSAO_OK) return st;
-
-    GlStateGuard guard(gl, ctx.caps, SSAO_UBO_FRAME, SSAO_UBO_KERNEL);
-    const DetachOnExit detach{gl, ctx.fbo};
-    st = inspect_textures(ctx, in, guard, analysed);  // binds: from here on the guard restores
+    GlStateGuard guard(ctx.gl, ctx.caps, SSAO_UBO_FRAME, SSAO_UBO_KERNEL);
+    TargetFramebuffer framebuffer(ctx);  // after the guard: detaches before the guard restores
+    st = inspect_textures(ctx, in, guard, analysed);  // from here on the guard restores
+    if (st == SSAO_OK) st = check_settings_against_inputs(ctx, analysed);
+    if (st == SSAO_OK) st = check_host_output(ctx, analysed, framebuffer);
     if (st != SSAO_OK) return st;
 
     const FramePlan plan = plan_frame(ctx.settings, analysed);
     st = compile_plan_programs(ctx, plan);  // a variant's first use compiles it
     if (st != SSAO_OK) return st;
 
-    // Resources: (re)allocate only on change; only then are the unpack state
-    // and our framebuffer's completeness looked at. An output the host
-    // deleted is a change.
-    forget_deleted_output(ctx);
-    if (ctx.kernel_dirty || resources_stale(ctx, plan)) {
-        guard.save_unpack_state();
-        reset_unpack(gl);
-    }
     PlanTextures textures;
-    st = update_resources(ctx, plan, analysed, textures);
+    st = update_resources(ctx, plan, analysed, guard, framebuffer, textures);
     if (st != SSAO_OK) return st;
-    if (ctx.kernel_dirty) upload_kernel(ctx);
+    update_kernel(ctx, guard);
     upload_frame_block(ctx, make_frame_block(ctx.settings, analysed));
 
-    run_plan(ctx, plan, textures);
+    ++ctx.executes;
+    run_plan(ctx, plan, textures, framebuffer);
 
     record_frame_info(ctx, analysed);
     if (out) {

@@ -95,7 +95,7 @@ private:
 // Puts the pipeline into the state the passes assume (after the guard saved it).
 void set_pass_state(const GladGLContext& gl, const GlCaps& caps);
 
-// (1.2) Output mode MULTIPLY: blending on draw buffer 0 that multiplies the
+// Output mode MULTIPLY: blending on draw buffer 0 that multiplies the
 // target's rgb by the fragment's rgb and keeps its alpha, and (for an sRGB
 // target) in linear space; end_multiply_blend puts back set_pass_state's.
 void begin_multiply_blend(const GladGLContext& gl, const GlCaps& caps);

@@ -53,7 +53,7 @@ bool bind_on(const GladGLContext& gl, GLuint unit, GLenum target, GLuint name) {
 
 bool bind_2d(const GladGLContext& gl, GLuint unit, GLuint name) { return bind_on(gl, unit, GL_TEXTURE_2D, name); }
 
-// Binds an input (depth or normal) on its target: GL_TEXTURE_2D or (1.2)
+// Binds an input (depth or normal) on its target: GL_TEXTURE_2D or
 // GL_TEXTURE_2D_MULTISAMPLE. Returns the target, or 0 when it is neither.
 // With GL 4.5 the target is known; below, `likely` is tried first and each
 // failed try raises GL_INVALID_OPERATION.
@@ -131,7 +131,7 @@ ssao_status inspect_normal(ssao_context& ctx, GLuint name, GLenum depth_target, 
 }  // namespace
 
 ssao_status check_inputs(ssao_context& ctx, const ssao_inputs& in, AnalysedInputs& out) {
-    // (1.2) No normal texture: normals are rebuilt from depth, and what
+    // No normal texture: normals are rebuilt from depth, and what
     // describes the normal texture (space, packing, view matrix) is ignored.
     const bool from_depth = in.normal_texture == 0;
     // Raw bits first (raw_enum.h): a caller may store any 32-bit value.
@@ -156,7 +156,7 @@ ssao_status check_inputs(ssao_context& ctx, const ssao_inputs& in, AnalysedInput
     const ssao_status pst = analyse_projection(in.projection, in.clip_range, proj, why);
     if (pst != SSAO_OK) return ctx.fail(pst, "inputs.projection: " + why);
     if (in.depth_texture == 0) return ctx.fail(SSAO_ERROR_INVALID_TEXTURE, "inputs.depth_texture is 0");
-    // Inputs: GL_TEXTURE_2D or (1.2) GL_TEXTURE_2D_MULTISAMPLE; below GL 4.5
+    // Inputs: GL_TEXTURE_2D or GL_TEXTURE_2D_MULTISAMPLE; below GL 4.5
     // the target is found by binding (inspect_textures), which also checks
     // that depth and normal agree.
     const auto is_input_kind = [](TexKind k) {
@@ -221,7 +221,7 @@ ssao_status inspect_textures(ssao_context& ctx, const ssao_inputs& in, GlStateGu
         guard.save_depth_stencil_mode(in.depth_texture, SSAO_UNIT_DEPTH, target);
         if (ctx.caps.depth_stencil_mode) gl.TexParameteri(target, GL_DEPTH_STENCIL_TEXTURE_MODE, GL_DEPTH_COMPONENT);
     }
-    // (1.2) Multisampled inputs: the sample read at every pixel must exist.
+    // Multisampled inputs: the sample read at every pixel must exist.
     if (samples > 0 && in.sample_index >= static_cast<uint32_t>(samples))
         return ctx.fail(SSAO_ERROR_INVALID_VALUE, "inputs.sample_index is " + std::to_string(in.sample_index) +
                                                       " but the inputs have " + std::to_string(samples) +
@@ -240,7 +240,6 @@ ssao_status inspect_textures(ssao_context& ctx, const ssao_inputs& in, GlStateGu
         return ctx.fail(SSAO_ERROR_INVALID_SIZE, "the viewport does not lie inside the " + std::to_string(dw) + "x" +
                                                      std::to_string(dh) + " input textures");
 
-    gl.BindFramebuffer(GL_FRAMEBUFFER, ctx.fbo);
     if (in.output_texture != 0) {
         if (!bind_2d(gl, SSAO_UNIT_AO, in.output_texture))
             return ctx.fail(SSAO_ERROR_INVALID_TEXTURE, "inputs.output_texture is not a GL_TEXTURE_2D (it did not bind)");
@@ -254,21 +253,9 @@ ssao_status inspect_textures(ssao_context& ctx, const ssao_inputs& in, GlStateGu
         if (has_integer_format(gl))
             return ctx.fail(SSAO_ERROR_UNSUPPORTED_FORMAT,
                             "inputs.output_texture has an integer format; a float, unorm or snorm one is needed");
-        // The normal debug views write x, y, z into red, green and blue (ssao.h).
-        // Queried only then: no extra GL query in a frame without a view.
-        const uint32_t view = ctx.settings.debug_view;
-        if (view == SSAO_DEBUG_VIEW_NORMALS || view == SSAO_DEBUG_VIEW_RECONSTRUCTED_NORMALS) {
-            GLint blue_bits = 0;
-            gl.GetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_BLUE_SIZE, &blue_bits);
-            if (blue_bits <= 0)
-                return ctx.fail(SSAO_ERROR_UNSUPPORTED_FORMAT,
-                                "a normals debug view needs an output_texture with red, green and blue channels");
-        }
-        // Checked before anything of the library's changes: a refused call
-        // leaves the library's own output as it was.
-        gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, in.output_texture, 0);
-        if (gl.CheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
-            return ctx.fail(SSAO_ERROR_UNSUPPORTED_FORMAT, "inputs.output_texture is not colour-renderable");
+        GLint blue_bits = 0;
+        gl.GetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_BLUE_SIZE, &blue_bits);
+        out.output_rgb = blue_bits > 0;
     }
 
     out.depth = fmt;

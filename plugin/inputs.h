@@ -35,17 +35,18 @@ struct AnalysedInputs {
     int viewport[4] = {0, 0, 0, 0};
     uint32_t depth_texture = 0, normal_texture = 0;  // the host's inputs (checked)
     uint32_t output_texture = 0;  // the host's output texture (checked), 0 = the library's own
-    // (1.2) Multisampled depth and normal (GL_TEXTURE_2D_MULTISAMPLE): the
+    bool output_rgb = false;      // the host's output texture has red, green and blue channels
+    // Multisampled depth and normal (GL_TEXTURE_2D_MULTISAMPLE): the
     // grid pass reads sample `sample_index` of each pixel.
     bool multisample = false;
     int sample_index = 0;
     int samples = 0;  // the inputs' sample count (0: single-sample GL_TEXTURE_2D)
-    // (1.2) output_mode MULTIPLY: the final pass multiplies AO into the host's
+    // output_mode MULTIPLY: the final pass multiplies AO into the host's
     // output texture instead of overwriting it.
     bool multiply_output = false;
-    // (1.2) No normal texture: the grid pass rebuilds normals from depth.
+    // No normal texture: the grid pass rebuilds normals from depth.
     bool normals_from_depth = false;
-    // (1.2) inputs.frame_index: 0 = the fixed noise pattern, else the
+    // inputs.frame_index: 0 = the fixed noise pattern, else the
     // sampling pass's rotation and jitter move with it (variant FRAME_NOISE).
     uint32_t frame_index = 0;
 };
@@ -55,11 +56,11 @@ struct AnalysedInputs {
 // signed_normals. On failure returns the status with ctx.fail() called.
 ssao_status check_inputs(ssao_context& ctx, const ssao_inputs& in, AnalysedInputs& out);
 
-// Inspects the textures (binds them on the library's units: call it inside
-// the state guard, which also saves a D24S8/D32FS8 input's depth-stencil
-// mode before it is changed to read depth). Fills depth, texture size,
-// viewport and output_texture. Leaves the library's framebuffer bound, with
-// the host's output texture (if any) attached and found complete.
+// Inspects the textures (binds them on the library's units to query them:
+// call it inside the state guard, which also saves a D24S8/D32FS8 input's
+// depth-stencil mode before it is changed to read depth). Fills depth,
+// texture size, viewport, output_texture and output_rgb. Leaves nothing a
+// later step relies on: each binds what it uses.
 ssao_status inspect_textures(ssao_context& ctx, const ssao_inputs& in, GlStateGuard& guard, AnalysedInputs& out);
 
 }  // namespace ssao_impl

@@ -2,6 +2,7 @@
 // writing where. The only place that decides the pass sequence.
 #include "plan.h"
 
+#include "pass_table.h"
 #include "settings.h"
 
 namespace ssao_impl {
@@ -10,12 +11,8 @@ namespace {
 
 using Source = TexRef::Source;
 
-bool is_normals_view(const ssao_settings& s) {
-    return s.debug_view == SSAO_DEBUG_VIEW_NORMALS || s.debug_view == SSAO_DEBUG_VIEW_RECONSTRUCTED_NORMALS;
-}
-
 TexFormat output_format_of(const ssao_settings& s) {
-    if (is_normals_view(s)) return TexFormat::rgba8;  // ssao.h: the normal views' own output is RGBA8
+    if (writes_normals(s)) return TexFormat::rgba8;  // ssao.h: the normal views' own output is RGBA8
     return s.output_format == SSAO_OUTPUT_R16F ? TexFormat::r16f : TexFormat::r8;
 }
 
@@ -31,11 +28,10 @@ public:
     }
 
     // A pass writing `target` over the rectangle `rect` of it.
-    Pass& add(PassKind kind, ProgramId program, TexRef target, const Rect& rect) {
+    Pass& add(PassKind kind, TexRef target, const Rect& rect) {
         Pass& p = plan_.passes[plan_.pass_count++];
         p = Pass{};
         p.kind = kind;
-        p.program = program;
         p.target = target;
         p.rect = rect;
         p.pack_depth = target.source == Source::intermediate;
@@ -49,7 +45,7 @@ private:
 // Variant bits of a pass that reads the host's depth and normal textures.
 uint32_t host_input_variant(const AnalysedInputs& in) { return in.multisample ? variant::multisample : 0u; }
 
-// Variant bits of the sampling pass's optional features (1.2): each only
+// Variant bits of the sampling pass's optional features: each only
 // when asked for, so a plan without them compiles and runs none of their code.
 uint32_t sampling_feature_variant(const ssao_settings& s, const AnalysedInputs& in) {
     uint32_t v = 0;
@@ -74,7 +70,7 @@ GridTextures add_grid_pass(Builder& b, const AnalysedInputs& in, int scale, cons
     GridTextures g;
     g.z = TexRef::of(Source::intermediate, b.intermediate(low.width, low.height, TexFormat::r32f));
     g.normal = TexRef::of(Source::intermediate, b.intermediate(low.width, low.height, TexFormat::rgba32f));
-    Pass& down = b.add(PassKind::downsample, ProgramId::downsample, g.z, low);
+    Pass& down = b.add(PassKind::grid, g.z, low);
     down.target2 = g.normal;
     down.inputs[SSAO_UNIT_DEPTH] = TexRef::of(Source::depth);
     if (!in.normals_from_depth) down.inputs[SSAO_UNIT_NORMAL] = TexRef::of(Source::normal);
@@ -98,7 +94,7 @@ void plan_sampling(Builder& b, const ssao_settings& s, const AnalysedInputs& in,
     const bool reduced = scale > 1;
     const bool blur = s.blur != SSAO_BLUR_NONE;
     const bool separable = blur && s.blur != SSAO_BLUR_BOX_4X4;
-    const ProgramId estimator = s.method == SSAO_METHOD_VISIBILITY ? ProgramId::visibility : ProgramId::ao;
+    const PassKind estimator = s.method == SSAO_METHOD_VISIBILITY ? PassKind::visibility : PassKind::kernel;
 
     const bool grid = reduced || in.multisample || in.normals_from_depth;
     const GridTextures grid_tex = grid ? add_grid_pass(b, in, scale, low) : GridTextures{};
@@ -109,7 +105,7 @@ void plan_sampling(Builder& b, const ssao_settings& s, const AnalysedInputs& in,
     const bool ao_to_output = !reduced && last_is_ao;
     const TexRef ao_target =
         ao_to_output ? output : TexRef::of(Source::intermediate, b.intermediate(lw, lh, TexFormat::rg32f));
-    Pass& ao = b.add(PassKind::ao, estimator, ao_target, ao_to_output ? final_rect : low);
+    Pass& ao = b.add(estimator, ao_target, ao_to_output ? final_rect : low);
     ao.inputs[SSAO_UNIT_DEPTH] = grid ? grid_tex.z : TexRef::of(Source::depth);
     ao.inputs[SSAO_UNIT_NORMAL] = grid ? grid_tex.normal : TexRef::of(Source::normal);
     ao.inputs[SSAO_UNIT_NOISE] = TexRef::of(Source::noise);
@@ -122,16 +118,16 @@ void plan_sampling(Builder& b, const ssao_settings& s, const AnalysedInputs& in,
         const bool x_to_output = !reduced && !separable;
         const TexRef x_target =
             x_to_output ? output : TexRef::of(Source::intermediate, b.intermediate(lw, lh, TexFormat::rg32f));
-        Pass& bx = b.add(PassKind::blur_x, ProgramId::blur, x_target, x_to_output ? final_rect : low);
+        Pass& bx = b.add(PassKind::blur_x, x_target, x_to_output ? final_rect : low);
         bx.inputs[SSAO_UNIT_AO] = ao_target;
         bx.direction[0] = 1;
         bx.depth_aware = reduced;
         low_ao = x_target;
         if (separable) {
-            // Below full resolution back into the AO pass's texture: its
+            // Below full resolution back into the estimator's texture: its
             // contents are no longer needed.
             const TexRef y_target = reduced ? ao_target : output;
-            Pass& by = b.add(PassKind::blur_y, ProgramId::blur, y_target, reduced ? low : final_rect);
+            Pass& by = b.add(PassKind::blur_y, y_target, reduced ? low : final_rect);
             by.inputs[SSAO_UNIT_AO] = x_target;
             by.direction[1] = 1;
             by.depth_aware = reduced;
@@ -140,7 +136,7 @@ void plan_sampling(Builder& b, const ssao_settings& s, const AnalysedInputs& in,
     }
     if (!reduced) return;
 
-    Pass& up = b.add(PassKind::upsample, ProgramId::upsample, output, final_rect);
+    Pass& up = b.add(PassKind::upsample, output, final_rect);
     up.inputs[SSAO_UNIT_DEPTH] = TexRef::of(Source::depth);
     up.inputs[SSAO_UNIT_AO] = low_ao;
     up.scale = scale;
@@ -163,7 +159,7 @@ bool plan_ao_debug_view(Builder& b, const ssao_settings& s, const AnalysedInputs
     const bool raw = s.debug_view == SSAO_DEBUG_VIEW_RAW_AO;
     if (!raw && s.debug_view != SSAO_DEBUG_VIEW_BLUR_WEIGHTS) return false;
     if (!raw && s.blur == SSAO_BLUR_NONE) {
-        b.add(PassKind::clear, ProgramId::none, output, final_rect);
+        b.add(PassKind::clear, output, final_rect);
         return true;
     }
     ssao_settings planned = s;
@@ -179,16 +175,15 @@ bool plan_ao_debug_view(Builder& b, const ssao_settings& s, const AnalysedInputs
 
 // The debug views NORMALS and RECONSTRUCTED_NORMALS: the grid pass at full
 // resolution (RECONSTRUCTED: rebuilding normals from depth whatever the
-// inputs), then one pass writing the grid's normal packed into RGB. The view
-// pass stands where the AO pass would (PassKind::ao: passes_run reads
-// DOWNSAMPLE | AO). False, planning nothing, for every other view.
+// inputs), then the view pass writing the grid's normal packed into RGB.
+// False, planning nothing, for every other view.
 bool plan_normals_view(Builder& b, const ssao_settings& s, const AnalysedInputs& in, const TexRef& output,
                        const Rect& final_rect) {
-    if (!is_normals_view(s)) return false;
+    if (!writes_normals(s)) return false;
     AnalysedInputs grid_in = in;
     if (s.debug_view == SSAO_DEBUG_VIEW_RECONSTRUCTED_NORMALS) grid_in.normals_from_depth = true;
     const GridTextures grid = add_grid_pass(b, grid_in, 1, Rect{0, 0, in.viewport[2], in.viewport[3]});
-    Pass& view = b.add(PassKind::ao, ProgramId::normals_view, output, final_rect);
+    Pass& view = b.add(PassKind::normals_view, output, final_rect);
     view.inputs[SSAO_UNIT_DEPTH] = grid.z;
     view.inputs[SSAO_UNIT_NORMAL] = grid.normal;
     view.variant = variant::grid_input;
@@ -197,9 +192,13 @@ bool plan_normals_view(Builder& b, const ssao_settings& s, const AnalysedInputs&
 
 }  // namespace
 
+bool writes_normals(const ssao_settings& s) {
+    return s.debug_view == SSAO_DEBUG_VIEW_NORMALS || s.debug_view == SSAO_DEBUG_VIEW_RECONSTRUCTED_NORMALS;
+}
+
 uint32_t FramePlan::passes_run() const {
     uint32_t bits = 0;
-    for (int i = 0; i < pass_count; ++i) bits |= static_cast<uint32_t>(passes[i].kind);
+    for (int i = 0; i < pass_count; ++i) bits |= pass_info(passes[i].kind).bit;
     return bits;
 }
 
@@ -225,7 +224,7 @@ FramePlan plan_frame(const ssao_settings& s, const AnalysedInputs& in) {
         // overwrites whatever the output mode (ssao.h): its 1s are cleared.
         if (in.multiply_output && s.debug_view == SSAO_DEBUG_VIEW_NONE) return plan;
         // Strength 0: no sampling at all, the output is exactly 1.
-        b.add(PassKind::clear, ProgramId::none, output, final_rect);
+        b.add(PassKind::clear, output, final_rect);
         return plan;
     }
     if (plan_ao_debug_view(b, s, in, output, final_rect, plan)) return plan;
@@ -235,30 +234,6 @@ FramePlan plan_frame(const ssao_settings& s, const AnalysedInputs& in) {
         for (int i = 0; i < plan.pass_count; ++i)
             if (plan.passes[i].target == output) plan.passes[i].multiply = true;
     return plan;
-}
-
-const char* pass_name(PassKind kind) {
-    switch (kind) {
-        case PassKind::clear: return "ssao: clear";
-        case PassKind::ao: return "ssao: ao";
-        case PassKind::blur_x: return "ssao: blur x";
-        case PassKind::blur_y: return "ssao: blur y";
-        case PassKind::downsample: return "ssao: downsample";
-        case PassKind::upsample: return "ssao: upsample";
-    }
-    return "ssao: pass";
-}
-
-TimingBucket timing_bucket(PassKind kind) {
-    switch (kind) {
-        case PassKind::clear:
-        case PassKind::downsample:
-        case PassKind::ao: return TimingBucket::ao;
-        case PassKind::blur_x:
-        case PassKind::blur_y:
-        case PassKind::upsample: return TimingBucket::blur;
-    }
-    return TimingBucket::ao;
 }
 
 }  // namespace ssao_impl

@@ -1,27 +1,16 @@
 // plan.h - the frame plan: a pure function from (resolved settings, analysed
 // inputs) to the ordered passes of one execute and the intermediate textures
 // they need. No GL here: the plan is unit tested without a context
-// (tests/unit/test_plan.cpp), and everything that touches GL reads it:
+// (tests/unit/test_plan*.cpp), and everything that touches GL reads it:
 //   resources.cpp (allocates the plan's intermediates and the owned output),
-//   runner.cpp    (binds, draws, debug groups and one timestamp per pass),
-//   timers.cpp    (per-pass GPU times; ao_ms / blur_ms from timing_bucket()).
-//
-// How to add a pass (say a depth downsample before the AO):
-//   1. here: a PassKind (its value is the pass's public ssao_pass bit: append
-//      one to ssao_pass in include/ssao/ssao.h), its debug name in pass_name()
-//      and its ao/blur bucket in timing_bucket(); if it runs a new shader, a
-//      ProgramId before `count`;
-//   2. plan.cpp: emit it in plan_frame() with its inputs (texture unit ->
-//      what it samples), its target (an intermediate it declares, or the
-//      output), its rectangle, and the intermediates it needs;
-//   3. the pass file: its fragment shader in shaders/ (listed in
-//      shaders/CMakeLists.txt) and its row in shader_source.cpp (shader, label).
-// The resources, the runner, the timers and the debug groups follow the plan
-// and need no change. Per-pass values a shader reads (target origin, packing,
-// direction; a source scale for half resolution, say) are fields of Pass that
-// the runner sets as uniforms of the same name in every program
-// (programs.cpp, PassUniforms); a program without one ignores it. A feature
-// that is off by default is a variant bit (namespace variant below).
+//   runner.cpp    (binds what each pass declares, draws, one timestamp per pass),
+//   timers.cpp    (per-pass GPU times).
+// What a pass is called, which bit and timing figure it reports and which
+// program it draws with is its row in pass_table.cpp; how to add one is told
+// in pass_table.h. Per-pass values a shader reads (target origin, packing,
+// direction, grid scale) are fields of Pass that pass_uniforms.cpp sets in
+// every program that declares them. A feature that is off by default is a
+// variant bit (namespace variant below).
 // Limits to know: a pass samples at most SSAO_UNITS_USED (4) units, the ones
 // the state guard saves and the ABI documents; an intermediate of a new
 // format needs its TexFormat here and its GL triple in resources.cpp
@@ -42,31 +31,23 @@ namespace ssao_impl {
 constexpr int kMaxPasses = SSAO_MAX_PASSES;
 constexpr int kMaxIntermediates = 4;
 
-// What a pass does; the value is its ssao_pass bit (passes_run, pass_kind).
-enum class PassKind : uint32_t {
-    clear = SSAO_PASS_CLEAR,    // strength 0: the output's rectangle cleared to 1, nothing sampled
-    ao = SSAO_PASS_AO,          // the sampling pass
-    blur_x = SSAO_PASS_BLUR_X,  // horizontal blur (or the box blur's single pass)
-    blur_y = SSAO_PASS_BLUR_Y,  // vertical blur
-    downsample = SSAO_PASS_DOWNSAMPLE,  // reduced resolution: one picked texel's depth and normal per block
-    upsample = SSAO_PASS_UPSAMPLE,      // reduced resolution: depth-aware upsample to every viewport pixel
+// What a pass does: an index into the pass table (pass_table.cpp), which
+// gives its name, its public ssao_pass bit and its program.
+enum class PassKind : uint8_t {
+    clear,         // strength 0: the output's rectangle cleared to 1, nothing sampled
+    grid,          // one picked texel's view z and normal per block (every pixel at full resolution)
+    kernel,        // the occlusion estimator with the hemisphere kernel (method KERNEL)
+    visibility,    // the occlusion estimator marching directions (method VISIBILITY)
+    normals_view,  // the debug views NORMALS and RECONSTRUCTED_NORMALS: the grid's normal packed into RGB
+    blur_x,        // horizontal blur (or the box blur's single pass)
+    blur_y,        // vertical blur
+    upsample,      // reduced resolution: depth-aware upsample to every viewport pixel
+    count
 };
 
-// The compiled programs (programs.cpp has one row per id). A clear draws nothing.
-// ao and visibility are the two estimators (ssao_settings.method) of the ao pass.
-// downsample and upsample run only below full resolution (ssao_settings.resolution).
-// normals_view writes the grid's normals packed into RGB (the debug views
-// NORMALS and RECONSTRUCTED_NORMALS).
-enum class ProgramId : int {
-    none = -1,
-    ao = 0,
-    visibility = 1,
-    blur = 2,
-    downsample = 3,
-    upsample = 4,
-    normals_view = 5,
-    count = 6
-};
+// The compiled programs (one per shader file; the two blurs share one). The
+// clear pass draws nothing (none).
+enum class ProgramId : int8_t { none = -1, grid, kernel, visibility, normals_view, blur, upsample, count };
 
 // Compile-time variants of a program. Each bit is a feature that is off by
 // default and free when off: its shader code sits behind `#ifdef SSAO_<NAME>`
@@ -122,8 +103,7 @@ struct Rect {
 };
 
 struct Pass {
-    PassKind kind = PassKind::ao;
-    ProgramId program = ProgramId::none;  // none: no draw, the rectangle is cleared to 1 (the clear pass)
+    PassKind kind = PassKind::clear;  // its program: program_of(kind) (pass_table.h)
     // What the pass samples, by texture unit (SSAO_UNIT_*). The runner binds
     // these; a unit left `none` keeps what it holds unless that is unknown
     // (the host's) or the pass's own target, which it unbinds, so a pass never
@@ -138,18 +118,18 @@ struct Pass {
     int direction[2] = {0, 0};  // blur direction (u_blur_dir)
     // Viewport pixels per texel of the reduced grid (u_scale: 1, 2 or 4):
     // the grid the sampling pass reads (1: the host's textures, else the
-    // downsample's intermediate), the grid the downsample writes, the grid
+    // grid pass's intermediate), the grid the grid pass writes, the grid
     // the upsample reads. Blurs ignore it.
     int scale = 1;
     // Blurs: weigh taps by depth similarity whatever the blur kind
     // (u_depth_aware). Set below full resolution, where a blurred grid texel
     // spans several pixels and the upsample could not undo a leak.
     bool depth_aware = false;
-    uint32_t variant = 0;  // bits of `variant::`: which compiled variant of `program` runs
-    // (1.2) Variant MULTISAMPLE: the sample of the host's multisampled depth
+    uint32_t variant = 0;  // bits of `variant::`: which compiled variant of its program runs
+    // Variant MULTISAMPLE: the sample of the host's multisampled depth
     // and normal this pass reads at every pixel (u_sample_index).
     int sample_index = 0;
-    // (1.2) Output mode MULTIPLY: the pass writes the host's lit image through
+    // Output mode MULTIPLY: the pass writes the host's lit image through
     // blending, rgb = dst.rgb * src.rgb, alpha kept (the runner sets the blend;
     // the shader writes AO to rgb as in overwrite mode).
     bool multiply = false;
@@ -180,13 +160,12 @@ struct FramePlan {
 // The plan for one execute. Pure: the same arguments give the same plan.
 FramePlan plan_frame(const ssao_settings& resolved, const AnalysedInputs& in);
 
-// Debug-group name of a pass ("ssao: ao", "ssao: blur x", ...): what
-// RenderDoc and apitrace show. kExecuteGroupName wraps the whole execute.
-const char* pass_name(PassKind kind);
-constexpr const char* kExecuteGroupName = "ssao";
+// Whether the settings ask for a normals debug view (NORMALS or
+// RECONSTRUCTED_NORMALS), whose output is x, y, z in red, green and blue.
+bool writes_normals(const ssao_settings& s);
 
-// Which of ssao_timings' two summary figures a pass's GPU time counts in.
-enum class TimingBucket { ao, blur };
-TimingBucket timing_bucket(PassKind kind);
+// The group around a whole execute; each pass has its own inside it
+// (pass_table.cpp).
+constexpr const char* kExecuteGroupName = "ssao";
 
 }  // namespace ssao_impl

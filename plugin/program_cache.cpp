@@ -4,16 +4,21 @@
 
 #include "context.h"
 #include "debug.h"
+#include "pass_table.h"
 #include "shader_source.h"
 #include "uniforms.h"
 
 #include <string>
+#include <vector>
 
 namespace ssao_impl {
 
 namespace {
 
-bool compile(ssao_context& ctx, GLenum type, const std::string& source, const char* name, GLuint& out) {
+// `files`: the file of each source-string number of `source`, named in the
+// error so that the driver's "N:LINE" can be read.
+bool compile(ssao_context& ctx, GLenum type, const std::string& source, const char* name,
+             const std::vector<const char*>& files, GLuint& out) {
     const GladGLContext& gl = ctx.gl;
     GLuint sh = gl.CreateShader(type);
     const char* src = source.c_str();
@@ -25,7 +30,7 @@ bool compile(ssao_context& ctx, GLenum type, const std::string& source, const ch
         char log[4096] = {};
         gl.GetShaderInfoLog(sh, sizeof log, nullptr, log);
         gl.DeleteShader(sh);
-        ctx.fail(SSAO_ERROR_SHADER, std::string("shader ") + name + " failed to compile: " + log);
+        ctx.fail(SSAO_ERROR_SHADER, compile_error_message(name, files, log));
         return false;
     }
     out = sh;
@@ -63,12 +68,13 @@ void set_sampler_units(const GladGLContext& gl, GLuint program) {
     gl.UseProgram(static_cast<GLuint>(previous));
 }
 
-ssao_status link(ssao_context& ctx, const std::string& fragment, const char* name, GLuint& program) {
+ssao_status link(ssao_context& ctx, const std::string& fragment, const char* name,
+                 const std::vector<const char*>& fragment_files, GLuint& program) {
     const GladGLContext& gl = ctx.gl;
     GLuint vs = 0, fs = 0;
-    if (!compile(ctx, GL_VERTEX_SHADER, vertex_source(), "fullscreen.vert", vs))
+    if (!compile(ctx, GL_VERTEX_SHADER, vertex_source(), "fullscreen.vert", vertex_files(), vs))
         return SSAO_ERROR_SHADER;
-    if (!compile(ctx, GL_FRAGMENT_SHADER, fragment, name, fs)) {
+    if (!compile(ctx, GL_FRAGMENT_SHADER, fragment, name, fragment_files, fs)) {
         gl.DeleteShader(vs);
         return SSAO_ERROR_SHADER;
     }
@@ -105,7 +111,7 @@ ssao_status add_program(ssao_context& ctx, ProgramId id, uint32_t variant) {
     compiled.variant = variant;
     // Room first: a push_back that throws after linking would leak the program.
     ctx.programs.reserve(ctx.programs.size() + 1);
-    const ssao_status st = link(ctx, fragment_source(id, variant), name.c_str(), compiled.program);
+    const ssao_status st = link(ctx, fragment_source(id, variant), name.c_str(), fragment_files(id), compiled.program);
     if (st != SSAO_OK) {
         if (compiled.program) ctx.gl.DeleteProgram(compiled.program);
         compiled.program = 0;
@@ -141,22 +147,23 @@ ssao_status compile_base_programs(ssao_context& ctx) {
 ssao_status compile_plan_programs(ssao_context& ctx, const FramePlan& plan) {
     for (int i = 0; i < plan.pass_count; ++i) {
         const Pass& pass = plan.passes[i];
-        if (pass.program == ProgramId::none) continue;
-        if (const CompiledProgram* known = find(ctx, pass.program, pass.variant)) {
+        const ProgramId program = program_of(pass.kind);
+        if (program == ProgramId::none) continue;
+        if (const CompiledProgram* known = find(ctx, program, pass.variant)) {
             if (known->failed)
-                return ctx.fail(SSAO_ERROR_SHADER, std::string("program ") + program_info(pass.program).file_name +
+                return ctx.fail(SSAO_ERROR_SHADER, std::string("program ") + program_info(program).file_name +
                                                        " (variant " + std::to_string(pass.variant) +
                                                        ") failed to compile on an earlier execute; it is not retried");
             continue;
         }
-        const ssao_status st = add_program(ctx, pass.program, pass.variant);
+        const ssao_status st = add_program(ctx, program, pass.variant);
         if (st != SSAO_OK) return st;
     }
     return SSAO_OK;
 }
 
 const CompiledProgram& program_for(const ssao_context& ctx, const Pass& pass) {
-    const CompiledProgram* p = find(ctx, pass.program, pass.variant);
+    const CompiledProgram* p = find(ctx, program_of(pass.kind), pass.variant);
     return p ? *p : ctx.programs.front();  // compile_plan_programs ran: always found
 }
 

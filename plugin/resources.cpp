@@ -1,7 +1,9 @@
-// resources.cpp - allocation of the plan's textures.
+// resources.cpp - allocation of the plan's textures and the framebuffer
+// they are attached to.
 #include "resources.h"
 
 #include "context.h"
+#include "gl_state_guard.h"
 
 #include <string>
 
@@ -57,7 +59,80 @@ bool output_stale(const ssao_context& ctx, const FramePlan& plan) {
 const char* const kIntermediateLabels[kMaxIntermediates] = {"ssao: intermediate 0", "ssao: intermediate 1",
                                                             "ssao: intermediate 2", "ssao: intermediate 3"};
 
+// Whether update_resources will (re)allocate anything for `plan`.
+bool resources_stale(const ssao_context& ctx, const FramePlan& plan) {
+    for (int i = 0; i < plan.intermediate_count; ++i)
+        if (intermediate_stale(ctx, plan, i)) return true;
+    return output_stale(ctx, plan);
+}
+
+// Forgets an output texture the host deleted (owned_output_alive false), so
+// it is made again; the name is not deleted, it is not the library's any more.
+void forget_deleted_output(ssao_context& ctx) {
+    if (ctx.output == 0 || owned_output_alive(ctx)) return;
+    ctx.output = 0;
+    ctx.output_width = ctx.output_height = 0;
+}
+
+// Default unpack state for the library's uploads (the guard restores the host's).
+void reset_unpack(const GladGLContext& gl) {
+    gl.BindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
+    gl.PixelStorei(GL_UNPACK_SWAP_BYTES, 0);
+    gl.PixelStorei(GL_UNPACK_LSB_FIRST, 0);
+    gl.PixelStorei(GL_UNPACK_ROW_LENGTH, 0);
+    gl.PixelStorei(GL_UNPACK_IMAGE_HEIGHT, 0);
+    gl.PixelStorei(GL_UNPACK_SKIP_ROWS, 0);
+    gl.PixelStorei(GL_UNPACK_SKIP_PIXELS, 0);
+    gl.PixelStorei(GL_UNPACK_SKIP_IMAGES, 0);
+    gl.PixelStorei(GL_UNPACK_ALIGNMENT, 4);
+}
+
+// The plan's intermediates and owned output at the size and format it asks
+// for. Returns whether the owned output was (re)made.
+bool allocate_stale(ssao_context& ctx, const FramePlan& plan, GlStateGuard& guard) {
+    if (!resources_stale(ctx, plan)) return false;
+    const GladGLContext& gl = ctx.gl;
+    use_default_unpack(gl, guard);
+    gl.ActiveTexture(GL_TEXTURE0 + SSAO_UNIT_AO);
+    for (int i = 0; i < plan.intermediate_count; ++i) {
+        if (!intermediate_stale(ctx, plan, i)) continue;
+        const Intermediate& want = plan.intermediates[i];
+        allocate(ctx, ctx.intermediates[i], want.format, want.width, want.height, kIntermediateLabels[i]);
+        ctx.intermediate_specs[i] = want;
+    }
+    if (!output_stale(ctx, plan)) return false;
+    allocate(ctx, ctx.output, plan.output_format, plan.output_width, plan.output_height, ctx.output_label.c_str());
+    ctx.output_width = plan.output_width;
+    ctx.output_height = plan.output_height;
+    ctx.output_format = plan.output_format;
+    return true;
+}
+
 }  // namespace
+
+TargetFramebuffer::TargetFramebuffer(ssao_context& ctx) : gl_(ctx.gl) {
+    gl_.BindFramebuffer(GL_FRAMEBUFFER, ctx.fbo);
+    // A framebuffer exists only after its first bind: labelled then, once.
+    if (!ctx.debug.objects_labelled) {
+        label_object(ctx, GL_FRAMEBUFFER, ctx.fbo, kLabelFramebuffer);
+        ctx.debug.objects_labelled = true;
+    }
+}
+
+TargetFramebuffer::~TargetFramebuffer() { attach(0, 0); }
+
+void TargetFramebuffer::attach(GLuint colour0, GLuint colour1) {
+    static const GLenum one[1] = {GL_COLOR_ATTACHMENT0};
+    static const GLenum two[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+    gl_.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, colour0, 0);
+    gl_.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, colour1, 0);
+    // The draw-buffer list is the library's framebuffer's own state, not the host's.
+    gl_.DrawBuffers(colour1 != 0 ? 2 : 1, colour1 != 0 ? two : one);
+}
+
+bool TargetFramebuffer::complete() const {
+    return gl_.CheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
+}
 
 GLuint PlanTextures::resolve(const TexRef& ref) const {
     switch (ref.source) {
@@ -81,35 +156,18 @@ bool owned_output_alive(const ssao_context& ctx) {
            has_label(ctx, GL_TEXTURE, ctx.output, ctx.output_label.c_str());
 }
 
-void forget_deleted_output(ssao_context& ctx) {
-    if (ctx.output == 0 || owned_output_alive(ctx)) return;
-    ctx.output = 0;
-    ctx.output_width = ctx.output_height = 0;
+ssao_status check_host_output(const ssao_context& ctx, const AnalysedInputs& in, TargetFramebuffer& framebuffer) {
+    if (in.output_texture == 0) return SSAO_OK;
+    framebuffer.attach(in.output_texture);
+    if (!framebuffer.complete())
+        return ctx.fail(SSAO_ERROR_UNSUPPORTED_FORMAT, "inputs.output_texture is not colour-renderable");
+    return SSAO_OK;
 }
 
-bool resources_stale(const ssao_context& ctx, const FramePlan& plan) {
-    for (int i = 0; i < plan.intermediate_count; ++i)
-        if (intermediate_stale(ctx, plan, i)) return true;
-    return output_stale(ctx, plan);
-}
-
-ssao_status update_resources(ssao_context& ctx, const FramePlan& plan, const AnalysedInputs& in, PlanTextures& out) {
-    const GladGLContext& gl = ctx.gl;
-    gl.ActiveTexture(GL_TEXTURE0 + SSAO_UNIT_AO);
-    for (int i = 0; i < plan.intermediate_count; ++i) {
-        if (!intermediate_stale(ctx, plan, i)) continue;
-        const Intermediate& want = plan.intermediates[i];
-        allocate(ctx, ctx.intermediates[i], want.format, want.width, want.height, kIntermediateLabels[i]);
-        ctx.intermediate_specs[i] = want;
-    }
-    const bool new_output = output_stale(ctx, plan);
-    if (new_output) {
-        allocate(ctx, ctx.output, plan.output_format, plan.output_width, plan.output_height,
-                 ctx.output_label.c_str());
-        ctx.output_width = plan.output_width;
-        ctx.output_height = plan.output_height;
-        ctx.output_format = plan.output_format;
-    }
+ssao_status update_resources(ssao_context& ctx, const FramePlan& plan, const AnalysedInputs& in, GlStateGuard& guard,
+                             TargetFramebuffer& framebuffer, PlanTextures& out) {
+    if (plan.owned_output) forget_deleted_output(ctx);
+    const bool new_output = allocate_stale(ctx, plan, guard);
 
     out.depth = in.depth_texture;
     out.normal = in.normal_texture;
@@ -118,23 +176,17 @@ ssao_status update_resources(ssao_context& ctx, const FramePlan& plan, const Ana
     out.output = plan.owned_output ? ctx.output : in.output_texture;
     for (int i = 0; i < kMaxIntermediates; ++i) out.intermediates[i] = ctx.intermediates[i];
 
-    gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, out.output, 0);
-    if (new_output && gl.CheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
-        return ctx.fail(SSAO_ERROR_FRAMEBUFFER, "the library's output framebuffer is incomplete");
+    if (new_output) {
+        framebuffer.attach(out.output);
+        if (!framebuffer.complete())
+            return ctx.fail(SSAO_ERROR_FRAMEBUFFER, "the library's output framebuffer is incomplete");
+    }
     return SSAO_OK;
 }
 
-// Default unpack state for our uploads (the guard restores the host's).
-void reset_unpack(const GladGLContext& gl) {
-    gl.BindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
-    gl.PixelStorei(GL_UNPACK_SWAP_BYTES, 0);
-    gl.PixelStorei(GL_UNPACK_LSB_FIRST, 0);
-    gl.PixelStorei(GL_UNPACK_ROW_LENGTH, 0);
-    gl.PixelStorei(GL_UNPACK_IMAGE_HEIGHT, 0);
-    gl.PixelStorei(GL_UNPACK_SKIP_ROWS, 0);
-    gl.PixelStorei(GL_UNPACK_SKIP_PIXELS, 0);
-    gl.PixelStorei(GL_UNPACK_SKIP_IMAGES, 0);
-    gl.PixelStorei(GL_UNPACK_ALIGNMENT, 4);
+void use_default_unpack(const GladGLContext& gl, GlStateGuard& guard) {
+    guard.save_unpack_state();
+    reset_unpack(gl);
 }
 
 }  // namespace ssao_impl

@@ -3,6 +3,7 @@
 
 #include "context.h"
 #include "debug.h"
+#include "pass_table.h"
 #include "program_cache.h"
 #include "timers.h"
 
@@ -12,19 +13,12 @@ namespace {
 
 // What each of the library's texture units holds on its two targets
 // (GL_TEXTURE_2D and, for multisampled inputs, GL_TEXTURE_2D_MULTISAMPLE), so
-// a pass binds only what changes. Unknown: whatever the host or an upload
-// left there. A program samples a unit through one sampler type, so a
-// texture left on the unit's other target is never read.
+// a pass binds only what changes. Every unit starts unknown: whatever the
+// host or an earlier step left there. A program samples a unit through one
+// sampler type, so a texture left on the unit's other target is never read.
 class UnitBindings {
 public:
-    UnitBindings(const GladGLContext& gl, const PlanTextures& t) : gl_(gl) {
-        // inspect_textures left the host's depth and normal textures bound;
-        // without a normal texture (depth-only input) it did not touch the
-        // normal unit, which then holds whatever the host left: unknown.
-        const int k = slot(t.input_target);
-        set_known(SSAO_UNIT_DEPTH, k, t.depth);
-        if (t.normal != 0) set_known(SSAO_UNIT_NORMAL, k, t.normal);
-    }
+    explicit UnitBindings(const GladGLContext& gl) : gl_(gl) {}
 
     // Binds the pass's inputs, each on its target; a unit whose 2D target it
     // does not sample keeps its texture there unless that is unknown or the
@@ -73,16 +67,6 @@ void clear_to_one(const GladGLContext& gl, const Pass& pass) {
     gl.Disable(GL_SCISSOR_TEST);
 }
 
-// Attachment 1 of the library's framebuffer: `texture` written by fragment
-// output 1 beside attachment 0, or (0) detached with only attachment 0 drawn.
-// The draw-buffer list is the library's framebuffer's own state, not the host's.
-void set_second_target(const GladGLContext& gl, GLuint texture) {
-    static const GLenum one[1] = {GL_COLOR_ATTACHMENT0};
-    static const GLenum two[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
-    gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, texture, 0);
-    gl.DrawBuffers(texture != 0 ? 2 : 1, texture != 0 ? two : one);
-}
-
 void draw(const ssao_context& ctx, const Pass& pass) {
     const GladGLContext& gl = ctx.gl;
     const CompiledProgram& program = program_for(ctx, pass);
@@ -92,33 +76,24 @@ void draw(const ssao_context& ctx, const Pass& pass) {
     gl.DrawArrays(GL_TRIANGLES, 0, 3);
 }
 
-// The framebuffer exists only after its first bind: label it then (the
-// vertex array was made and labelled at creation: context_identity.cpp).
-void label_bound_objects(ssao_context& ctx) {
-    if (ctx.debug.objects_labelled) return;
-    label_object(ctx, GL_FRAMEBUFFER, ctx.fbo, kLabelFramebuffer);
-    ctx.debug.objects_labelled = true;
-}
-
 }  // namespace
 
-void run_plan(ssao_context& ctx, const FramePlan& plan, const PlanTextures& textures) {
+void run_plan(ssao_context& ctx, const FramePlan& plan, const PlanTextures& textures, TargetFramebuffer& framebuffer) {
     const GladGLContext& gl = ctx.gl;
     for (GLuint u = 0; u < SSAO_UNITS_USED; ++u) gl.BindSampler(u, ctx.sampler);
     set_pass_state(gl, ctx.caps);
     gl.BindVertexArray(ctx.vao);
-    label_bound_objects(ctx);
+    gl.BindBufferBase(GL_UNIFORM_BUFFER, SSAO_UBO_FRAME, ctx.ubo_frame);
+    gl.BindBufferBase(GL_UNIFORM_BUFFER, SSAO_UBO_KERNEL, ctx.ubo_kernel);
 
-    UnitBindings units(gl, textures);
+    UnitBindings units(gl);
     const int slot = begin_timed_frame(ctx, plan);
     for (int i = 0; i < plan.pass_count; ++i) {
         const Pass& pass = plan.passes[i];
         {
-            const PassGroup group(ctx, pass_name(pass.kind));
-            gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D,
-                                    textures.resolve(pass.target), 0);
-            set_second_target(gl, textures.resolve(pass.target2));
-            if (pass.program == ProgramId::none) {
+            const PassGroup group(ctx, pass_info(pass.kind).debug_group);
+            framebuffer.attach(textures.resolve(pass.target), textures.resolve(pass.target2));
+            if (program_of(pass.kind) == ProgramId::none) {
                 clear_to_one(gl, pass);
             } else {
                 units.bind_for(pass, textures);

@@ -1,7 +1,8 @@
-// runner.h - executes a FramePlan: pipeline state, then per pass its debug
-// group, input bindings, target, program and uniforms, the draw (or the
-// clear), and one timestamp after it. Knows no pass by name: everything it
-// does comes from the plan.
+// runner.h - executes a FramePlan: pipeline state, the uniform blocks,
+// then per pass its debug group, input bindings, targets, program and
+// uniforms, the draw (or the clear), and one timestamp after it. Knows no
+// pass by name and assumes nothing bound: everything it binds comes from the
+// plan and the resolved textures.
 #pragma once
 
 #include "plan.h"
@@ -11,8 +12,8 @@ struct ssao_context;
 
 namespace ssao_impl {
 
-// Runs `plan` (the frame block uploaded, the resources updated; the depth
-// and normal textures bound on their units by inspect_textures).
-void run_plan(ssao_context& ctx, const FramePlan& plan, const PlanTextures& textures);
+// Runs `plan` into `framebuffer` (the constants uploaded, the resources
+// updated and resolved in `textures`).
+void run_plan(ssao_context& ctx, const FramePlan& plan, const PlanTextures& textures, TargetFramebuffer& framebuffer);
 
 }  // namespace ssao_impl

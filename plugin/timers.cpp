@@ -2,6 +2,7 @@
 #include "timers.h"
 
 #include "context.h"
+#include "pass_table.h"
 
 namespace ssao_impl {
 
@@ -21,9 +22,8 @@ void stamp(ssao_context& ctx, int slot, int index) {
 
 int begin_timed_frame(ssao_context& ctx, const FramePlan& plan) {
     collect_timings(ctx);
-    ++ctx.frame;
     if (!ctx.timers) return -1;
-    const int slot = static_cast<int>(ctx.frame % ssao_context::kFrames);
+    const int slot = static_cast<int>(ctx.executes % ssao_context::kFrames);
     if (ctx.query_frame[slot] != 0) return -1;
     ssao_context::TimedPasses& passes = ctx.query_passes[slot];
     passes.count = plan.pass_count;
@@ -37,7 +37,7 @@ void stamp_pass(ssao_context& ctx, int slot, int pass) {
 }
 
 void end_timed_frame(ssao_context& ctx, int slot) {
-    if (slot >= 0) ctx.query_frame[slot] = ctx.frame;
+    if (slot >= 0) ctx.query_frame[slot] = ctx.executes;
 }
 
 void collect_timings(ssao_context& ctx) {
@@ -64,9 +64,10 @@ void collect_timings(ssao_context& ctx) {
         out.pass_count = static_cast<uint32_t>(passes.count);
         for (int i = 0; i < passes.count; ++i) {
             const double ms = static_cast<double>(t[i + 1] - t[i]) * 1e-6;
-            out.pass_kind[i] = static_cast<uint32_t>(passes.kinds[i]);
+            const PassInfo& pass = pass_info(passes.kinds[i]);
+            out.pass_kind[i] = pass.bit;
             out.pass_ms[i] = ms;
-            (timing_bucket(passes.kinds[i]) == TimingBucket::blur ? out.blur_ms : out.ao_ms) += ms;
+            (pass.bucket == TimingBucket::blur_ms ? out.blur_ms : out.ao_ms) += ms;
         }
         out.total_ms = static_cast<double>(t[passes.count] - t[0]) * 1e-6;
         ctx.query_frame[oldest] = 0;

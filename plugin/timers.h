@@ -9,9 +9,10 @@ struct ssao_context;
 
 namespace ssao_impl {
 
-// Starts measuring a frame of `plan`: reads finished slots first, counts the
-// frame, and returns the slot to stamp (-1: no timers, or no free slot; a
-// slot is reused only once its results were read) after stamping it once.
+// Starts measuring execute number ctx.executes running `plan`: reads
+// finished slots first, and returns the slot to stamp (-1: no timers, or no
+// free slot; a slot is reused only once its results were read) after
+// stamping it once.
 int begin_timed_frame(ssao_context& ctx, const FramePlan& plan);
 // The stamp after pass `pass` of the slot's plan.
 void stamp_pass(ssao_context& ctx, int slot, int pass);

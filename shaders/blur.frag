@@ -13,27 +13,20 @@
 // the horizontal pass's share at its centre and multiplies it in: the view is
 // the product of both passes' shares at the pixel.
 
-uniform sampler2D u_ao_tex;     // RG32F (ao, view z), viewport- (or grid-) sized, texel (0,0) = viewport pixel (0,0)
 uniform ivec2 u_blur_dir;       // (1,0) or (0,1); unused by the box
-uniform bool u_pack_depth;      // writing the next blur pass's input: (ao, view z)
 uniform ivec2 u_pass_size;      // the grid blurred: the viewport, or the reduced grid below full resolution
 uniform bool u_depth_aware;     // below full resolution: every kind weighs taps by depth similarity
-
-out vec4 o_ao;
-
-
-vec4 result(float ao, float z) { return u_pack_depth ? vec4(ao, z, 0.0, 1.0) : vec4(ao, ao, ao, 1.0); }
 
 void main() {
     ivec2 vpx = ivec2(gl_FragCoord.xy) - u_target_origin;
     ivec2 size = u_pass_size;
-    int kind = u_counts.w;
+    int kind = consts.blur_kind;
     vec2 c = texelFetch(u_ao_tex, vpx, 0).rg;
     float centre = c.r, z0 = c.g;
     if (z0 == SKY_Z) { o_ao = result(1.0, SKY_Z); return; }  // the sky stays exactly 1
     // Floored: an orthographic camera whose near plane lies behind the eye
     // has surfaces at view z = 0, where 0/0 would be undefined.
-    float tolerance = max(u_ao2.z * abs(z0), 1e-30);
+    float tolerance = max(consts.blur_depth_tolerance * abs(z0), 1e-30);
     if (kind == SSAO_SHADER_BLUR_BOX) {
         // The chapter's blur: offsets -2..1 in x and y, clamped at the edges;
         // sky taps take no part in the average (the centre never is sky).
@@ -62,12 +55,12 @@ void main() {
         return;
     }
     bool aware = kind == SSAO_SHADER_BLUR_DEPTH_AWARE || u_depth_aware;
-    float inv2s2 = 0.5 / (u_ao2.y * u_ao2.y);
+    float inv2s2 = 0.5 / (consts.blur_sigma * consts.blur_sigma);
     float sum = centre, weight = 1.0;
 #ifdef SSAO_BLUR_WEIGHTS
     float gaussian = 1.0;  // the centre's weight, never rejected
 #endif
-    for (int k = -u_counts.z; k <= u_counts.z; ++k) {
+    for (int k = -consts.blur_radius; k <= consts.blur_radius; ++k) {
         if (k == 0) continue;
         ivec2 t = vpx + u_blur_dir * k;
         if (any(lessThan(t, ivec2(0))) || any(greaterThanEqual(t, size))) continue;  // no clamped repeats at borders

@@ -1,15 +1,19 @@
-// Shared by the AO and blur passes: depth fetch, sky test, view-position
-// reconstruction with the inverse projection, and the depth step used for the
-// format-aware bias.
+// Shared by every fragment pass: the host's depth, the grid a pass reads or
+// writes, the sky test, view positions (through the inverse projection or
+// from view z), and the depth step used for the format-aware bias.
 
+// The texel of the host's texture `tex` (depth or normals) at viewport pixel
+// vpx. Variant MULTISAMPLE: the host's textures are
+// GL_TEXTURE_2D_MULTISAMPLE and every pixel reads sample u_sample_index
+// (Pass::sample_index). Only the passes that read the host's textures (the
+// grid pass, the upsample) have this variant.
 #ifdef SSAO_MULTISAMPLE
-// (1.2) The host's depth is a GL_TEXTURE_2D_MULTISAMPLE: every pixel reads
-// sample u_sample_index (Pass::sample_index). Only the passes that read the
-// host's textures (the grid pass, the upsample) have this variant.
 uniform sampler2DMS u_depth_tex;
 uniform int u_sample_index;
+#define SSAO_INPUT_TEXEL(tex, vpx) texelFetch(tex, (vpx) + consts.viewport_origin, u_sample_index)
 #else
 uniform sampler2D u_depth_tex;
+#define SSAO_INPUT_TEXEL(tex, vpx) texelFetch(tex, (vpx) + consts.viewport_origin, 0)
 #endif
 
 // Where viewport pixel (0,0) (or grid texel (0,0)) lands in the pass's render target.
@@ -20,15 +24,11 @@ uniform ivec2 u_target_origin;
 uniform int u_scale;
 
 // The host's depth at viewport pixel vpx.
-#ifdef SSAO_MULTISAMPLE
-float input_depth(ivec2 vpx) { return texelFetch(u_depth_tex, vpx + u_viewport.xy, u_sample_index).r; }
-#else
-float input_depth(ivec2 vpx) { return texelFetch(u_depth_tex, vpx + u_viewport.xy, 0).r; }
-#endif
+float input_depth(ivec2 vpx) { return SSAO_INPUT_TEXEL(u_depth_tex, vpx).r; }
 
 // The grid: ceil(viewport / scale) texels, so an odd size's last block is
 // partial and still has its texel.
-ivec2 grid_size() { return (u_viewport.zw + u_scale - 1) / u_scale; }
+ivec2 grid_size() { return (consts.viewport_size + u_scale - 1) / u_scale; }
 
 // The viewport pixel grid texel t stands for: one real pixel of its block,
 // near the block's centre, alternating between two positions in a
@@ -39,7 +39,7 @@ ivec2 grid_size() { return (u_viewport.zw + u_scale - 1) / u_scale; }
 ivec2 grid_pixel(ivec2 t) {
     if (u_scale == 1) return t;
     int o = u_scale / 2 - 1 + ((t.x + t.y) & 1);
-    return min(t * u_scale + o, u_viewport.zw - 1);
+    return min(t * u_scale + o, consts.viewport_size - 1);
 }
 
 // The host's depth at grid texel t (read only where the sampling passes read
@@ -57,17 +57,17 @@ bool finite3(vec3 v) { return all(lessThan(abs(v), vec3(3.0e38))) && !any(isnan(
 
 // The far plane (cleared depth) in either convention: exact comparison, since
 // a cleared buffer holds exactly the clear value.
-bool is_sky(float d) { return d == u_depth.x; }
+bool is_sky(float d) { return d == consts.sky_depth; }
 
-float ndc_z_of(float d) { return u_ao2.w == 2.0 ? d * 2.0 - 1.0 : d; }
+float ndc_z_of(float d) { return consts.ndc_per_depth == 2.0 ? d * 2.0 - 1.0 : d; }
 
-vec2 ndc_xy_of(vec2 viewport_px) { return viewport_px / vec2(u_viewport.zw) * 2.0 - 1.0; }
+vec2 ndc_xy_of(vec2 viewport_px) { return viewport_px / vec2(consts.viewport_size) * 2.0 - 1.0; }
 
 // View-space position of the point at viewport pixel coordinates vp (a
 // pixel's centre is +0.5) holding depth d, in xyz; w keeps the homogeneous w
 // of the reconstruction for depth_step().
 vec4 view_position_at(vec2 vp, float d) {
-    vec4 v = u_inv_proj * vec4(ndc_xy_of(vp), ndc_z_of(d), 1.0);
+    vec4 v = consts.inv_proj * vec4(ndc_xy_of(vp), ndc_z_of(d), 1.0);
     return vec4(v.xyz / v.w, v.w);
 }
 
@@ -79,35 +79,35 @@ vec4 view_position_w(ivec2 t, float d) { return view_position_at(vec2(grid_pixel
 // every accepted projection: perspective, orthographic, off-centre, reverse-Z,
 // infinite far).
 vec3 view_position_from_z(vec2 px, float z) {
-    vec2 xy = (mat2(u_vz_mul_z.xy, u_vz_mul_z.zw) * px + u_vz_add.xy) * z +
-              (mat2(u_vz_mul_1.xy, u_vz_mul_1.zw) * px + u_vz_add.zw);
+    vec2 xy = (mat2(consts.view_mul_z.xy, consts.view_mul_z.zw) * px + consts.view_add_z) * z +
+              (mat2(consts.view_mul_1.xy, consts.view_mul_1.zw) * px + consts.view_add_1);
     return vec3(xy, z);
 }
 
-// depth_step below for a point at view z z, from z alone: clip w = w_z z + w_1
-// and clip z = z_z z + z_1 (u_z_clip), so d(view z)/d(ndc z) = w^2 / |det|
-// (u_z_det), and the stored depth (for the ulp of a float format) is
+// depth_step below for a point at view z z, from z alone: clip w and clip z
+// are affine in z (consts.clip_*), so d(view z)/d(ndc z) = w^2 / |det|
+// (consts.inv_det), and the stored depth (for the ulp of a float format) is
 // clip z / w in the clip range's convention.
 float depth_step_z(float z) {
-    float w = u_z_clip.x * z + u_z_clip.y;
-    float ulp = u_depth.y;
+    float w = consts.clip_w_z * z + consts.clip_w_1;
+    float ulp = consts.unorm_depth_step;
     if (ulp == 0.0) {
-        float ndc = (u_z_clip.z * z + u_z_clip.w) / w;
-        float d = u_ao2.w == 2.0 ? ndc * 0.5 + 0.5 : ndc;
+        float ndc = (consts.clip_z_z * z + consts.clip_z_1) / w;
+        float d = consts.ndc_per_depth == 2.0 ? ndc * 0.5 + 0.5 : ndc;
         ulp = max(abs(d) * 1.1920929e-7, 1.1754944e-38);
-        if (u_ao2.w == 2.0) ulp = max(ulp, abs(ndc) * 0.5 * 1.1920929e-7);
+        if (consts.ndc_per_depth == 2.0) ulp = max(ulp, abs(ndc) * 0.5 * 1.1920929e-7);
     }
-    return w * w * u_z_det.x * u_ao2.w * ulp;
+    return w * w * consts.inv_det * consts.ndc_per_depth * ulp;
 }
 
 // The view z of viewport pixel p holding depth d. Where clip z depends on view
-// z alone (every projection but an oblique near plane's, u_z_det.y = 0) it
-// inverts ndc z = (z_z z + z_1) / (w_z z + w_1): a division, not the inverse
+// z alone (every projection but an oblique near plane's) it inverts
+// ndc z = (z_z z + z_1) / (w_z z + w_1): a division, not the inverse
 // projection's matrix product.
 float view_z_of_depth(ivec2 p, float d) {
-    if (u_z_det.y != 0.0) return view_position_at(vec2(p) + 0.5, d).z;
+    if (consts.oblique_near_plane != 0) return view_position_at(vec2(p) + 0.5, d).z;
     float ndc = ndc_z_of(d);
-    return (u_z_clip.w - ndc * u_z_clip.y) / (ndc * u_z_clip.x - u_z_clip.z);
+    return (consts.clip_z_1 - ndc * consts.clip_w_1) / (ndc * consts.clip_w_z - consts.clip_z_z);
 }
 
 // A surface texel the sampling passes read: its view position and the view-z
@@ -133,16 +133,17 @@ bool texel_surface(ivec2 t, out vec3 P, out float step) {
 // dz/dndc = (inv_proj[2][2] - z * inv_proj[2][3]) / v.w (no difference of two
 // nearly equal reconstructions, which would cancel to 0 in float).
 float depth_step(vec4 p, float d) {
-    float dz_dndc = (u_inv_proj[2][2] - p.z * u_inv_proj[2][3]) / p.w;
+    float dz_dndc = (consts.inv_proj[2][2] - p.z * consts.inv_proj[2][3]) / p.w;
     // unorm formats: a fixed step; float: one ulp of d (2^-23 relative), floored
     // at the smallest normal so reverse-Z's tiny far values stay meaningful.
-    float ulp = u_depth.y > 0.0 ? u_depth.y : max(abs(d) * 1.1920929e-7, 1.1754944e-38);
+    float ulp = consts.unorm_depth_step > 0.0 ? consts.unorm_depth_step : max(abs(d) * 1.1920929e-7, 1.1754944e-38);
     // [-1,1] clip range: the rasteriser held NDC z = 2d - 1 in float before
     // storing d, and view_position goes back through it, so no float depth is
     // finer than one ulp of NDC z (reverse-Z without a [0,1] clip range keeps
     // standard-Z precision; README "Depth precision").
-    if (u_depth.y == 0.0 && u_ao2.w == 2.0) ulp = max(ulp, abs(d * 2.0 - 1.0) * 0.5 * 1.1920929e-7);
-    return abs(dz_dndc) * u_ao2.w * ulp;
+    if (consts.unorm_depth_step == 0.0 && consts.ndc_per_depth == 2.0)
+        ulp = max(ulp, abs(d * 2.0 - 1.0) * 0.5 * 1.1920929e-7);
+    return abs(dz_dndc) * consts.ndc_per_depth * ulp;
 }
 
 #ifndef SSAO_GRID_INPUT

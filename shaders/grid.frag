@@ -16,7 +16,7 @@ layout(location = 1) out vec4 o_normal;
 bool surface_at(ivec2 q, out float d, out vec3 P) {
     d = 0.0;
     P = vec3(0.0);
-    if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, u_viewport.zw))) return false;
+    if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, consts.viewport_size))) return false;
     d = input_depth(q);
     P = view_position_at(vec2(q) + 0.5, d).xyz;
     return !is_sky(d) && finite3(P);
@@ -93,7 +93,7 @@ void main() {
 #ifdef SSAO_NORMALS_FROM_DEPTH
         // Rebuilt from the full-resolution neighbours of the picked pixel,
         // already unit length and facing the camera.
-        n = normal_from_depth(p, d, P, u_depth.w > 0.5 ? vec3(0.0, 0.0, 1.0) : normalize(-P));
+        n = normal_from_depth(p, d, P, consts.orthographic != 0 ? vec3(0.0, 0.0, 1.0) : normalize(-P));
 #else
         // Unit length but not yet turned towards the camera (raw_normal,
         // sampling.glsl): the visibility pass must see which normals face

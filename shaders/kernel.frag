@@ -17,9 +17,9 @@ void main() {
     float step_p = sf.step;
     float occlusion = 0.0;
     float valid = 0.0;
-    int count = u_counts.x;
+    int count = consts.sample_count;
     for (int i = 0; i < count; ++i) {
-        vec3 s = P + TBN * u_kernel[i].xyz * radius;
+        vec3 s = P + TBN * kernel.vectors[i].xyz * radius;
         ivec2 spx;
         if (!project_to_texel(s, spx)) continue;          // behind the eye or off screen: unknown, not counted
         valid += 1.0;
@@ -27,7 +27,7 @@ void main() {
         float q_step;
         if (!texel_surface(spx, Q, q_step)) continue;     // the sky occludes nothing
         vec3 sn = snap_to_texel_ray(s, n, Q, ortho);
-        float bias = u_ao.y * sf.radius_scale + u_ao.z * (step_p + q_step);
+        float bias = consts.bias * sf.radius_scale + consts.depth_step_bias * (step_p + q_step);
         // The chapter's range check smoothstep(0, 1, radius / |dz|), which is 1
         // for |dz| <= radius: written so that dz = 0 divides nothing.
         float dz = abs(P.z - Q.z);
@@ -35,7 +35,7 @@ void main() {
         occlusion += (Q.z >= sn.z + bias ? 1.0 : 0.0) * range;
     }
     float o = valid > 0.0 ? occlusion / valid : 0.0;
-    float ao = pow(clamp(1.0 - u_ao.w * o, 0.0, 1.0), u_ao2.x);
+    float ao = pow(clamp(1.0 - consts.strength * o, 0.0, 1.0), consts.power);
 #ifdef SSAO_FADE
     ao = apply_fade(ao, P);
 #endif

@@ -9,6 +9,7 @@ void main() {
     vec3 P;
     float step;
     vec3 n = vec3(0.0);
-    if (texel_surface(t, P, step) && finite3(P)) n = load_normal(t, u_depth.w > 0.5 ? vec3(0.0, 0.0, 1.0) : normalize(-P));
+    if (texel_surface(t, P, step) && finite3(P))
+        n = load_normal(t, consts.orthographic != 0 ? vec3(0.0, 0.0, 1.0) : normalize(-P));
     o_ao = vec4(n * 0.5 + 0.5, 1.0);
 }

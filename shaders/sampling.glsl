@@ -1,32 +1,25 @@
-// Shared by the two sampling passes (ao.frag: the point kernel; visibility.frag:
-// ray-marched visibility): the output packing, the normal as the pass sees it,
-// the tangent basis, and the per-pixel rotation and step jitter.
+// Shared by the passes that read the host's normals or the grid's (the two
+// sampling passes, kernel.frag: the point kernel, and visibility.frag:
+// ray-marched visibility; the grid pass; the normals view): the normal as a
+// pass sees it, the tangent basis, the per-pixel rotation and step jitter, and
+// the surface a sampling pass shades.
 
 #ifdef SSAO_MULTISAMPLE
-uniform sampler2DMS u_normal_tex;  // (1.2) multisampled: sample u_sample_index (common.glsl)
+uniform sampler2DMS u_normal_tex;  // multisampled: sample u_sample_index (common.glsl)
 #else
 uniform sampler2D u_normal_tex;
 #endif
 uniform sampler2D u_noise_tex;
-uniform bool u_pack_depth;  // writing the blur's RG32F input: (ao, view z)
-
-layout(location = 0) out vec4 o_ao;
-
-vec4 result(float ao, float z) { return u_pack_depth ? vec4(ao, z, 0.0, 1.0) : vec4(ao, ao, ao, 1.0); }
 
 // The host's stored normal at viewport pixel vpx.
-#ifdef SSAO_MULTISAMPLE
-vec3 input_normal(ivec2 vpx) { return texelFetch(u_normal_tex, vpx + u_viewport.xy, u_sample_index).xyz; }
-#else
-vec3 input_normal(ivec2 vpx) { return texelFetch(u_normal_tex, vpx + u_viewport.xy, 0).xyz; }
-#endif
+vec3 input_normal(ivec2 vpx) { return SSAO_INPUT_TEXEL(u_normal_tex, vpx).xyz; }
 
 // The stored normal `stored` in view space, scaled so that its largest
 // component is 1 (not yet unit length); false when it is zero, NaN or infinite.
 bool decode_raw_normal(vec3 stored, out vec3 n) {
     n = stored;
-    if (u_modes.w == SSAO_SHADER_PACKING_UNORM) n = n * 2.0 - 1.0;
-    if (u_modes.z == SSAO_SHADER_NORMAL_WORLD) n = mat3(u_normal_to_view) * n;
+    if (consts.normal_packing == SSAO_SHADER_PACKING_UNORM) n = n * 2.0 - 1.0;
+    if (consts.normal_space == SSAO_SHADER_NORMAL_WORLD) n = mat3(consts.normal_to_view) * n;
     // Scale by the largest component first: a huge but finite normal (1e20)
     // would overflow dot(n, n) and a tiny one underflow it.
     float m = max(abs(n.x), max(abs(n.y), abs(n.z)));
@@ -108,31 +101,32 @@ float interleaved_gradient_noise(vec2 p) { return fract(52.9829189 * fract(dot(p
 // instead (two positions of it apart, so the two are not correlated): as
 // stratified between neighbours as the tile, with no fixed pattern. At full
 // resolution the 4x4 tile is used as it is.
-bool grid_noise() { return u_modes.y == SSAO_SHADER_ROTATION_NOISE && u_scale > 1; }
+bool grid_noise() { return consts.rotation == SSAO_SHADER_ROTATION_NOISE && u_scale > 1; }
 
 vec2 fixed_rotation(ivec2 vpx) {
     if (grid_noise()) {
         float a = interleaved_gradient_noise(vec2(vpx)) * 6.28318530718;
         return vec2(cos(a), sin(a));
     }
-    if (u_modes.y == SSAO_SHADER_ROTATION_NOISE)
+    if (consts.rotation == SSAO_SHADER_ROTATION_NOISE)
         return texelFetch(u_noise_tex, vpx & (SSAO_NOISE_SIZE - 1), 0).xy;  // tiles from the viewport's corner
-    if (u_modes.y == SSAO_SHADER_ROTATION_HASH) {
-        float a = pixel_hash(uvec2(vpx), uint(u_counts.y)) * 6.28318530718;
+    if (consts.rotation == SSAO_SHADER_ROTATION_HASH) {
+        float a = pixel_hash(uvec2(vpx), uint(consts.seed)) * 6.28318530718;
         return vec2(cos(a), sin(a));
     }
     return vec2(1.0, 0.0);
 }
 
 // The per-pixel rotation (cos, sin). Variant FRAME_NOISE (inputs.frame_index
-// != 0): the fixed pattern turned by the frame's R2 offset (u_frame.xy =
+// != 0): the fixed pattern turned by the frame's R2 offset (consts.frame_rotation =
 // cos, sin of 2 pi fract(n / g), plugin/kernel.cpp frame_noise_offsets), so
 // each pixel's rotation walks a low-discrepancy sequence over the frames;
 // without rotation (NONE) the whole kernel turns per frame.
 vec2 rotation(ivec2 vpx) {
     vec2 r = fixed_rotation(vpx);
 #ifdef SSAO_FRAME_NOISE
-    r = vec2(r.x * u_frame.x - r.y * u_frame.y, r.x * u_frame.y + r.y * u_frame.x);
+    vec2 f = consts.frame_rotation;
+    r = vec2(r.x * f.x - r.y * f.y, r.x * f.y + r.y * f.x);
 #endif
     return r;
 }
@@ -143,21 +137,21 @@ vec2 rotation(ivec2 vpx) {
 // blur averages 16 offsets; below full resolution see grid_noise().
 float fixed_step_jitter(ivec2 vpx) {
     if (grid_noise()) return interleaved_gradient_noise(vec2(vpx) + vec2(47.0, 17.0)) * 0.9999 + 0.00005;
-    if (u_modes.y == SSAO_SHADER_ROTATION_NOISE) {
+    if (consts.rotation == SSAO_SHADER_ROTATION_NOISE) {
         const int bayer[16] = int[16](0, 8, 2, 10, 12, 4, 14, 6, 3, 11, 1, 9, 15, 7, 13, 5);
         ivec2 t = vpx & 3;
         return (float(bayer[t.y * 4 + t.x]) + 0.5) / 16.0;
     }
-    if (u_modes.y == SSAO_SHADER_ROTATION_HASH)
-        return pixel_hash(uvec2(vpx.yx), uint(u_counts.y) ^ 0x5bd1e995u) * 0.9999 + 0.00005;
+    if (consts.rotation == SSAO_SHADER_ROTATION_HASH)
+        return pixel_hash(uvec2(vpx.yx), uint(consts.seed) ^ 0x5bd1e995u) * 0.9999 + 0.00005;
     return 0.5;
 }
 
 // The step jitter; variant FRAME_NOISE adds the frame's second R2 offset
-// (u_frame.z = fract(n / g^2)) mod 1.
+// (consts.frame_step_offset = fract(n / g^2)) mod 1.
 float step_jitter(ivec2 vpx) {
 #ifdef SSAO_FRAME_NOISE
-    return fract(fixed_step_jitter(vpx) + u_frame.z);
+    return fract(fixed_step_jitter(vpx) + consts.frame_step_offset);
 #else
     return fixed_step_jitter(vpx);
 #endif
@@ -187,8 +181,8 @@ struct Surface {
     mat3 TBN;     // tangent frame around n, rotated per pixel
     float step;   // view-z change of one depth-format step at P
     bool ortho;
-    float radius;        // sampling radius at P (view units): u_ao.x, or from radius_pixels
-    float radius_scale;  // radius / u_ao.x: bias and thickness scale with it (1 without RADIUS_PIXELS)
+    float radius;        // sampling radius at P (view units): consts.radius, or from radius_pixels
+    float radius_scale;  // radius / consts.radius: bias and thickness scale with it (1 without RADIUS_PIXELS)
 };
 
 #ifdef SSAO_RADIUS_PIXELS
@@ -199,16 +193,18 @@ struct Surface {
 // quarter resolution grid. From the projection's own coefficients, so
 // orthographic (constant size) and off-centre frusta come out right.
 float pixel_size_at(float z) {
-    mat2 d = mat2(u_vz_mul_z.xy, u_vz_mul_z.zw) * z + mat2(u_vz_mul_1.xy, u_vz_mul_1.zw);
+    mat2 d = mat2(consts.view_mul_z.xy, consts.view_mul_z.zw) * z + mat2(consts.view_mul_1.xy, consts.view_mul_1.zw);
     return sqrt(length(d[0]) * length(d[1]));
 }
 #endif
 
 #ifdef SSAO_FADE
-// Distance fade (settings fade_start = u_fade.x, fade_end = u_fade.y): the
+// Distance fade (settings fade_start and fade_end, in consts): the
 // weight of "no occlusion" at view-space P, linear in view depth -P.z (the
 // distance along the view axis): 0 up to fade_start, 1 from fade_end on.
-float fade_weight(vec3 P) { return clamp((-P.z - u_fade.x) / (u_fade.y - u_fade.x), 0.0, 1.0); }
+float fade_weight(vec3 P) {
+    return clamp((-P.z - consts.fade_start) / (consts.fade_end - consts.fade_start), 0.0, 1.0);
+}
 
 // AO blended towards 1 by the fade weight; exactly `ao` before fade_start.
 float apply_fade(float ao, vec3 P) {
@@ -222,7 +218,7 @@ float apply_fade(float ao, vec3 P) {
 bool load_surface(out Surface sf) {
     sf.vpx = ivec2(gl_FragCoord.xy) - u_target_origin;
     ivec2 px = sf.vpx;
-    sf.ortho = u_depth.w > 0.5;
+    sf.ortho = consts.orthographic != 0;
     if (!texel_surface(px, sf.P, sf.step) || !finite3(sf.P)) return false;
     vec3 to_eye = sf.ortho ? vec3(0.0, 0.0, 1.0) : normalize(-sf.P);
     sf.n = load_normal(px, to_eye);
@@ -231,14 +227,14 @@ bool load_surface(out Surface sf) {
     vec2 r = rotation(sf.vpx);
     vec3 T = r.x * b1 + r.y * b2;
     sf.TBN = mat3(T, cross(sf.n, T), sf.n);
-    sf.radius = u_ao.x;
+    sf.radius = consts.radius;
     sf.radius_scale = 1.0;
 #ifdef SSAO_RADIUS_PIXELS
-    // radius_pixels (u_fade.z) pixels at this depth, at most `radius`; a
+    // consts.radius_pixels pixels at this depth, at most `radius`; a
     // degenerate size (NaN) keeps `radius`.
-    float pixels = u_fade.z * pixel_size_at(sf.P.z);
-    sf.radius = pixels < u_ao.x ? pixels : u_ao.x;
-    sf.radius_scale = sf.radius / u_ao.x;
+    float pixels = consts.radius_pixels * pixel_size_at(sf.P.z);
+    sf.radius = pixels < consts.radius ? pixels : consts.radius;
+    sf.radius_scale = sf.radius / consts.radius;
 #endif
     return true;
 }
@@ -248,8 +244,8 @@ bool load_surface(out Surface sf) {
 bool clip_to_texel(vec4 c, out ivec2 texel) {
     texel = ivec2(0);
     if (!(c.w > 0.0)) return false;
-    vec2 spf = (c.xy / c.w * 0.5 + 0.5) * vec2(u_viewport.zw);
-    if (any(lessThan(spf, vec2(0.0))) || any(greaterThanEqual(spf, vec2(u_viewport.zw)))) return false;
+    vec2 spf = (c.xy / c.w * 0.5 + 0.5) * vec2(consts.viewport_size);
+    if (any(lessThan(spf, vec2(0.0))) || any(greaterThanEqual(spf, vec2(consts.viewport_size)))) return false;
     // spf / scale for a power-of-two scale is exact in float, so this is
     // ivec2(spf) / u_scale without an integer division per step.
     texel = ivec2(spf * (1.0 / float(u_scale)));
@@ -257,4 +253,4 @@ bool clip_to_texel(vec4 c, out ivec2 texel) {
 }
 
 // The same for view-space point s.
-bool project_to_texel(vec3 s, out ivec2 texel) { return clip_to_texel(u_proj * vec4(s, 1.0), texel); }
+bool project_to_texel(vec3 s, out ivec2 texel) { return clip_to_texel(consts.proj * vec4(s, 1.0), texel); }

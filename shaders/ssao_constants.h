@@ -1,7 +1,7 @@
 /* ssao_constants.h - constants and the uniform-block layout shared by the C++
  * plugin and every GLSL shader. The build prepends this file to each shader
  * after its #version line, so it must stay valid GLSL and valid C++: only
- * #define lines, comments, and the block below written with the SSAO_* type
+ * #define lines, comments, and the blocks below written with the SSAO_* type
  * macros. */
 #ifndef SSAO_CONSTANTS_H
 #define SSAO_CONSTANTS_H
@@ -40,51 +40,89 @@
 
 #ifdef __cplusplus
 #  define SSAO_BLOCK(name) struct alignas(16) name
+#  define SSAO_BLOCK_END(instance) ;
 #  define SSAO_MAT4 ssao_std140::mat4
 #  define SSAO_VEC4 ssao_std140::vec4
-#  define SSAO_IVEC4 ssao_std140::ivec4
-#  define SSAO_BLOCK_END ;
+#  define SSAO_VEC2 ssao_std140::vec2
+#  define SSAO_IVEC2 ssao_std140::ivec2
+#  define SSAO_FLOAT float
+#  define SSAO_INT int32_t
 #else
 #  define SSAO_BLOCK(name) layout(std140) uniform name
+#  define SSAO_BLOCK_END(instance) instance;
 #  define SSAO_MAT4 mat4
 #  define SSAO_VEC4 vec4
-#  define SSAO_IVEC4 ivec4
-#  define SSAO_BLOCK_END ;
+#  define SSAO_VEC2 vec2
+#  define SSAO_IVEC2 ivec2
+#  define SSAO_FLOAT float
+#  define SSAO_INT int
 #endif
 
 /* Per-frame constants, derived on the CPU from the viewport, the projection
- * and the settings (std140: every member is 16-byte aligned). */
+ * and the settings (plugin/constants.cpp make_frame_block). GLSL reads them
+ * as consts.NAME, C++ as SsaoFrame::NAME. std140: the byte offset of every
+ * member is in its comment and static_asserted in plugin/uniforms.h; the
+ * padding is written out so that no member moves silently. Flags are ints
+ * (0 or 1); the enum members hold the SSAO_SHADER_* values above. */
 SSAO_BLOCK(SsaoFrame) {
-    SSAO_MAT4 u_proj;          /* view -> clip */
-    SSAO_MAT4 u_inv_proj;      /* clip -> view (computed in double, stored as float) */
-    SSAO_MAT4 u_normal_to_view;/* world -> view rotation for world-space normals (identity else) */
-    SSAO_IVEC4 u_viewport;     /* x, y, w, h of the inputs */
-    SSAO_IVEC4 u_method;       /* method (1 kernel, 2 visibility), steps per direction, 0, 0 */
-    SSAO_IVEC4 u_modes;        /* kernel shape (informative: the kernel itself carries it), rotation,
-                                  normal space, normal packing */
-    SSAO_IVEC4 u_counts;       /* sample count, seed, blur radius, blur kind */
-    SSAO_VEC4 u_ao;            /* radius, bias, depth-step bias, strength */
-    SSAO_VEC4 u_ao2;           /* power, blur sigma, blur depth tolerance, ndc-per-depth (1 or 2) */
-    SSAO_VEC4 u_depth;         /* far-plane depth value (sky), depth step of a unorm format (0 = float), reverse-Z, orthographic */
-    SSAO_VEC4 u_march;         /* visibility: thickness (view units), 0, 0, 0 */
-    SSAO_VEC4 u_fade;          /* (1.2) fade_start, fade_end (view depth), radius_pixels, 0: read only by
-                                  the variants FADE and RADIUS_PIXELS */
-    SSAO_VEC4 u_frame;         /* (1.2) variant FRAME_NOISE: cos and sin of frame_index's rotation offset,
-                                  its step-jitter offset in [0,1), 0 */
-    SSAO_VEC4 u_vz_mul_z;      /* view xy from view z (plugin/projection.h ViewFromZ): mat2 mul_z, column-major */
-    SSAO_VEC4 u_vz_mul_1;      /* mat2 mul_1, column-major */
-    SSAO_VEC4 u_vz_add;        /* add_z.xy, add_1.xy: xy = (mul_z px + add_z) z + (mul_1 px + add_1) */
-    SSAO_VEC4 u_z_clip;        /* clip w = x * z + y, clip z = z * z + w (the depth step from view z) */
-    SSAO_VEC4 u_z_det;         /* 1 / |z_z w_1 - z_1 w_z| (d(view z)/d(ndc z) = w^2 times it),
-                                  1 when clip z has view x or y terms (oblique near plane) else 0, 0, 0 */
+    SSAO_MAT4 proj;              /*   0: view -> clip */
+    SSAO_MAT4 inv_proj;          /*  64: clip -> view (computed in double, stored as float) */
+    SSAO_MAT4 normal_to_view;    /* 128: world -> view rotation for world-space normals (identity else) */
+    SSAO_IVEC2 viewport_origin;  /* 192: x, y of the viewport in the input textures */
+    SSAO_IVEC2 viewport_size;    /* 200: its width, height */
+    SSAO_INT sample_count;       /* 208: kernel samples, or visibility directions */
+    SSAO_INT step_count;         /* 212: visibility: steps per direction */
+    SSAO_INT seed;               /* 216: the rotation hash's seed */
+    SSAO_INT rotation;           /* 220: SSAO_SHADER_ROTATION_* */
+    SSAO_INT normal_space;       /* 224: SSAO_SHADER_NORMAL_* */
+    SSAO_INT normal_packing;     /* 228: SSAO_SHADER_PACKING_* */
+    SSAO_INT blur_radius;        /* 232: gaussian taps either side of the centre */
+    SSAO_INT blur_kind;          /* 236: SSAO_SHADER_BLUR_* */
+    SSAO_INT orthographic;       /* 240: flag: an orthographic projection */
+    SSAO_INT oblique_near_plane; /* 244: flag: clip z has view x or y terms, so view z is not a function
+                                    of the depth alone (view_z_of_depth goes through inv_proj) */
+    SSAO_FLOAT ndc_per_depth;    /* 248: d(ndc z)/d(depth): 2 for the [-1,1] clip range, 1 for [0,1] */
+    SSAO_FLOAT sky_depth;        /* 252: the depth value of the far plane (cleared depth) */
+    SSAO_FLOAT unorm_depth_step; /* 256: one step of a unorm depth format; 0 for a float format */
+    SSAO_FLOAT radius;           /* 260: sampling radius (view units) */
+    SSAO_FLOAT bias;             /* 264: constant depth bias (view units, scales with the radius) */
+    SSAO_FLOAT depth_step_bias;  /* 268: bias in steps of the depth format */
+    SSAO_FLOAT strength;         /* 272: occlusion scale before the power */
+    SSAO_FLOAT power;            /* 276: exponent of the AO */
+    SSAO_FLOAT thickness;        /* 280: visibility: the depth a surface is taken to have (view units) */
+    SSAO_FLOAT blur_sigma;       /* 284: gaussian sigma (texels) */
+    SSAO_FLOAT blur_depth_tolerance; /* 288: relative view-z difference at which a tap gets no weight */
+    SSAO_FLOAT fade_start;       /* 292: variant FADE: view depth where the fade begins */
+    SSAO_FLOAT fade_end;         /* 296: ... and where AO is 1 */
+    SSAO_FLOAT radius_pixels;    /* 300: variant RADIUS_PIXELS: the radius in viewport pixels */
+    SSAO_VEC2 frame_rotation;    /* 304: variant FRAME_NOISE: cos, sin of the frame's rotation offset */
+    SSAO_FLOAT frame_step_offset;/* 312: variant FRAME_NOISE: the frame's step-jitter offset in [0,1) */
+    SSAO_FLOAT pad0;             /* 316 */
+    /* View xy from view z (plugin/projection.h ViewFromZ):
+     * xy = (mul_z px + add_z) z + (mul_1 px + add_1) for viewport pixel coordinates px. */
+    SSAO_VEC4 view_mul_z;        /* 320: mat2 mul_z, column-major */
+    SSAO_VEC4 view_mul_1;        /* 336: mat2 mul_1, column-major */
+    SSAO_VEC2 view_add_z;        /* 352 */
+    SSAO_VEC2 view_add_1;        /* 360 */
+    /* Clip w and z from view z: w = clip_w_z z + clip_w_1, z = clip_z_z z + clip_z_1. */
+    SSAO_FLOAT clip_w_z;         /* 368 */
+    SSAO_FLOAT clip_w_1;         /* 372 */
+    SSAO_FLOAT clip_z_z;         /* 376 */
+    SSAO_FLOAT clip_z_1;         /* 380 */
+    SSAO_FLOAT inv_det;          /* 384: 1 / |clip_z_z clip_w_1 - clip_z_1 clip_w_z|:
+                                    d(view z)/d(ndc z) = w^2 inv_det */
+    SSAO_FLOAT pad1;             /* 388 */
+    SSAO_FLOAT pad2;             /* 392 */
+    SSAO_FLOAT pad3;             /* 396; size 400 */
 }
-SSAO_BLOCK_END
+SSAO_BLOCK_END(consts)
 
-/* The kernel (or, for the visibility method, the unit directions), in tangent
- * space (z along the normal), xyz per vec4. */
+/* The kernel's sample points (or, for the visibility method, the unit
+ * directions), in tangent space (z along the normal), xyz per vec4. GLSL
+ * reads kernel.vectors[i]. */
 SSAO_BLOCK(SsaoKernel) {
-    SSAO_VEC4 u_kernel[SSAO_MAX_KERNEL];
+    SSAO_VEC4 vectors[SSAO_MAX_KERNEL]; /* 0, stride 16 */
 }
-SSAO_BLOCK_END
+SSAO_BLOCK_END(kernel)
 
 #endif

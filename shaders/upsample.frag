@@ -13,14 +13,10 @@
 // takes the value of its own block's grid texel, no depth weights, so the
 // view shows what the grid holds.
 
-uniform sampler2D u_ao_tex;  // the grid's RG32F (ao, view z), sky = SKY_Z
-
-out vec4 o_ao;
-
 // The depth-weighted bilinear AO of the 2x2 grid texels around pixel p at view z z0.
 float depth_weighted(ivec2 p, float z0) {
     // Floored as in the blur: an orthographic surface may sit at view z = 0.
-    float inv_tolerance = 1.0 / max(u_ao2.z * abs(z0), 1e-30);
+    float inv_tolerance = 1.0 / max(consts.blur_depth_tolerance * abs(z0), 1e-30);
     float inv_scale = 1.0 / float(u_scale);
     ivec2 last = grid_size() - 1;
     // The blocks whose centres bracket p: p's own and its neighbour on the

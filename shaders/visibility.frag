@@ -1,7 +1,7 @@
 // The visibility pass: the cosine-weighted open fraction of the hemisphere
 // within the radius, as far as one depth layer can show it. Each of
-// u_counts.x directions (cosine-distributed, in the kernel block) is marched
-// from P to the radius in u_method.y steps, offset per pixel; a step is
+// consts.sample_count directions (cosine-distributed, in the kernel block) is marched
+// from P to the radius in consts.step_count steps, offset per pixel; a step is
 // blocked when the depth layer (read through the texel's tangent plane) lies
 // in front of it by at least the bias and at most the thickness (a thin object does not shadow what lies far behind
 // it), and a direction is blocked by its first blocked step. Sky, off-screen
@@ -54,17 +54,17 @@ void main() {
 #endif
 
     float radius = sf.radius;  // the step length scales with the per-pixel radius (RADIUS_PIXELS)
-    float thickness = u_march.x * sf.radius_scale;
-    int steps = u_method.y;
+    float thickness = consts.thickness * sf.radius_scale;
+    int steps = consts.step_count;
     float jitter = step_jitter(sf.vpx);
-    int count = u_counts.x;
+    int count = consts.sample_count;
     float open = 0.0;
     // Projection is linear: a step's clip coordinates are those of P plus
     // those of the direction times the distance (no matrix product per step).
-    vec4 clip_p = u_proj * vec4(sf.P, 1.0);
+    vec4 clip_p = consts.proj * vec4(sf.P, 1.0);
     for (int i = 0; i < count; ++i) {
-        vec3 dir = sf.TBN * u_kernel[i].xyz;
-        vec4 clip_dir = u_proj * vec4(dir, 0.0);
+        vec3 dir = sf.TBN * kernel.vectors[i].xyz;
+        vec4 clip_dir = consts.proj * vec4(dir, 0.0);
         bool blocked = false;
         for (int j = 0; j < steps && !blocked; ++j) {
             float t = radius * (float(j) + jitter) / float(steps);
@@ -77,14 +77,14 @@ void main() {
             vec3 Q;
             float q_step;
             bool surface = texel_surface(spx, Q, q_step);
-            float bias = u_ao.y * sf.radius_scale + u_ao.z * (sf.step + q_step);
+            float bias = consts.bias * sf.radius_scale + consts.depth_step_bias * (sf.step + q_step);
             float in_front = surface_in_front(s, Q, spx, sf);  // > 0: the surface hides the step
             blocked = on_screen && surface && in_front >= bias && in_front <= thickness;
         }
         open += blocked ? 0.0 : 1.0;
     }
     float occlusion = 1.0 - open / float(count);
-    float ao = pow(clamp(1.0 - u_ao.w * occlusion, 0.0, 1.0), u_ao2.x);
+    float ao = pow(clamp(1.0 - consts.strength * occlusion, 0.0, 1.0), consts.power);
 #ifdef SSAO_FADE
     ao = apply_fade(ao, sf.P);
 #endif

@@ -87,26 +87,16 @@ void Controls::key(int k, int action) {
         case GLFW_KEY_F12: screenshot_ = true; break;
         case GLFW_KEY_ESCAPE: quit_ = true; break;
         case GLFW_KEY_M:
-#ifdef SSAO_SETTINGS_SIZE_1_0   // interface 1.1 has ssao_settings.method
             // The estimator: the chapter's point kernel or ray-marched visibility
             // (resolved settings already hold the visibility's thickness and steps).
             state_.settings.method =
                 state_.settings.method == SSAO_METHOD_VISIBILITY ? SSAO_METHOD_KERNEL : SSAO_METHOD_VISIBILITY;
-#else
-            // HOOK(method): a 1.0 header has no estimator choice; the key says so
-            // instead of guessing an ABI.
-            state_.notice = "M: this plugin has no estimator choice";
-#endif
             break;
         case GLFW_KEY_H:
-#ifdef SSAO_SETTINGS_SIZE_1_0   // interface 1.1 has ssao_settings.resolution
             // The grid the sampling pass runs on: full -> half -> quarter -> full.
             state_.settings.resolution = state_.settings.resolution == SSAO_RESOLUTION_HALF      ? SSAO_RESOLUTION_QUARTER
                                          : state_.settings.resolution == SSAO_RESOLUTION_QUARTER ? SSAO_RESOLUTION_FULL
                                                                                                  : SSAO_RESOLUTION_HALF;
-#else
-            state_.notice = "H: this plugin has no half-resolution switch";
-#endif
             break;
         default: break;
     }

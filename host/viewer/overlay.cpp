@@ -66,7 +66,6 @@ std::string printf_string(const char* format, ...) {
     return buffer;
 }
 
-#ifdef SSAO_SETTINGS_SIZE_1_0
 const char* resolution_name(ssao_resolution r) {
     switch (r) {
         case SSAO_RESOLUTION_HALF: return "half";
@@ -74,20 +73,17 @@ const char* resolution_name(ssao_resolution r) {
         default: return "full";
     }
 }
-#endif
 
 // The GPU milliseconds of the newest timed frame, pass by pass.
-std::string gpu_line(const ssao_timings& t) {
+std::string gpu_line(const ssao_timings& t, uint32_t method) {
     std::string line = printf_string("GPU ms (frame %llu):", static_cast<unsigned long long>(t.frame));
-#ifdef SSAO_MAX_PASSES   // interface 1.1 timings: every pass on its own
     if (t.pass_count > 0 && t.pass_count <= SSAO_MAX_PASSES) {
         for (uint32_t i = 0; i < t.pass_count; ++i)
-            line += printf_string(" %s %.3f ", report_text::pass_name(t.pass_kind[i], true), t.pass_ms[i]);
+            line += printf_string(" %s %.3f ", report_text::pass_name(t.pass_kind[i], method, true), t.pass_ms[i]);
         return line + printf_string(" total %.3f", t.total_ms);
     }
-#endif
-    // 1.0 timings: the sampling pass and the blur passes together.
-    return line + printf_string(" %s %.3f  blur %.3f  total %.3f", report_text::pass_name(SSAO_PASS_AO, true), t.ao_ms, t.blur_ms, t.total_ms);
+    // No per-pass times: the two summary figures.
+    return line + printf_string(" %s %.3f  blur %.3f  total %.3f", report_text::pass_name(SSAO_PASS_OCCLUSION, method, true), t.ao_ms, t.blur_ms, t.total_ms);
 }
 
 constexpr int kMargin = 2;   // font pixels around the text on its dark band
@@ -139,21 +135,15 @@ std::vector<std::string> unwrapped_lines(const State& s, const ssao_timings& t, 
                                       c.strength == SSAO_STRENGTH_OFF ? 0.0 : double(c.strength), double(c.power)));
         std::string sampling = printf_string("kernel %s  distribution %s  rotation %s", cli::name(c.kernel_shape),
                                              cli::name(c.distribution), cli::name(c.rotation));
-#ifdef SSAO_SETTINGS_SIZE_1_0   // interface 1.1 has ssao_settings.resolution (on this line: the overlay keeps its height)
         sampling += printf_string("  resolution %s", resolution_name(c.resolution));
-#endif
         lines.push_back(sampling);
-#ifdef SSAO_SETTINGS_SIZE_1_0   // interface 1.1 has ssao_settings.method
         if (c.method == SSAO_METHOD_VISIBILITY)
             lines.push_back(printf_string("blur %s (radius %u)  estimator visibility (%u steps, thickness %.3g)",
                                           cli::name(c.blur), c.blur_radius, c.step_count, double(c.thickness)));
         else
             lines.push_back(printf_string("blur %s (radius %u)  estimator kernel", cli::name(c.blur), c.blur_radius));
-#else
-        lines.push_back(printf_string("blur %s (radius %u)", cli::name(c.blur), c.blur_radius));
-#endif
         if (t.available)
-            lines.push_back(gpu_line(t));
+            lines.push_back(gpu_line(t, c.method));
         else
             lines.push_back("GPU ms: waiting for the first timed frame");
     }

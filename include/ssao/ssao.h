@@ -475,21 +475,26 @@ typedef struct ssao_output {
 
 /** The passes of one execute, as bits of ssao_output.passes_run and values of ssao_timings.pass_kind. */
 typedef enum ssao_pass {
-    SSAO_PASS_AO = 1,            /**< the sampling pass (or, with a normals debug view, the pass writing it) */
+    SSAO_PASS_OCCLUSION = 1,     /**< the occlusion estimator: the kernel or the visibility method */
     SSAO_PASS_BLUR_X = 2,        /**< horizontal blur (or the box blur's single pass) */
     SSAO_PASS_BLUR_Y = 4,        /**< vertical blur */
     SSAO_PASS_CLEAR = 8,         /**< strength 0 (or BLUR_WEIGHTS without a blur): output cleared to 1,
                                     nothing sampled */
-    SSAO_PASS_DOWNSAMPLE = 16,   /**< the grid pass: depth and normal of one picked texel per block into
-                                    the grid the sampling pass reads (counted in ssao_timings.ao_ms). Runs
-                                    at half/quarter resolution, and (1.2) at full resolution for
-                                    multisampled inputs, depth-only input and the normals debug views */
+    SSAO_PASS_GRID = 16,         /**< the grid pass: view z and normal of one picked texel per block into
+                                    the grid the estimator reads (counted in ssao_timings.ao_ms). Runs
+                                    at half/quarter resolution, and at full resolution for multisampled
+                                    inputs, depth-only input and the normals debug views */
     SSAO_PASS_UPSAMPLE = 32,     /**< half/quarter resolution: depth-aware upsample of the reduced
                                     grid's AO to every viewport pixel (counted in blur_ms) */
+    SSAO_PASS_NORMALS_VIEW = 64, /**< the debug views NORMALS and RECONSTRUCTED_NORMALS: the grid's normals
+                                    written to the output (counted in ao_ms) */
+    SSAO_PASS_AO = SSAO_PASS_OCCLUSION,        /**< the 1.0 name of SSAO_PASS_OCCLUSION */
+    SSAO_PASS_DOWNSAMPLE = SSAO_PASS_GRID,     /**< the 1.1 name of SSAO_PASS_GRID */
     /** Where KHR_debug is present each pass runs inside a debug group named
-     * "ssao: ao", "ssao: blur x", "ssao: blur y", "ssao: clear",
-     * "ssao: downsample" or "ssao: upsample", all inside one group "ssao"
-     * (see docs/api.md, "Debugger names"). */
+     * "ssao: grid", "ssao: kernel" or "ssao: visibility" (the estimator),
+     * "ssao: normals view", "ssao: blur x", "ssao: blur y", "ssao: upsample"
+     * or "ssao: clear", all inside one group "ssao" (see docs/api.md,
+     * "Debugger names"). */
     SSAO_PASS_MAX_ENUM = 0x7fffffff  /**< not a value: keeps the enum 32 bits wide */
 } ssao_pass;
 

@@ -226,12 +226,15 @@ class ssao_normal_packing(enum.IntEnum):
 
 
 class ssao_pass(enum.IntEnum):
-    SSAO_PASS_AO = 1
+    SSAO_PASS_OCCLUSION = 1
     SSAO_PASS_BLUR_X = 2
     SSAO_PASS_BLUR_Y = 4
     SSAO_PASS_CLEAR = 8
-    SSAO_PASS_DOWNSAMPLE = 16
+    SSAO_PASS_GRID = 16
     SSAO_PASS_UPSAMPLE = 32
+    SSAO_PASS_NORMALS_VIEW = 64
+    SSAO_PASS_AO = 1
+    SSAO_PASS_DOWNSAMPLE = 16
     SSAO_PASS_MAX_ENUM = 0x7FFFFFFF
 
 

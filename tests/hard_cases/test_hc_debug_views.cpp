@@ -91,7 +91,7 @@ TEST_CASE("debug views: RAW_AO at full resolution is exactly the output with blu
                 fx.settings(raw);
                 const auto got = run(fx, g, c);
                 REQUIRE(got.status == SSAO_OK);
-                CHECK(got.output.passes_run == uint32_t(SSAO_PASS_AO));
+                CHECK(got.output.passes_run == uint32_t(SSAO_PASS_OCCLUSION));
                 CHECK(got.ao == want.ao);
             }
             CHECK(*std::min_element(want.ao.begin(), want.ao.end()) < 0.8f);  // the crease darkens: AO is there
@@ -112,7 +112,7 @@ TEST_CASE("debug views: RAW_AO below full resolution shows each block's own grid
         fx.settings(make(m, SSAO_BLUR_DEPTH_AWARE, res, SSAO_DEBUG_VIEW_RAW_AO));
         const auto raw = hc::run(fx, g, proj, SSAO_CLIP_ZERO_TO_ONE);
         REQUIRE(raw.status == SSAO_OK);
-        CHECK(raw.output.passes_run == uint32_t(SSAO_PASS_DOWNSAMPLE | SSAO_PASS_AO | SSAO_PASS_UPSAMPLE));
+        CHECK(raw.output.passes_run == uint32_t(SSAO_PASS_GRID | SSAO_PASS_OCCLUSION | SSAO_PASS_UPSAMPLE));
         hc::check_unit_finite(raw.ao, "raw ao");
         // Every surface pixel of a block has the same value (no depth
         // weights, no distance weights), and the view is not flat.

@@ -48,7 +48,7 @@ TEST_CASE("normals view: with a G-buffer it shows the decoded normal texture (vi
         o.pad = 1;
         const auto r = nfd::run_view(fx, g, proj, SSAO_CLIP_ZERO_TO_ONE, GL_DEPTH_COMPONENT32F, o);
         REQUIRE(r.status == SSAO_OK);
-        CHECK(r.passes_run == (SSAO_PASS_DOWNSAMPLE | SSAO_PASS_AO));
+        CHECK(r.passes_run == (SSAO_PASS_GRID | SSAO_PASS_NORMALS_VIEW));
         int off = 0, sky_not_grey = 0, alpha_not_one = 0;
         for (size_t i = 0; i < r.n.size(); ++i) {
             alpha_not_one += r.alpha[i] != 1.0f;
@@ -173,7 +173,7 @@ TEST_CASE("depth-only input: normal_texture 0 ignores normal space, packing and 
     ssao_inputs in = fx.inputs(dt, 0, proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE);
     REQUIRE(fx.api().execute(fx.ctx(), &in, &out) == SSAO_OK);
     const std::vector<float> want = fx.read_red(out.texture, kW, kH);
-    CHECK((out.passes_run & SSAO_PASS_DOWNSAMPLE) != 0);
+    CHECK((out.passes_run & SSAO_PASS_GRID) != 0);
     // Values that would be refused with a normal texture describe nothing now.
     in.normal_space = static_cast<ssao_normal_space>(77);
     in.normal_packing = static_cast<ssao_normal_packing>(0x7fffffff);
@@ -227,5 +227,5 @@ TEST_CASE("depth-only input is free when off: with a G-buffer at full resolution
     fx.settings(s);
     const auto r = fx.run(g, proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE);
     REQUIRE(r.status == SSAO_OK);
-    CHECK((r.output.passes_run & SSAO_PASS_DOWNSAMPLE) == 0);
+    CHECK((r.output.passes_run & SSAO_PASS_GRID) == 0);
 }

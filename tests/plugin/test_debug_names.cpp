@@ -36,11 +36,11 @@ Events expected_groups(const std::vector<std::string>& passes) {
 // The names of the passes in the order they ran, from the per-pass timings
 // of a measured frame (the plan's order, as the library reports it).
 std::vector<std::string> names_of(const ssao_timings& t) {
-    const std::map<uint32_t, std::string> name = {{SSAO_PASS_AO, "ssao: ao"},
+    const std::map<uint32_t, std::string> name = {{SSAO_PASS_OCCLUSION, "ssao: kernel"},
                                                   {SSAO_PASS_BLUR_X, "ssao: blur x"},
                                                   {SSAO_PASS_BLUR_Y, "ssao: blur y"},
                                                   {SSAO_PASS_CLEAR, "ssao: clear"},
-                                                  {SSAO_PASS_DOWNSAMPLE, "ssao: downsample"},
+                                                  {SSAO_PASS_GRID, "ssao: grid"},
                                                   {SSAO_PASS_UPSAMPLE, "ssao: upsample"}};
     std::vector<std::string> out;
     for (uint32_t i = 0; i < t.pass_count; ++i) out.push_back(name.at(t.pass_kind[i]));
@@ -67,14 +67,14 @@ TEST_CASE("debug groups: each pass in its own group inside 'ssao', in the plan's
         std::vector<std::string> passes;
     };
     const Case cases[] = {
-        {"depth-aware", make(16, SSAO_BLUR_DEPTH_AWARE), {"ssao: ao", "ssao: blur x", "ssao: blur y"}},
-        {"gaussian", make(16, SSAO_BLUR_GAUSSIAN), {"ssao: ao", "ssao: blur x", "ssao: blur y"}},
-        {"box", make(16, SSAO_BLUR_BOX_4X4), {"ssao: ao", "ssao: blur x"}},
-        {"no blur", make(16, SSAO_BLUR_NONE), {"ssao: ao"}},
+        {"depth-aware", make(16, SSAO_BLUR_DEPTH_AWARE), {"ssao: kernel", "ssao: blur x", "ssao: blur y"}},
+        {"gaussian", make(16, SSAO_BLUR_GAUSSIAN), {"ssao: kernel", "ssao: blur x", "ssao: blur y"}},
+        {"box", make(16, SSAO_BLUR_BOX_4X4), {"ssao: kernel", "ssao: blur x"}},
+        {"no blur", make(16, SSAO_BLUR_NONE), {"ssao: kernel"}},
         {"strength off", off, {"ssao: clear"}},
         {"half resolution", half,
-         {"ssao: downsample", "ssao: ao", "ssao: blur x", "ssao: blur y", "ssao: upsample"}},
-        {"quarter resolution, box", quarter_box, {"ssao: downsample", "ssao: ao", "ssao: blur x", "ssao: upsample"}},
+         {"ssao: grid", "ssao: kernel", "ssao: blur x", "ssao: blur y", "ssao: upsample"}},
+        {"quarter resolution, box", quarter_box, {"ssao: grid", "ssao: kernel", "ssao: blur x", "ssao: upsample"}},
     };
     DebugGroupLog log(gl);
     for (const Case& c : cases) {
@@ -177,7 +177,7 @@ TEST_CASE("debug groups: a host stack with no room for two more gets none, and n
         CAPTURE(events);
         // Two free slots hold "ssao" and one pass group; fewer get nothing.
         if (free_slots >= 2)
-            CHECK(log.events() == expected_groups({"ssao: ao", "ssao: blur x", "ssao: blur y"}));
+            CHECK(log.events() == expected_groups({"ssao: kernel", "ssao: blur x", "ssao: blur y"}));
         else
             CHECK(log.events().empty());
         CHECK(fx.read_red(out.texture, scene.g.width, scene.g.height) == ao_reference);
@@ -211,7 +211,7 @@ TEST_CASE("object labels: every GL object the library made carries an 'ssao: ...
         {GL_TEXTURE, [](GladGLContext& g, GLuint n) { return g.IsTexture(n); },
          {"ssao: intermediate 0", "ssao: intermediate 1", "ssao: noise", "ssao: output"}},
         {GL_PROGRAM, [](GladGLContext& g, GLuint n) { return g.IsProgram(n); },
-         {"ssao: ao program", "ssao: blur program", "ssao: visibility program", "ssao: downsample program",
+         {"ssao: kernel program", "ssao: blur program", "ssao: visibility program", "ssao: grid program",
           "ssao: upsample program"}},
         {GL_BUFFER, [](GladGLContext& g, GLuint n) { return g.IsBuffer(n); },
          {"ssao: frame constants", "ssao: kernel"}},

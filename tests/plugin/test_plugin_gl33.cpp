@@ -168,7 +168,7 @@ TEST_CASE("GL 3.3 with the KHR_debug extension: the passes are named there too")
     REQUIRE(ao_mismatches(fx) <= 32 * 32 / 50);
     const std::string events = log.text();
     CAPTURE(events);
-    CHECK(events == "+ssao\n+ssao: ao\n-ssao: ao\n-ssao\n");
+    CHECK(events == "+ssao\n+ssao: kernel\n-ssao: kernel\n-ssao\n");
     CHECK(testgl::debug_group_depth(gl) == depth);
     CHECK(fx.gl_errors().empty());
 }

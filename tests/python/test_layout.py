@@ -92,7 +92,7 @@ def compare(ssao, probe):
     for name in sorted(set(py_enums) - set(c_enums)):
         problems.append("enum %s is in ssao.py but not in ssao.h" % name)
     for name in sorted(set(c_enums) & set(py_enums)):
-        c, py = c_enums[name], {m.name: int(m) for m in py_enums[name]}
+        c, py = c_enums[name], {n: int(m) for n, m in py_enums[name].__members__.items()}  # aliases too
         if c != py:
             problems.append("enum %s differs: only in ssao.h %s, only in ssao.py %s" % (
                 name, sorted(set(c.items()) - set(py.items())), sorted(set(py.items()) - set(c.items()))))

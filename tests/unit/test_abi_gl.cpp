@@ -521,11 +521,11 @@ TEST_CASE("abi: a valid execute runs the passes the settings call for") {
     ssao_settings half_no_blur = with_blur(SSAO_BLUR_NONE);
     half_no_blur.resolution = SSAO_RESOLUTION_HALF;
     const Expect expect[] = {
-        {"half resolution, no blur", half_no_blur, SSAO_PASS_DOWNSAMPLE | SSAO_PASS_AO | SSAO_PASS_UPSAMPLE},
-        {"depth-aware", with_blur(SSAO_BLUR_DEPTH_AWARE), SSAO_PASS_AO | SSAO_PASS_BLUR_X | SSAO_PASS_BLUR_Y},
-        {"gaussian", with_blur(SSAO_BLUR_GAUSSIAN), SSAO_PASS_AO | SSAO_PASS_BLUR_X | SSAO_PASS_BLUR_Y},
-        {"box 4x4", with_blur(SSAO_BLUR_BOX_4X4), SSAO_PASS_AO | SSAO_PASS_BLUR_X},
-        {"no blur", with_blur(SSAO_BLUR_NONE), SSAO_PASS_AO},
+        {"half resolution, no blur", half_no_blur, SSAO_PASS_GRID | SSAO_PASS_OCCLUSION | SSAO_PASS_UPSAMPLE},
+        {"depth-aware", with_blur(SSAO_BLUR_DEPTH_AWARE), SSAO_PASS_OCCLUSION | SSAO_PASS_BLUR_X | SSAO_PASS_BLUR_Y},
+        {"gaussian", with_blur(SSAO_BLUR_GAUSSIAN), SSAO_PASS_OCCLUSION | SSAO_PASS_BLUR_X | SSAO_PASS_BLUR_Y},
+        {"box 4x4", with_blur(SSAO_BLUR_BOX_4X4), SSAO_PASS_OCCLUSION | SSAO_PASS_BLUR_X},
+        {"no blur", with_blur(SSAO_BLUR_NONE), SSAO_PASS_OCCLUSION},
         {"strength off", off, SSAO_PASS_CLEAR},
         {"strength off, no blur", off_no_blur, SSAO_PASS_CLEAR},
     };
@@ -598,7 +598,7 @@ TEST_CASE("abi: a host output texture is written at the viewport only and return
         CHECK(out.origin[1] == 6);
         CHECK(out.passes_run == (s.strength == SSAO_STRENGTH_OFF
                                      ? uint32_t(SSAO_PASS_CLEAR)
-                                     : uint32_t(SSAO_PASS_AO | SSAO_PASS_BLUR_X | SSAO_PASS_BLUR_Y)));
+                                     : uint32_t(SSAO_PASS_OCCLUSION | SSAO_PASS_BLUR_X | SSAO_PASS_BLUR_Y)));
         const std::vector<float> px = read_red(gl, host_out, kSize, kSize);
         int outside_changed = 0, inside_low = 0;
         for (int y = 0; y < kSize; ++y)
@@ -874,9 +874,9 @@ TEST_CASE("abi: get_timings reports one GPU time per pass, in the order the pass
         std::vector<uint32_t> kinds;
     };
     const Expect expect[] = {
-        {"depth-aware", with_blur(SSAO_BLUR_DEPTH_AWARE), {SSAO_PASS_AO, SSAO_PASS_BLUR_X, SSAO_PASS_BLUR_Y}},
-        {"box", box, {SSAO_PASS_AO, SSAO_PASS_BLUR_X}},
-        {"no blur", with_blur(SSAO_BLUR_NONE), {SSAO_PASS_AO}},
+        {"depth-aware", with_blur(SSAO_BLUR_DEPTH_AWARE), {SSAO_PASS_OCCLUSION, SSAO_PASS_BLUR_X, SSAO_PASS_BLUR_Y}},
+        {"box", box, {SSAO_PASS_OCCLUSION, SSAO_PASS_BLUR_X}},
+        {"no blur", with_blur(SSAO_BLUR_NONE), {SSAO_PASS_OCCLUSION}},
         {"strength off", off, {SSAO_PASS_CLEAR}},
     };
     uint64_t executes = 0;

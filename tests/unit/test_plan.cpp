@@ -3,6 +3,7 @@
 // intermediates, and the invariants every plan keeps (the last pass writes
 // the output, no pass samples its own target, every intermediate is written
 // before it is read).
+#include "pass_table.h"
 #include "plan.h"
 #include "plan_test_util.h"
 #include "settings.h"
@@ -59,7 +60,7 @@ void check_invariants(const FramePlan& p, const AnalysedInputs& in) {
     for (int i = 0; i < p.pass_count; ++i) {
         const Pass& pass = p.passes[i];
         CAPTURE(i);
-        bits |= static_cast<uint32_t>(pass.kind);
+        bits |= pass_info(pass.kind).bit;
         // Only the last pass writes the output; the others write an
         // intermediate, packed (ao, view z), that a later pass reads.
         if (i + 1 < p.pass_count) {
@@ -81,7 +82,7 @@ void check_invariants(const FramePlan& p, const AnalysedInputs& in) {
         }
         if (pass.target2.source != Source::none) {
             // Only the grid pass writes a second target: its normals, beside its view z.
-            CHECK(pass.kind == PassKind::downsample);
+            CHECK(pass.kind == PassKind::grid);
             REQUIRE(pass.target2.source == Source::intermediate);
             REQUIRE(pass.target2.index < p.intermediate_count);
             CHECK(pass.target2 != pass.target);
@@ -101,7 +102,7 @@ void check_invariants(const FramePlan& p, const AnalysedInputs& in) {
         }
         if (pass.target.source == Source::intermediate) written.insert(pass.target.index);
         if (pass.target2.source == Source::intermediate) written.insert(pass.target2.index);
-        CHECK(std::string(pass_name(pass.kind)).rfind("ssao: ", 0) == 0);
+        CHECK(std::string(pass_info(pass.kind).debug_group).rfind("ssao: ", 0) == 0);
     }
     CHECK(p.passes_run() == bits);
 }
@@ -114,14 +115,14 @@ TEST_CASE("plan: blur off gives one AO pass straight into the output") {
     check_invariants(p, in);
     REQUIRE(p.pass_count == 1);
     const Pass& ao = p.passes[0];
-    CHECK(ao.kind == PassKind::ao);
-    CHECK(ao.program == ProgramId::ao);
+    CHECK(ao.kind == PassKind::kernel);
+    CHECK(program_of(ao.kind) == ProgramId::kernel);
     CHECK(ao.inputs[SSAO_UNIT_DEPTH].source == Source::depth);
     CHECK(ao.inputs[SSAO_UNIT_NORMAL].source == Source::normal);
     CHECK(ao.inputs[SSAO_UNIT_NOISE].source == Source::noise);
     CHECK(ao.inputs[SSAO_UNIT_AO].source == Source::none);
     CHECK(p.intermediate_count == 0);
-    CHECK(p.passes_run() == uint32_t(SSAO_PASS_AO));
+    CHECK(p.passes_run() == uint32_t(SSAO_PASS_OCCLUSION));
 }
 
 TEST_CASE("plan: strength off gives a clear and no sampling, whatever the blur") {
@@ -134,7 +135,7 @@ TEST_CASE("plan: strength off gives a clear and no sampling, whatever the blur")
             check_invariants(p, in);
             REQUIRE(p.pass_count == 1);
             CHECK(p.passes[0].kind == PassKind::clear);
-            CHECK(p.passes[0].program == ProgramId::none);
+            CHECK(program_of(p.passes[0].kind) == ProgramId::none);
             for (const TexRef& r : p.passes[0].inputs) CHECK(r.source == Source::none);
             CHECK(p.intermediate_count == 0);
             CHECK(p.passes_run() == uint32_t(SSAO_PASS_CLEAR));
@@ -146,17 +147,17 @@ TEST_CASE("plan: the box blur is one blur pass, the separable blurs two") {
     const AnalysedInputs in = inputs(0, 0, 32, 32);
     const FramePlan box = plan_frame(resolved(SSAO_BLUR_BOX_4X4), in);
     check_invariants(box, in);
-    CHECK(kinds(box) == std::vector<PassKind>{PassKind::ao, PassKind::blur_x});
+    CHECK(kinds(box) == std::vector<PassKind>{PassKind::kernel, PassKind::blur_x});
     CHECK(box.intermediate_count == 1);
-    CHECK(box.passes[1].program == ProgramId::blur);
+    CHECK(program_of(box.passes[1].kind) == ProgramId::blur);
     CHECK(box.passes[1].inputs[SSAO_UNIT_AO] == TexRef::of(Source::intermediate, 0));
-    CHECK(box.passes_run() == uint32_t(SSAO_PASS_AO | SSAO_PASS_BLUR_X));
+    CHECK(box.passes_run() == uint32_t(SSAO_PASS_OCCLUSION | SSAO_PASS_BLUR_X));
 
     for (ssao_blur blur : {SSAO_BLUR_DEPTH_AWARE, SSAO_BLUR_GAUSSIAN}) {
         CAPTURE(blur);
         const FramePlan p = plan_frame(resolved(blur), in);
         check_invariants(p, in);
-        CHECK(kinds(p) == std::vector<PassKind>{PassKind::ao, PassKind::blur_x, PassKind::blur_y});
+        CHECK(kinds(p) == std::vector<PassKind>{PassKind::kernel, PassKind::blur_x, PassKind::blur_y});
         CHECK(p.intermediate_count == 2);
         CHECK(p.passes[0].target == TexRef::of(Source::intermediate, 0));
         CHECK(p.passes[1].inputs[SSAO_UNIT_AO] == TexRef::of(Source::intermediate, 0));
@@ -166,7 +167,7 @@ TEST_CASE("plan: the box blur is one blur pass, the separable blurs two") {
         CHECK(p.passes[1].direction[1] == 0);
         CHECK(p.passes[2].direction[0] == 0);
         CHECK(p.passes[2].direction[1] == 1);
-        CHECK(p.passes_run() == uint32_t(SSAO_PASS_AO | SSAO_PASS_BLUR_X | SSAO_PASS_BLUR_Y));
+        CHECK(p.passes_run() == uint32_t(SSAO_PASS_OCCLUSION | SSAO_PASS_BLUR_X | SSAO_PASS_BLUR_Y));
     }
 }
 
@@ -222,19 +223,53 @@ TEST_CASE("plan: the same arguments give the same plan (pure)") {
     }
 }
 
-TEST_CASE("plan: pass names are distinct, timing buckets split sampling from blurring") {
-    const PassKind all[] = {PassKind::clear, PassKind::ao, PassKind::blur_x, PassKind::blur_y};
-    std::set<std::string> names;
-    for (PassKind k : all) names.insert(pass_name(k));
-    CHECK(names.size() == 4);
-    CHECK(std::string(pass_name(PassKind::ao)) == "ssao: ao");
-    CHECK(std::string(pass_name(PassKind::blur_x)) == "ssao: blur x");
-    CHECK(std::string(pass_name(PassKind::blur_y)) == "ssao: blur y");
-    CHECK(std::string(pass_name(PassKind::clear)) == "ssao: clear");
-    CHECK(timing_bucket(PassKind::clear) == TimingBucket::ao);
-    CHECK(timing_bucket(PassKind::ao) == TimingBucket::ao);
-    CHECK(timing_bucket(PassKind::blur_x) == TimingBucket::blur);
-    CHECK(timing_bucket(PassKind::blur_y) == TimingBucket::blur);
+TEST_CASE("pass table: one row per pass, with distinct debug groups, the public bits and the timing figures") {
+    std::set<std::string> groups;
+    for (int k = 0; k < static_cast<int>(PassKind::count); ++k) {
+        const PassInfo& row = pass_info(static_cast<PassKind>(k));
+        CAPTURE(row.debug_group);
+        CHECK(static_cast<int>(row.kind) == k);
+        CHECK(std::string(row.debug_group).rfind("ssao: ", 0) == 0);
+        groups.insert(row.debug_group);
+        const bool draws = row.program.id != ProgramId::none;
+        CHECK(draws == (row.kind != PassKind::clear));
+        if (draws) CHECK(std::string(row.program.file_name).find(".frag") != std::string::npos);
+    }
+    CHECK(groups.size() == static_cast<size_t>(PassKind::count));
+    struct Want {
+        PassKind kind;
+        const char* group;
+        uint32_t bit;
+        TimingBucket bucket;
+        ProgramId program;
+        const char* file;
+    };
+    const Want want[] = {
+        {PassKind::clear, "ssao: clear", SSAO_PASS_CLEAR, TimingBucket::ao_ms, ProgramId::none, ""},
+        {PassKind::grid, "ssao: grid", SSAO_PASS_GRID, TimingBucket::ao_ms, ProgramId::grid, "grid.frag"},
+        {PassKind::kernel, "ssao: kernel", SSAO_PASS_OCCLUSION, TimingBucket::ao_ms, ProgramId::kernel, "kernel.frag"},
+        {PassKind::visibility, "ssao: visibility", SSAO_PASS_OCCLUSION, TimingBucket::ao_ms, ProgramId::visibility,
+         "visibility.frag"},
+        {PassKind::normals_view, "ssao: normals view", SSAO_PASS_NORMALS_VIEW, TimingBucket::ao_ms,
+         ProgramId::normals_view, "normals_view.frag"},
+        {PassKind::blur_x, "ssao: blur x", SSAO_PASS_BLUR_X, TimingBucket::blur_ms, ProgramId::blur, "blur.frag"},
+        {PassKind::blur_y, "ssao: blur y", SSAO_PASS_BLUR_Y, TimingBucket::blur_ms, ProgramId::blur, "blur.frag"},
+        {PassKind::upsample, "ssao: upsample", SSAO_PASS_UPSAMPLE, TimingBucket::blur_ms, ProgramId::upsample,
+         "upsample.frag"},
+    };
+    for (const Want& w : want) {
+        const PassInfo& row = pass_info(w.kind);
+        CAPTURE(w.group);
+        CHECK(std::string(row.debug_group) == w.group);
+        CHECK(row.bit == w.bit);
+        CHECK(row.bucket == w.bucket);
+        CHECK(row.program.id == w.program);
+        CHECK(std::string(row.program.file_name) == w.file);
+        if (w.program != ProgramId::none) CHECK(std::string(program_info(w.program).file_name) == w.file);
+    }
+    // The names the header promised before the passes were renamed.
+    CHECK(uint32_t(SSAO_PASS_AO) == uint32_t(SSAO_PASS_OCCLUSION));
+    CHECK(uint32_t(SSAO_PASS_DOWNSAMPLE) == uint32_t(SSAO_PASS_GRID));
 }
 
 TEST_CASE("plan: the method picks the AO pass's program and nothing else") {
@@ -245,9 +280,9 @@ TEST_CASE("plan: the method picks the AO pass's program and nothing else") {
     const FramePlan pk = plan_frame(kernel, in), pv = plan_frame(visibility, in);
     check_invariants(pv, in);
     REQUIRE(pk.pass_count == pv.pass_count);
-    CHECK(pk.passes[0].program == ProgramId::ao);
-    CHECK(pv.passes[0].program == ProgramId::visibility);
-    for (int i = 1; i < pv.pass_count; ++i) CHECK(pv.passes[i].program == pk.passes[i].program);
+    CHECK(program_of(pk.passes[0].kind) == ProgramId::kernel);
+    CHECK(program_of(pv.passes[0].kind) == ProgramId::visibility);
+    for (int i = 1; i < pv.pass_count; ++i) CHECK(program_of(pv.passes[i].kind) == program_of(pk.passes[i].kind));
     CHECK(pv.passes_run() == pk.passes_run());
 }
 
@@ -268,9 +303,9 @@ TEST_CASE("plan: half resolution of 641x359 - downsample, AO and blur on a 321x1
         const AnalysedInputs in = inputs(host ? 7 : 0, host ? 3 : 0, 641, 359, host);
         const FramePlan p = plan_frame(at_resolution(SSAO_BLUR_DEPTH_AWARE, SSAO_RESOLUTION_HALF), in);
         check_invariants(p, in);
-        REQUIRE(kinds(p) == std::vector<PassKind>{PassKind::downsample, PassKind::ao, PassKind::blur_x,
+        REQUIRE(kinds(p) == std::vector<PassKind>{PassKind::grid, PassKind::kernel, PassKind::blur_x,
                                                   PassKind::blur_y, PassKind::upsample});
-        CHECK(p.passes_run() == uint32_t(SSAO_PASS_DOWNSAMPLE | SSAO_PASS_AO | SSAO_PASS_BLUR_X | SSAO_PASS_BLUR_Y |
+        CHECK(p.passes_run() == uint32_t(SSAO_PASS_GRID | SSAO_PASS_OCCLUSION | SSAO_PASS_BLUR_X | SSAO_PASS_BLUR_Y |
                                          SSAO_PASS_UPSAMPLE));
         // ceil(641/2) x ceil(359/2): the last column and row are blocks of one pixel, not dropped.
         // The grid pass's view z (R32F) and normals (RGBA32F), the AO, the blur's x pass.
@@ -289,7 +324,7 @@ TEST_CASE("plan: half resolution of 641x359 - downsample, AO and blur on a 321x1
             CHECK(p.passes[i].rect.height == 180);
         }
         const Pass& down = p.passes[0];
-        CHECK(down.program == ProgramId::downsample);
+        CHECK(program_of(down.kind) == ProgramId::grid);
         CHECK(down.inputs[SSAO_UNIT_DEPTH].source == Source::depth);
         CHECK(down.inputs[SSAO_UNIT_NORMAL].source == Source::normal);
         CHECK(down.scale == 2);
@@ -301,7 +336,7 @@ TEST_CASE("plan: half resolution of 641x359 - downsample, AO and blur on a 321x1
         CHECK(ao.inputs[SSAO_UNIT_NORMAL] == down.target2);
         CHECK(ao.inputs[SSAO_UNIT_NOISE].source == Source::noise);
         const Pass& up = p.passes[4];
-        CHECK(up.program == ProgramId::upsample);
+        CHECK(program_of(up.kind) == ProgramId::upsample);
         CHECK(up.scale == 2);
         CHECK(up.inputs[SSAO_UNIT_DEPTH].source == Source::depth);  // its own full-resolution depth
         CHECK(up.inputs[SSAO_UNIT_AO] == p.passes[3].target);
@@ -334,12 +369,12 @@ TEST_CASE("plan: reduced resolution for every blur, both methods, quarter too, a
                     const AnalysedInputs in = inputs(0, 0, sz[0], sz[1]);
                     const FramePlan p = plan_frame(at_resolution(b.blur, res, method), in);
                     check_invariants(p, in);
-                    std::vector<PassKind> want{PassKind::downsample, PassKind::ao};
+                    std::vector<PassKind> want{PassKind::grid, method == SSAO_METHOD_VISIBILITY ? PassKind::visibility : PassKind::kernel};
                     want.insert(want.end(), b.middle.begin(), b.middle.end());
                     want.push_back(PassKind::upsample);
                     CHECK(kinds(p) == want);
-                    CHECK(p.passes[1].program ==
-                          (method == SSAO_METHOD_VISIBILITY ? ProgramId::visibility : ProgramId::ao));
+                    CHECK(program_of(p.passes[1].kind) ==
+                          (method == SSAO_METHOD_VISIBILITY ? ProgramId::visibility : ProgramId::kernel));
                     const int lw = (sz[0] + scale - 1) / scale, lh = (sz[1] + scale - 1) / scale;
                     for (int i = 0; i < p.intermediate_count; ++i) {
                         CHECK(p.intermediates[i].width == lw);
@@ -351,7 +386,7 @@ TEST_CASE("plan: reduced resolution for every blur, both methods, quarter too, a
                     CHECK(lh * scale >= sz[1]);
                     CHECK((lh - 1) * scale < sz[1]);
                     for (int i = 0; i < p.pass_count; ++i) {
-                        if (p.passes[i].program != ProgramId::blur) CHECK(p.passes[i].scale == scale);
+                        if (program_of(p.passes[i].kind) != ProgramId::blur) CHECK(p.passes[i].scale == scale);
                         else CHECK(p.passes[i].depth_aware);
                     }
                 }
@@ -364,7 +399,7 @@ TEST_CASE("plan: full resolution plans no downsample or upsample; strength off s
     const AnalysedInputs in = inputs(0, 0, 64, 48);
     for (ssao_blur blur : {SSAO_BLUR_NONE, SSAO_BLUR_BOX_4X4, SSAO_BLUR_DEPTH_AWARE}) {
         const FramePlan p = plan_frame(at_resolution(blur, SSAO_RESOLUTION_FULL), in);
-        CHECK((p.passes_run() & uint32_t(SSAO_PASS_DOWNSAMPLE | SSAO_PASS_UPSAMPLE)) == 0u);
+        CHECK((p.passes_run() & uint32_t(SSAO_PASS_GRID | SSAO_PASS_UPSAMPLE)) == 0u);
         for (int i = 0; i < p.pass_count; ++i) {
             CHECK(p.passes[i].scale == 1);
             CHECK_FALSE(p.passes[i].depth_aware);  // the blur kind alone decides at full resolution
@@ -378,15 +413,6 @@ TEST_CASE("plan: full resolution plans no downsample or upsample; strength off s
         CHECK(p.passes_run() == uint32_t(SSAO_PASS_CLEAR));
         CHECK(p.intermediate_count == 0);
     }
-}
-
-TEST_CASE("plan: the reduced-resolution passes have their own names and timing buckets") {
-    CHECK(std::string(pass_name(PassKind::downsample)) == "ssao: downsample");
-    CHECK(std::string(pass_name(PassKind::upsample)) == "ssao: upsample");
-    CHECK(timing_bucket(PassKind::downsample) == TimingBucket::ao);
-    CHECK(timing_bucket(PassKind::upsample) == TimingBucket::blur);
-    CHECK(uint32_t(PassKind::downsample) == uint32_t(SSAO_PASS_DOWNSAMPLE));
-    CHECK(uint32_t(PassKind::upsample) == uint32_t(SSAO_PASS_UPSAMPLE));
 }
 
 TEST_CASE("plan: multisampled inputs or normals from depth add the grid pass at full resolution too, with its variants") {
@@ -405,17 +431,17 @@ TEST_CASE("plan: multisampled inputs or normals from depth add the grid pass at 
                     check_invariants(p, in);
                     const bool grid = ms || from_depth || res != SSAO_RESOLUTION_FULL;
                     const Pass& first = p.passes[0];
-                    CHECK((first.kind == PassKind::downsample) == grid);
+                    CHECK((first.kind == PassKind::grid) == grid);
                     for (int i = 0; i < p.pass_count; ++i) {
                         const Pass& pass = p.passes[i];
                         CAPTURE(i);
                         // Only the passes that read the host's textures read them multisampled.
-                        const bool reads_host = pass.kind == PassKind::downsample || pass.kind == PassKind::upsample ||
-                                                (pass.kind == PassKind::ao && !grid);
+                        const bool reads_host = pass.kind == PassKind::grid || pass.kind == PassKind::upsample ||
+                                                (pass.kind == PassKind::kernel && !grid);
                         CHECK(((pass.variant & variant::multisample) != 0) == (ms && reads_host));
                         CHECK(((pass.variant & variant::normals_from_depth) != 0) ==
-                              (from_depth && pass.kind == PassKind::downsample));
-                        CHECK(((pass.variant & variant::grid_input) != 0) == (grid && pass.kind == PassKind::ao));
+                              (from_depth && pass.kind == PassKind::grid));
+                        CHECK(((pass.variant & variant::grid_input) != 0) == (grid && pass.kind == PassKind::kernel));
                     }
                     if (!grid) continue;
                     // No normal texture to read: the grid pass leaves the unit unbound.
@@ -427,7 +453,7 @@ TEST_CASE("plan: multisampled inputs or normals from depth add the grid pass at 
                     CHECK(p.intermediates[first.target2.index].format == TexFormat::rgba32f);
                     // The sampling pass reads a 4-byte view z per step and the normals once.
                     for (int i = 0; i < p.pass_count; ++i)
-                        if (p.passes[i].kind == PassKind::ao) {
+                        if (p.passes[i].kind == PassKind::kernel) {
                             CHECK(p.passes[i].inputs[SSAO_UNIT_DEPTH] == first.target);
                             CHECK(p.passes[i].inputs[SSAO_UNIT_NORMAL] == first.target2);
                         }

@@ -4,6 +4,7 @@
 // their BLUR_WEIGHTS variant (a clear when there is no blur), and below full
 // resolution both upsample without depth weights. A view that is off sets no
 // variant bit of its own (free when off).
+#include "pass_table.h"
 #include "plan.h"
 #include "plan_test_util.h"
 #include "settings.h"
@@ -32,7 +33,7 @@ void check_same_passes(const FramePlan& a, const FramePlan& b) {
         CAPTURE(i);
         const Pass &p = a.passes[i], &q = b.passes[i];
         CHECK(p.kind == q.kind);
-        CHECK(p.program == q.program);
+        CHECK(program_of(p.kind) == program_of(q.kind));
         for (int u = 0; u < SSAO_UNITS_USED; ++u) CHECK(p.inputs[u] == q.inputs[u]);
         CHECK(p.target == q.target);
         CHECK(p.rect.x == q.rect.x);
@@ -105,7 +106,7 @@ TEST_CASE("plan debug: BLUR_WEIGHTS runs the AO's passes with the blurs in their
                 // No blur, nothing weighed: the output is cleared to 1 and nothing samples.
                 REQUIRE(w.pass_count == 1);
                 CHECK(w.passes[0].kind == PassKind::clear);
-                CHECK(w.passes[0].program == ProgramId::none);
+                CHECK(program_of(w.passes[0].kind) == ProgramId::none);
                 CHECK(w.passes[0].target.source == Source::output);
                 CHECK(w.passes[0].rect.width == 67);
                 CHECK(w.passes[0].rect.height == 41);

@@ -4,6 +4,7 @@
 // no other pass ever does and no pass is added, so a frame without them runs
 // exactly today's programs; and frame_noise_offsets walks the R2 sequence.
 #include "kernel.h"
+#include "pass_table.h"
 #include "plan.h"
 #include "plan_test_util.h"
 #include "settings.h"
@@ -42,7 +43,7 @@ Bits bits_of(const FramePlan& p) {
     Bits b;
     b.passes = p.pass_count;
     for (int i = 0; i < p.pass_count; ++i)
-        (p.passes[i].kind == PassKind::ao ? b.ao : b.others) |= p.passes[i].variant & kFeatureBits;
+        (pass_info(p.passes[i].kind).bit == SSAO_PASS_OCCLUSION ? b.ao : b.others) |= p.passes[i].variant & kFeatureBits;
     return b;
 }
 

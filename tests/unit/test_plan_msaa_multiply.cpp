@@ -47,7 +47,7 @@ TEST_CASE("MSAA inputs: only the passes that read the host's textures are MULTIS
             in.sample_index = 3;
             const FramePlan plan = plan_frame(resolved(SSAO_METHOD_VISIBILITY, res, blur), in);
             REQUIRE(plan.pass_count >= 2);
-            CHECK(plan.passes[0].kind == PassKind::downsample);  // the grid pass, even at full resolution
+            CHECK(plan.passes[0].kind == PassKind::grid);  // the grid pass, even at full resolution
             for (int i = 0; i < plan.pass_count; ++i) {
                 const Pass& p = plan.passes[i];
                 CAPTURE(i);

@@ -2,6 +2,7 @@
 // (ssao_settings.debug_view NORMALS / RECONSTRUCTED_NORMALS, issue 12):
 // the grid pass at full resolution then the view pass into the output,
 // whatever the resolution, blur or strength; the owned output is RGBA8.
+#include "pass_table.h"
 #include "plan.h"
 #include "plan_test_util.h"
 #include "settings.h"
@@ -42,7 +43,7 @@ TEST_CASE("plan: the normal views run the full-resolution grid pass and the view
                         REQUIRE(p.pass_count == 2);
                         const Pass& grid = p.passes[0];
                         const Pass& out = p.passes[1];
-                        CHECK(grid.kind == PassKind::downsample);
+                        CHECK(grid.kind == PassKind::grid);
                         CHECK(grid.scale == 1);
                         CHECK(grid.target.source == Source::intermediate);
                         CHECK(p.intermediates[grid.target.index].width == 67);
@@ -52,7 +53,7 @@ TEST_CASE("plan: the normal views run the full-resolution grid pass and the view
                         const bool rebuild = from_depth || view == SSAO_DEBUG_VIEW_RECONSTRUCTED_NORMALS;
                         CHECK(((grid.variant & variant::normals_from_depth) != 0) == rebuild);
                         CHECK((grid.inputs[SSAO_UNIT_NORMAL].source == Source::normal) == !rebuild);
-                        CHECK(out.program == ProgramId::normals_view);
+                        CHECK(program_of(out.kind) == ProgramId::normals_view);
                         CHECK(out.variant == variant::grid_input);
                         CHECK(out.inputs[SSAO_UNIT_DEPTH] == grid.target);
                         CHECK(out.inputs[SSAO_UNIT_NORMAL] == grid.target2);
@@ -61,7 +62,8 @@ TEST_CASE("plan: the normal views run the full-resolution grid pass and the view
                         CHECK(out.rect.y == (host_output ? 2 : 0));
                         CHECK(out.rect.width == 67);
                         CHECK(out.rect.height == 41);
-                        CHECK(p.passes_run() == (SSAO_PASS_DOWNSAMPLE | SSAO_PASS_AO));
+                        CHECK(out.kind == PassKind::normals_view);
+                        CHECK(p.passes_run() == (SSAO_PASS_GRID | SSAO_PASS_NORMALS_VIEW));
                         CHECK(p.output_format == TexFormat::rgba8);
                     }
 }
@@ -74,6 +76,6 @@ TEST_CASE("plan: other debug views and none keep the output format asked for") {
         s.output_format = SSAO_OUTPUT_R16F;
         const FramePlan p = plan_frame(s, in);
         CHECK(p.output_format == TexFormat::r16f);
-        for (int i = 0; i < p.pass_count; ++i) CHECK(p.passes[i].program != ProgramId::normals_view);
+        for (int i = 0; i < p.pass_count; ++i) CHECK(program_of(p.passes[i].kind) != ProgramId::normals_view);
     }
 }

@@ -7,8 +7,10 @@
 #include <doctest/doctest.h>
 
 #include "egl_context.h"
+#include "pass_table.h"
 #include "plan.h"
 #include "settings.h"
+#include "shader_build.h"
 #include "shader_source.h"
 
 #include <set>
@@ -20,41 +22,11 @@ using namespace ssao_impl;
 
 namespace {
 
-// The driver's log when `source` fails to compile, "" when it compiles.
-std::string compile_log(GladGLContext& gl, GLenum type, const std::string& source, GLuint& shader) {
-    shader = gl.CreateShader(type);
-    const char* src = source.c_str();
-    gl.ShaderSource(shader, 1, &src, nullptr);
-    gl.CompileShader(shader);
-    GLint ok = 0;
-    gl.GetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-    if (ok) return "";
-    char log[4096] = {};
-    gl.GetShaderInfoLog(shader, sizeof log, nullptr, log);
-    return std::string("compile: ") + log;
-}
-
 // "" when the program links, else the log.
 std::string build(GladGLContext& gl, ProgramId id, uint32_t variant) {
-    GLuint vs = 0, fs = 0;
-    std::string log = compile_log(gl, GL_VERTEX_SHADER, vertex_source(), vs);
-    if (log.empty()) log = compile_log(gl, GL_FRAGMENT_SHADER, fragment_source(id, variant), fs);
-    if (log.empty()) {
-        const GLuint program = gl.CreateProgram();
-        gl.AttachShader(program, vs);
-        gl.AttachShader(program, fs);
-        gl.LinkProgram(program);
-        GLint ok = 0;
-        gl.GetProgramiv(program, GL_LINK_STATUS, &ok);
-        if (!ok) {
-            char text[4096] = {};
-            gl.GetProgramInfoLog(program, sizeof text, nullptr, text);
-            log = std::string("link: ") + text;
-        }
-        gl.DeleteProgram(program);
-    }
-    gl.DeleteShader(vs);
-    gl.DeleteShader(fs);
+    GLuint program = 0;
+    const std::string log = shader_build::link_pass_program(gl, id, variant, program);
+    gl.DeleteProgram(program);
     return log;
 }
 
@@ -117,8 +89,8 @@ std::set<std::pair<ProgramId, uint32_t>> planned_pairs() {
                             a.output_texture = a.multiply_output ? 9u : 0u;
                             const FramePlan plan = plan_frame(s, a);
                             for (int i = 0; i < plan.pass_count; ++i)
-                                if (plan.passes[i].program != ProgramId::none)
-                                    pairs.insert({plan.passes[i].program, plan.passes[i].variant});
+                                if (program_of(plan.passes[i].kind) != ProgramId::none)
+                                    pairs.insert({program_of(plan.passes[i].kind), plan.passes[i].variant});
                         }
     return pairs;
 }
@@ -149,8 +121,8 @@ TEST_CASE("shader variants: each bit's define is in the source and no other") {
     for (int bit = 0; bit < variant::kBits; ++bit) {
         CAPTURE(bit);
         const std::string define = std::string("#define SSAO_") + variant_name(bit) + " 1\n";
-        CHECK(fragment_source(ProgramId::ao, 1u << bit).find(define) != std::string::npos);
-        CHECK(fragment_source(ProgramId::ao, 0).find(define) == std::string::npos);
+        CHECK(fragment_source(ProgramId::kernel, 1u << bit).find(define) != std::string::npos);
+        CHECK(fragment_source(ProgramId::kernel, 0).find(define) == std::string::npos);
     }
     // #version must stay the first line for GLSL to accept the source.
     CHECK(fragment_source(ProgramId::blur, (1u << variant::kBits) - 1u).rfind("#version 330 core\n", 0) == 0);
