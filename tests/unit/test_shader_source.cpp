@@ -29,8 +29,8 @@ using namespace ssao_impl;
 
 namespace {
 
-const ProgramId kFragmentPrograms[] = {ProgramId::ao,         ProgramId::visibility, ProgramId::blur,
-                                       ProgramId::downsample, ProgramId::upsample,   ProgramId::normals_view};
+const ProgramId kFragmentPrograms[] = {ProgramId::kernel,         ProgramId::visibility, ProgramId::blur,
+                                       ProgramId::grid, ProgramId::upsample,   ProgramId::normals_view};
 
 // The text of a shader file as the plugin embeds it.
 std::string embedded(const std::string& file) {
@@ -145,7 +145,7 @@ TEST_CASE("shader source: each file follows its own #line 1 N, N its index in th
     // The shared files each program is built on.
     const std::vector<std::string> sampling = {"ssao_constants.h", "common.glsl", "ao_texture.glsl", "sampling.glsl",
                                                "kernel.frag"};
-    const std::vector<const char*> kernel = fragment_files(ProgramId::ao);
+    const std::vector<const char*> kernel = fragment_files(ProgramId::kernel);
     CHECK(std::vector<std::string>(kernel.begin(), kernel.end()) == sampling);
     const std::vector<const char*> blur = fragment_files(ProgramId::blur);
     CHECK(std::vector<std::string>(blur.begin(), blur.end()) ==
@@ -156,8 +156,8 @@ TEST_CASE("shader source: each file follows its own #line 1 N, N its index in th
 }
 
 TEST_CASE("shader source: a known line of kernel.frag and of common.glsl keeps its file's line number") {
-    const std::string source = fragment_source(ProgramId::ao, 0);
-    const std::vector<const char*> files = fragment_files(ProgramId::ao);
+    const std::string source = fragment_source(ProgramId::kernel, 0);
+    const std::vector<const char*> files = fragment_files(ProgramId::kernel);
     const struct {
         const char* file;
         const char* line;
@@ -215,7 +215,7 @@ TEST_CASE("shader source: the compile error names the file of every source-strin
     CHECK(source_string_legend({"ssao_constants.h", "fullscreen.vert"}) == "0 = ssao_constants.h, 1 = fullscreen.vert");
     CHECK(source_string_legend(fragment_files(ProgramId::blur)) ==
           "0 = ssao_constants.h, 1 = common.glsl, 2 = ao_texture.glsl, 3 = blur.frag");
-    CHECK(compile_error_message("kernel.frag +FADE", fragment_files(ProgramId::ao),
+    CHECK(compile_error_message("kernel.frag +FADE", fragment_files(ProgramId::kernel),
                                 "4:12(3): error: `no_such_name' undeclared\n") ==
           "shader kernel.frag +FADE failed to compile (source strings: 0 = ssao_constants.h, 1 = common.glsl, "
           "2 = ao_texture.glsl, 3 = sampling.glsl, 4 = kernel.frag): 4:12(3): error: `no_such_name' undeclared\n");
