@@ -1,11 +1,14 @@
 #include "hc_util.h"
 
+#include "test_scenes.h"
+
 #include <doctest/doctest.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 namespace hc {
 
@@ -13,37 +16,16 @@ Out run(testgl::Fixture& fx, const analytic::GBuffer& g, const glm::dmat4& proj,
         const RunOptions& o) {
     Out r;
     const int W = g.width + o.pad_x + o.pad_right, H = g.height + o.pad_y + o.pad_top;
-    const std::vector<glm::vec3>& normals = o.normals ? *o.normals : g.normal;
-    std::vector<float> depth(static_cast<size_t>(W) * H);
-    std::vector<glm::vec3> nrm(static_cast<size_t>(W) * H);
-    // Padding holds geometry-like garbage: a near depth and a skewed normal,
-    // so anything read outside the viewport would show.
-    for (size_t i = 0; i < depth.size(); ++i) {
-        depth[i] = 0.37f;
-        nrm[i] = glm::vec3(0.6f, -0.8f, 0.0f);
-    }
-    glm::dmat3 to_world = glm::transpose(glm::dmat3(o.view_matrix));
-    for (int y = 0; y < g.height; ++y)
-        for (int x = 0; x < g.width; ++x) {
-            const size_t s = at(x, y, g.width), d = at(x + o.pad_x, y + o.pad_y, W);
-            depth[d] = g.depth[s];
-            glm::vec3 n = normals[s];
-            if (o.normal_space == SSAO_NORMAL_SPACE_WORLD) n = glm::vec3(to_world * glm::dvec3(n));
-            nrm[d] = n;
-        }
-    const GLuint dt = fx.make_depth(o.depth_format, W, H, depth);
-    const GLuint nt = fx.make_normals(o.normal_format, W, H, nrm);
-    ssao_inputs in = fx.inputs(dt, nt, proj, clip);
+    analytic::GBuffer shown = g;
+    if (o.normals) shown.normal = *o.normals;
+    if (o.normal_space == SSAO_NORMAL_SPACE_WORLD) shown = with_world_normals(std::move(shown), o.view_matrix);
+    const testgl::Textures t = inset_textures(fx, shown, o.pad_x, o.pad_y, W, H, o.depth_format, o.normal_format);
+    ssao_inputs in = fx.inputs(t.depth, t.normal, proj, clip);
     in.normal_space = o.normal_space;
-    in.normal_packing = o.normal_format == GL_RGBA8 ? SSAO_NORMAL_PACKING_UNORM : SSAO_NORMAL_PACKING_SIGNED;
+    in.normal_packing = testgl::packing_of(o.normal_format);
     if (o.normal_space == SSAO_NORMAL_SPACE_WORLD) analytic::to_floats(o.view_matrix, in.view_matrix);
     if (o.depth_only) in.normal_texture = 0;
-    if (W != g.width || H != g.height) {
-        in.viewport[0] = o.pad_x;
-        in.viewport[1] = o.pad_y;
-        in.viewport[2] = g.width;
-        in.viewport[3] = g.height;
-    }
+    if (W != g.width || H != g.height) testgl::set_viewport(in, o.pad_x, o.pad_y, g.width, g.height);
     r.output.size = sizeof r.output;
     fx.gl().Finish();
     const auto t0 = std::chrono::steady_clock::now();
@@ -52,6 +34,38 @@ Out run(testgl::Fixture& fx, const analytic::GBuffer& g, const glm::dmat4& proj,
     r.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     if (r.status == SSAO_OK) r.ao = fx.read_red(r.output.texture, g.width, g.height);
     return r;
+}
+
+testgl::Textures inset_textures(testgl::Fixture& fx, const analytic::GBuffer& g, int x, int y, int tw, int th,
+                                GLenum depth_format, GLenum normal_format) {
+    std::vector<float> depth(static_cast<size_t>(tw) * th, 0.37f);
+    std::vector<glm::vec3> normal(depth.size(), glm::vec3(0.6f, -0.8f, 0.0f));
+    for (int gy = 0; gy < g.height; ++gy)
+        for (int gx = 0; gx < g.width; ++gx) {
+            depth[at(gx + x, gy + y, tw)] = g.depth[at(gx, gy, g.width)];
+            normal[at(gx + x, gy + y, tw)] = g.normal[at(gx, gy, g.width)];
+        }
+    testgl::Textures t;
+    t.depth = fx.make_depth(depth_format, tw, th, depth);
+    t.normal = fx.make_normals(normal_format, tw, th, normal);
+    return t;
+}
+
+GLuint sentinel_texture(GladGLContext& gl, int tw, int th, float value) {
+    const std::vector<float> texels(static_cast<size_t>(tw) * th, value);
+    GLuint t = 0;
+    gl.GenTextures(1, &t);
+    gl.BindTexture(GL_TEXTURE_2D, t);
+    gl.TexImage2D(GL_TEXTURE_2D, 0, GL_R32F, tw, th, 0, GL_RED, GL_FLOAT, texels.data());
+    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    gl.BindTexture(GL_TEXTURE_2D, 0);
+    return t;
+}
+
+analytic::GBuffer with_world_normals(analytic::GBuffer g, const glm::dmat4& view) {
+    const glm::dmat3 to_world = glm::transpose(glm::dmat3(view));
+    for (glm::vec3& n : g.normal) n = glm::vec3(to_world * glm::dvec3(n));
+    return g;
 }
 
 int check_unit_finite(const std::vector<float>& ao, const char* what) {
@@ -65,18 +79,8 @@ int check_unit_finite(const std::vector<float>& ao, const char* what) {
 }
 
 ssao_settings make(uint32_t samples, ssao_blur blur, ssao_rotation rotation, float radius, ssao_method method) {
-    ssao_settings s{};
-    s.size = sizeof s;
-    // The accelerating distribution, as these cases were written for (a
-    // zeroed struct is the DEFAULT preset, which may not use it).
+    ssao_settings s = testscenes::make(samples, blur, rotation);
     s.method = method;
-    s.distribution = SSAO_DISTRIBUTION_ACCELERATING;
-    s.resolution = SSAO_RESOLUTION_FULL;  // full resolution: the CPU formula is per pixel
-    s.sample_count = samples;
-    // DEFAULT meant the depth-aware blur when these cases were written (the
-    // kernel method's own default is now the chapter's box).
-    s.blur = blur == SSAO_BLUR_DEFAULT ? SSAO_BLUR_DEPTH_AWARE : blur;
-    s.rotation = rotation;
     s.radius = radius;
     s.output_format = SSAO_OUTPUT_R16F;
     return s;
@@ -263,8 +267,29 @@ Diff diff(const std::vector<float>& a, const std::vector<float>& b, const std::f
     return d;
 }
 
-analytic::GBuffer crease_gbuffer(const glm::dmat4& proj, ssao_clip_range clip, int w, int h) {
-    return analytic::render(to_view(crease_world(), crease_view()), proj, clip, w, h);
+analytic::Scene crease_scene(double scale, bool boxes) {
+    return to_view(crease_world(scale, boxes), crease_view(scale));
 }
+
+analytic::Scene sky_scene() {
+    analytic::Scene s;
+    s.add_quad({-2, -2, -6}, {3, 0, 0}, {0, 3, 0});
+    s.add_box({0.5, -1.0, -5.0}, {1.5, 0.5, -4.0});
+    s.add_quad({-3, 0.5, -7}, {2, 0, 0}, {0, 0, 2});
+    return s;
+}
+
+analytic::GBuffer crease_gbuffer(const glm::dmat4& proj, ssao_clip_range clip, int w, int h) {
+    return analytic::render(crease_scene(), proj, clip, w, h);
+}
+
+CreaseSetup::CreaseSetup(int w, int h, const glm::dmat4& projection, ssao_clip_range clip)
+    : W(w), H(h), proj(projection), g(crease_gbuffer(projection, clip, w, h)) {}
+
+CreaseReverseZ::CreaseReverseZ()
+    : CreaseSetup(64, 48, analytic::reverse_z(kFov, 64.0 / 48.0, 0.1, 100.0), SSAO_CLIP_ZERO_TO_ONE) {}
+
+CreaseGl::CreaseGl()
+    : CreaseSetup(64, 48, analytic::perspective(kFov, 64.0 / 48.0, 0.1, 100.0), SSAO_CLIP_NEGATIVE_ONE_TO_ONE) {}
 
 }  // namespace hc

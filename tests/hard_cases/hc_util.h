@@ -40,6 +40,20 @@ struct Out {
 Out run(testgl::Fixture& fx, const analytic::GBuffer& g, const glm::dmat4& proj, ssao_clip_range clip,
         const RunOptions& o = {});
 
+// The G-buffer's depth and normals at (x, y) in tw x th textures of the given
+// formats. The texels around it hold geometry-like garbage, a near depth and
+// a skewed normal, so anything read outside the viewport would show.
+testgl::Textures inset_textures(testgl::Fixture& fx, const analytic::GBuffer& g, int x, int y, int tw, int th,
+                                GLenum depth_format = GL_DEPTH_COMPONENT32F, GLenum normal_format = GL_RGBA16F);
+
+// A host output texture, R32F tw x th with nearest filtering, every texel
+// `value` (one AO never takes, so that a texel execute wrote shows).
+GLuint sentinel_texture(GladGLContext& gl, int tw, int th, float value);
+
+// The G-buffer with its normals rotated from view to world space by the
+// inverse of `view` (the rotation part), as a host with world normals holds them.
+analytic::GBuffer with_world_normals(analytic::GBuffer g, const glm::dmat4& view);
+
 // CHECKs that every value is finite and in [0,1]; returns how many were not.
 int check_unit_finite(const std::vector<float>& ao, const char* what = "");
 
@@ -106,9 +120,34 @@ glm::dmat4 crease_view(double scale = 1.0, glm::dvec3 eye_offset = glm::dvec3(0.
 analytic::Scene crease_world(double scale = 1.0, bool boxes = true, glm::dvec3 offset = glm::dvec3(0.0));
 // The scene's quads mapped into view space.
 analytic::Scene to_view(const analytic::Scene& world, const glm::dmat4& view);
-// The crease scene with its boxes, seen from crease_view(), rendered w x h
-// with `proj`: the setup most cases start from.
+// The crease scene (times scale, with or without its boxes) in view space,
+// seen from crease_view(scale).
+analytic::Scene crease_scene(double scale = 1.0, bool boxes = true);
+// Two quads and a box floating in the sky, and a ledge (view space): a scene
+// whose geometry borders the sky everywhere.
+analytic::Scene sky_scene();
+// The crease scene with its boxes rendered w x h with `proj`: the setup most
+// cases start from.
 analytic::GBuffer crease_gbuffer(const glm::dmat4& proj, ssao_clip_range clip, int w, int h);
+
+// The setup most hard cases start from: a fixture and the crease scene's
+// G-buffer, W x H under `proj`. A case declared with TEST_CASE_FIXTURE on one
+// of the setups below sees fx, W, H, proj and g as its own.
+struct CreaseSetup {
+    testgl::Fixture fx;
+    const int W, H;
+    const glm::dmat4 proj;
+    const analytic::GBuffer g;
+    CreaseSetup(int w, int h, const glm::dmat4& projection, ssao_clip_range clip);
+};
+// 64 x 48, reverse-Z [0,1], near 0.1, far 100.
+struct CreaseReverseZ : CreaseSetup {
+    CreaseReverseZ();
+};
+// 64 x 48, GL [-1,1], near 0.1, far 100.
+struct CreaseGl : CreaseSetup {
+    CreaseGl();
+};
 
 // Compares two AO images over a mask: counts and worst difference.
 struct Diff {

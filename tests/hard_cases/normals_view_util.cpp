@@ -1,5 +1,7 @@
 #include "normals_view_util.h"
 
+#include "conventions.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -7,48 +9,33 @@
 namespace nfd {
 
 std::vector<Convention> conventions(double aspect, double hh) {
-    const double n = 0.1, f = 100.0, fov = hc::kFov, t = std::tan(fov / 2);
-    const ssao_clip_range gl = SSAO_CLIP_NEGATIVE_ONE_TO_ONE, zo = SSAO_CLIP_ZERO_TO_ONE;
-    const double hw = hh * aspect;
-    return {
-        {"GL [-1,1] D32F", analytic::perspective(fov, aspect, n, f), gl, GL_DEPTH_COMPONENT32F, false, t},
-        {"GL [-1,1] D24", analytic::perspective(fov, aspect, n, f), gl, GL_DEPTH_COMPONENT24, false, t},
-        {"GL [-1,1] D24S8", analytic::perspective(fov, aspect, n, f), gl, GL_DEPTH24_STENCIL8, false, t},
-        {"GL [-1,1] D16", analytic::perspective(fov, aspect, n, f), gl, GL_DEPTH_COMPONENT16, false, t},
-        {"[0,1] D32F", analytic::perspective_zo(fov, aspect, n, f), zo, GL_DEPTH_COMPONENT32F, false, t},
-        {"reverse-Z [0,1] D32F", analytic::reverse_z(fov, aspect, n, f), zo, GL_DEPTH_COMPONENT32F, false, t},
-        {"reverse-Z [0,1] D32FS8", analytic::reverse_z(fov, aspect, n, f), zo, GL_DEPTH32F_STENCIL8, false, t},
-        {"reverse-Z infinite D32F", analytic::reverse_z_infinite(fov, aspect, n), zo, GL_DEPTH_COMPONENT32F, false, t},
-        {"GL infinite D32F", analytic::infinite(fov, aspect, n), gl, GL_DEPTH_COMPONENT32F, false, t},
-        {"GL infinite D24", analytic::infinite(fov, aspect, n), gl, GL_DEPTH_COMPONENT24, false, t},
-        {"reverse-Z [-1,1] D32F", hc::reverse_z_gl(fov, aspect, n, f), gl, GL_DEPTH_COMPONENT32F, false, t},
-        {"ortho GL [-1,1] D32F", analytic::orthographic(hw, hh, n, f), gl, GL_DEPTH_COMPONENT32F, true, hh},
-        {"ortho GL [-1,1] D16", analytic::orthographic(hw, hh, n, f), gl, GL_DEPTH_COMPONENT16, true, hh},
-        {"ortho [0,1] D32F", hc::ortho_zo(hw, hh, n, f), zo, GL_DEPTH_COMPONENT32F, true, hh},
-        {"ortho reverse [0,1] D32F", hc::ortho_reverse(hw, hh, n, f), zo, GL_DEPTH_COMPONENT32F, true, hh},
-    };
+    const double n = 0.1, f = 100.0;
+    const auto all =
+        hc::perspective_conventions(aspect, n, f,
+                                    {"GL [-1,1] D32F", "GL [-1,1] D24", "GL [-1,1] D24S8", "GL [-1,1] D16",
+                                     "[0,1] D32F", "reverse-Z [0,1] D32F", "reverse-Z [0,1] D32FS8",
+                                     "reverse-Z infinite D32F", "GL infinite D32F", "GL infinite D24",
+                                     "reverse-Z [-1,1] D32F"}) +
+        hc::ortho_conventions(hh * aspect, hh, n, f,
+                              {"ortho GL [-1,1] D32F", "ortho GL [-1,1] D16", "ortho [0,1] D32F",
+                               "ortho reverse [0,1] D32F"});
+    std::vector<Convention> out;
+    for (const hc::Convention& c : all)
+        out.push_back({c.name, c.proj, c.clip, c.format, c.ortho, c.ortho ? hh : std::tan(hc::kFov / 2)});
+    return out;
 }
 
 ViewResult run_view(testgl::Fixture& fx, const analytic::GBuffer& g, const glm::dmat4& proj, ssao_clip_range clip,
                     GLenum depth_format, const ViewOptions& o) {
     ViewResult r;
     const int P = o.pad, W = g.width + 2 * P, H = g.height + 2 * P;
-    // Padding: a near depth and a skewed normal, so that a read outside the
-    // viewport would show in the border pixels' normals.
-    std::vector<float> depth(static_cast<size_t>(W) * H, 0.37f);
-    std::vector<glm::vec3> nrm(depth.size(), glm::vec3(0.6f, -0.8f, 0.0f));
-    const glm::dmat3 to_world = glm::transpose(glm::dmat3(o.view_matrix));
-    for (int y = 0; y < g.height; ++y)
-        for (int x = 0; x < g.width; ++x) {
-            const size_t s = hc::at(x, y, g.width), d = hc::at(x + P, y + P, W);
-            depth[d] = g.depth[s];
-            glm::vec3 n = g.normal[s];
-            if (o.normal_space == SSAO_NORMAL_SPACE_WORLD) n = glm::vec3(to_world * glm::dvec3(n));
-            nrm[d] = n;
-        }
+    // The padding would show in the border pixels' normals if it were read.
+    const testgl::Textures t =
+        hc::inset_textures(fx, o.normal_space == SSAO_NORMAL_SPACE_WORLD ? hc::with_world_normals(g, o.view_matrix) : g,
+                           P, P, W, H, depth_format, o.normal_format);
     auto& gl = fx.gl();
-    const GLuint dt = fx.make_depth(depth_format, W, H, depth);
-    const GLuint nt = o.depth_only ? 0u : fx.make_normals(o.normal_format, W, H, nrm);
+    const GLuint dt = t.depth;
+    const GLuint nt = o.depth_only ? 0u : t.normal;
     GLuint out = 0;
     gl.GenTextures(1, &out);
     gl.BindTexture(GL_TEXTURE_2D, out);
@@ -61,13 +48,10 @@ ViewResult run_view(testgl::Fixture& fx, const analytic::GBuffer& g, const glm::
     fx.settings(s);
     ssao_inputs in = fx.inputs(dt, nt, proj, clip);
     in.normal_space = o.normal_space;
-    in.normal_packing = o.normal_format == GL_RGBA8 ? SSAO_NORMAL_PACKING_UNORM : SSAO_NORMAL_PACKING_SIGNED;
+    in.normal_packing = testgl::packing_of(o.normal_format);
     if (o.normal_space == SSAO_NORMAL_SPACE_WORLD) analytic::to_floats(o.view_matrix, in.view_matrix);
     in.output_texture = out;
-    in.viewport[0] = P;
-    in.viewport[1] = P;
-    in.viewport[2] = g.width;
-    in.viewport[3] = g.height;
+    testgl::set_viewport(in, P, P, g.width, g.height);
     ssao_output res{};
     res.size = sizeof res;
     r.status = fx.api().execute(fx.ctx(), &in, &res);

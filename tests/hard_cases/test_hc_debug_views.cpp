@@ -8,6 +8,7 @@
 // estimators. The GL state the host set is restored and no GL error is raised.
 #include <doctest/doctest.h>
 
+#include "conventions.h"
 #include "hc_util.h"
 
 #include <algorithm>
@@ -38,37 +39,15 @@ Scene wall_and_box(bool box) {
     return s;
 }
 
-// The crease of the other hard cases: a floor meeting a wall, with boxes.
-Scene crease() { return hc::to_view(hc::crease_world(), hc::crease_view()); }
-
-struct Convention {
-    const char* name;
-    glm::dmat4 proj;
-    ssao_clip_range clip;
-    GLenum format;
-};
+using hc::Convention;
 
 std::vector<Convention> conventions(double aspect) {
-    const double n = 0.1, f = 100.0;
-    return {
-        {"GL [-1,1] D32F", analytic::perspective(hc::kFov, aspect, n, f), SSAO_CLIP_NEGATIVE_ONE_TO_ONE, GL_DEPTH_COMPONENT32F},
-        {"GL [-1,1] D24", analytic::perspective(hc::kFov, aspect, n, f), SSAO_CLIP_NEGATIVE_ONE_TO_ONE, GL_DEPTH_COMPONENT24},
-        {"GL [-1,1] D16", analytic::perspective(hc::kFov, aspect, n, f), SSAO_CLIP_NEGATIVE_ONE_TO_ONE, GL_DEPTH_COMPONENT16},
-        {"[0,1] D32F", analytic::perspective_zo(hc::kFov, aspect, n, f), SSAO_CLIP_ZERO_TO_ONE, GL_DEPTH_COMPONENT32F},
-        {"reverse-Z [0,1] D32F", analytic::reverse_z(hc::kFov, aspect, n, f), SSAO_CLIP_ZERO_TO_ONE, GL_DEPTH_COMPONENT32F},
-        {"reverse-Z infinite D32F", analytic::reverse_z_infinite(hc::kFov, aspect, n), SSAO_CLIP_ZERO_TO_ONE, GL_DEPTH_COMPONENT32F},
-        {"GL infinite D32F", analytic::infinite(hc::kFov, aspect, n), SSAO_CLIP_NEGATIVE_ONE_TO_ONE, GL_DEPTH_COMPONENT32F},
-        {"reverse-Z [-1,1] D32F", hc::reverse_z_gl(hc::kFov, aspect, n, f), SSAO_CLIP_NEGATIVE_ONE_TO_ONE, GL_DEPTH_COMPONENT32F},
-        {"ortho GL D32F", analytic::orthographic(4.0, 3.0, 0.5, 60.0), SSAO_CLIP_NEGATIVE_ONE_TO_ONE, GL_DEPTH_COMPONENT32F},
-        {"ortho [0,1] D16", hc::ortho_zo(4.0, 3.0, 0.5, 60.0), SSAO_CLIP_ZERO_TO_ONE, GL_DEPTH_COMPONENT16},
-        {"ortho reverse D32F", hc::ortho_reverse(4.0, 3.0, 0.5, 60.0), SSAO_CLIP_ZERO_TO_ONE, GL_DEPTH_COMPONENT32F},
-    };
-}
-
-hc::Out run(testgl::Fixture& fx, const GBuffer& g, const Convention& c, const hc::RunOptions& base = {}) {
-    hc::RunOptions o = base;
-    o.depth_format = c.format;
-    return hc::run(fx, g, c.proj, c.clip, o);
+    return hc::perspective_conventions(aspect, 0.1, 100.0,
+                                       {"GL [-1,1] D32F", "GL [-1,1] D24", "GL [-1,1] D16", "[0,1] D32F",
+                                        "reverse-Z [0,1] D32F", "reverse-Z infinite D32F", "GL infinite D32F",
+                                        "reverse-Z [-1,1] D32F"}) +
+           hc::ortho_conventions(4.0, 3.0, 0.5, 60.0,
+                                 {"ortho GL [-1,1] D32F", "ortho [0,1] D16", "ortho reverse [0,1] D32F"});
 }
 
 // Pixels at least `margin` pixels from any pixel whose depth differs from
@@ -93,7 +72,7 @@ TEST_CASE("debug views: RAW_AO at full resolution is exactly the output with blu
     HC_EACH_METHOD(m);
     testgl::Fixture fx;
     const int W = 64, H = 48;
-    const Scene scene = crease();
+    const Scene scene = hc::crease_scene();
     for (const Convention& c : conventions(double(W) / H)) {
         const std::string cname = c.name;
         CAPTURE(cname);
@@ -126,7 +105,7 @@ TEST_CASE("debug views: RAW_AO below full resolution shows each block's own grid
     testgl::Fixture fx;
     const int W = 67, H = 41;  // odd: partial blocks on the right and at the top
     const auto proj = analytic::reverse_z(hc::kFov, double(W) / H, 0.1, 100.0);
-    const GBuffer g = analytic::render(crease(), proj, SSAO_CLIP_ZERO_TO_ONE, W, H);
+    const GBuffer g = analytic::render(hc::crease_scene(), proj, SSAO_CLIP_ZERO_TO_ONE, W, H);
     for (ssao_resolution res : {SSAO_RESOLUTION_HALF, SSAO_RESOLUTION_QUARTER}) {
         CAPTURE(res);
         const int scale = res == SSAO_RESOLUTION_HALF ? 2 : 4;
@@ -214,10 +193,7 @@ TEST_CASE("debug views: sky pixels are exactly 1 with each view, every resolutio
     HC_EACH_METHOD(m);
     testgl::Fixture fx;
     const int W = 48, H = 40;
-    Scene scene;  // two quads and a box floating in the sky, and a ledge
-    scene.add_quad({-2, -2, -6}, {3, 0, 0}, {0, 3, 0});
-    scene.add_box({0.5, -1.0, -5.0}, {1.5, 0.5, -4.0});
-    scene.add_quad({-3, 0.5, -7}, {2, 0, 0}, {0, 0, 2});
+    const Scene scene = hc::sky_scene();
     for (const Convention& c : conventions(double(W) / H)) {
         const std::string cname = c.name;
         CAPTURE(cname);
@@ -256,17 +232,10 @@ TEST_CASE("debug views: odd sizes and inset viewports - every viewport pixel wri
         CAPTURE(W);
         CAPTURE(H);
         const auto proj = analytic::reverse_z(hc::kFov, double(W) / H, 0.1, 100.0);
-        const GBuffer g = analytic::render(crease(), proj, SSAO_CLIP_ZERO_TO_ONE, W, H);
+        const GBuffer g = analytic::render(hc::crease_scene(), proj, SSAO_CLIP_ZERO_TO_ONE, W, H);
         const int TW = W + 4, TH = H + 6, ox = 2, oy = 3;
-        std::vector<float> depth(size_t(TW) * TH, 0.37f);
-        std::vector<glm::vec3> nrm(size_t(TW) * TH, glm::vec3(0.6f, -0.8f, 0.0f));
-        for (int y = 0; y < H; ++y)
-            for (int x = 0; x < W; ++x) {
-                depth[hc::at(x + ox, y + oy, TW)] = g.depth[hc::at(x, y, W)];
-                nrm[hc::at(x + ox, y + oy, TW)] = g.normal[hc::at(x, y, W)];
-            }
-        const GLuint dt = fx.make_depth(GL_DEPTH_COMPONENT32F, TW, TH, depth);
-        const GLuint nt = fx.make_normals(GL_RGBA16F, TW, TH, nrm);
+        const testgl::Textures inset = hc::inset_textures(fx, g, ox, oy, TW, TH);
+        const GLuint dt = inset.depth, nt = inset.normal;
         for (ssao_debug_view view : kViews)
             for (ssao_resolution res : kResolutions) {
                 CAPTURE(view);
@@ -275,18 +244,9 @@ TEST_CASE("debug views: odd sizes and inset viewports - every viewport pixel wri
                 // The same G-buffer alone, in the library's own output.
                 const auto alone = hc::run(fx, g, proj, SSAO_CLIP_ZERO_TO_ONE);
                 REQUIRE(alone.status == SSAO_OK);
-                const std::vector<float> sentinel(size_t(TW) * TH, -7.0f);
-                GLuint out = 0;
-                gl.GenTextures(1, &out);
-                gl.BindTexture(GL_TEXTURE_2D, out);
-                gl.TexImage2D(GL_TEXTURE_2D, 0, GL_R32F, TW, TH, 0, GL_RED, GL_FLOAT, sentinel.data());
-                gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-                gl.BindTexture(GL_TEXTURE_2D, 0);
+                const GLuint out = hc::sentinel_texture(gl, TW, TH, -7.0f);
                 ssao_inputs in = fx.inputs(dt, nt, proj, SSAO_CLIP_ZERO_TO_ONE);
-                in.viewport[0] = ox;
-                in.viewport[1] = oy;
-                in.viewport[2] = W;
-                in.viewport[3] = H;
+                testgl::set_viewport(in, ox, oy, W, H);
                 in.output_texture = out;
                 ssao_output o{};
                 o.size = sizeof o;
@@ -320,7 +280,7 @@ TEST_CASE("debug views: the same scene gives the same raw AO in every depth conv
     HC_EACH_METHOD(m);
     testgl::Fixture fx;
     const int W = 64, H = 48;
-    const Scene scene = crease();
+    const Scene scene = hc::crease_scene();
     for (ssao_resolution res : kResolutions) {
         CAPTURE(res);
         const ssao_settings s = fx.settings(make(m, SSAO_BLUR_DEPTH_AWARE, res, SSAO_DEBUG_VIEW_RAW_AO));
@@ -379,7 +339,7 @@ TEST_CASE("debug views: BLUR_WEIGHTS of the depth-aware blur is the product of b
     // The wall and box (weights 0 or 1 across the silhouette, fractional on
     // the box's sides) and the crease (a floor seen at a slant: fractional
     // weights everywhere, a wall, boxes).
-    for (const Scene& scene : {wall_and_box(true), crease()}) {
+    for (const Scene& scene : {wall_and_box(true), hc::crease_scene()}) {
         const GBuffer g = analytic::render(scene, proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, W, H);
         for (uint32_t radius : {2u, 5u}) {
             CAPTURE(radius);

@@ -5,6 +5,7 @@
 // with the depth step, and view depths beyond the half-float range work.
 #include <doctest/doctest.h>
 
+#include "conventions.h"
 #include "cpu_ssao.h"
 #include "hc_util.h"
 #include "projection.h"
@@ -19,38 +20,19 @@ using analytic::Scene;
 
 namespace {
 
-struct Convention {
-    const char* name;
-    glm::dmat4 proj;
-    ssao_clip_range clip;
-    GLenum format;
-    bool ortho, reverse, infinite;
-    double n, f;
-};
+using hc::Convention;
 
 std::vector<Convention> perspective_conventions(double aspect, double n, double f) {
-    return {
-        {"GL [-1,1] D32F", analytic::perspective(hc::kFov, aspect, n, f), SSAO_CLIP_NEGATIVE_ONE_TO_ONE, GL_DEPTH_COMPONENT32F, false, false, false, n, f},
-        {"GL [-1,1] D24", analytic::perspective(hc::kFov, aspect, n, f), SSAO_CLIP_NEGATIVE_ONE_TO_ONE, GL_DEPTH_COMPONENT24, false, false, false, n, f},
-        {"GL [-1,1] D24S8", analytic::perspective(hc::kFov, aspect, n, f), SSAO_CLIP_NEGATIVE_ONE_TO_ONE, GL_DEPTH24_STENCIL8, false, false, false, n, f},
-        {"[0,1] D32F", analytic::perspective_zo(hc::kFov, aspect, n, f), SSAO_CLIP_ZERO_TO_ONE, GL_DEPTH_COMPONENT32F, false, false, false, n, f},
-        {"reverse-Z [0,1] D32F", analytic::reverse_z(hc::kFov, aspect, n, f), SSAO_CLIP_ZERO_TO_ONE, GL_DEPTH_COMPONENT32F, false, true, false, n, f},
-        {"reverse-Z [0,1] D32FS8", analytic::reverse_z(hc::kFov, aspect, n, f), SSAO_CLIP_ZERO_TO_ONE, GL_DEPTH32F_STENCIL8, false, true, false, n, f},
-        {"reverse-Z infinite D32F", analytic::reverse_z_infinite(hc::kFov, aspect, n), SSAO_CLIP_ZERO_TO_ONE, GL_DEPTH_COMPONENT32F, false, true, true, n, INFINITY},
-        {"GL infinite D32F", analytic::infinite(hc::kFov, aspect, n), SSAO_CLIP_NEGATIVE_ONE_TO_ONE, GL_DEPTH_COMPONENT32F, false, false, true, n, INFINITY},
-        {"reverse-Z [-1,1] D32F", hc::reverse_z_gl(hc::kFov, aspect, n, f), SSAO_CLIP_NEGATIVE_ONE_TO_ONE, GL_DEPTH_COMPONENT32F, false, true, false, n, f},
-        {"GL infinite D24", analytic::infinite(hc::kFov, aspect, n), SSAO_CLIP_NEGATIVE_ONE_TO_ONE, GL_DEPTH_COMPONENT24, false, false, true, n, INFINITY},
-    };
+    return hc::perspective_conventions(aspect, n, f,
+                                       {"GL [-1,1] D32F", "GL [-1,1] D24", "GL [-1,1] D24S8", "[0,1] D32F",
+                                        "reverse-Z [0,1] D32F", "reverse-Z [0,1] D32FS8", "reverse-Z infinite D32F",
+                                        "GL infinite D32F", "reverse-Z [-1,1] D32F", "GL infinite D24"});
 }
 
 std::vector<Convention> ortho_conventions(double hw, double hh, double n, double f) {
-    return {
-        {"ortho GL [-1,1] D32F", analytic::orthographic(hw, hh, n, f), SSAO_CLIP_NEGATIVE_ONE_TO_ONE, GL_DEPTH_COMPONENT32F, true, false, false, n, f},
-        {"ortho GL [-1,1] D24", analytic::orthographic(hw, hh, n, f), SSAO_CLIP_NEGATIVE_ONE_TO_ONE, GL_DEPTH_COMPONENT24, true, false, false, n, f},
-        {"ortho GL [-1,1] D16", analytic::orthographic(hw, hh, n, f), SSAO_CLIP_NEGATIVE_ONE_TO_ONE, GL_DEPTH_COMPONENT16, true, false, false, n, f},
-        {"ortho [0,1] D32F", hc::ortho_zo(hw, hh, n, f), SSAO_CLIP_ZERO_TO_ONE, GL_DEPTH_COMPONENT32F, true, false, false, n, f},
-        {"ortho reverse [0,1] D32F", hc::ortho_reverse(hw, hh, n, f), SSAO_CLIP_ZERO_TO_ONE, GL_DEPTH_COMPONENT32F, true, true, false, n, f},
-    };
+    return hc::ortho_conventions(hw, hh, n, f,
+                                 {"ortho GL [-1,1] D32F", "ortho GL [-1,1] D24", "ortho GL [-1,1] D16",
+                                  "ortho [0,1] D32F", "ortho reverse [0,1] D32F"});
 }
 
 void check_frame_info(testgl::Fixture& fx, const Convention& c) {
@@ -81,7 +63,7 @@ TEST_CASE("depth conventions: the same scene gives the same AO in every clip ran
     testgl::Fixture fx;
     const int W = 64, H = 48;
     const double n = 0.1, f = 100.0;
-    const Scene scene = hc::to_view(hc::crease_world(), hc::crease_view());
+    const Scene scene = hc::crease_scene();
     for (ssao_kernel_shape shape : {SSAO_KERNEL_HEMISPHERE, SSAO_KERNEL_SPHERE, SSAO_KERNEL_SEPARABLE}) {
         CAPTURE(shape);
         ssao_settings want = hc::make(16, SSAO_BLUR_NONE, SSAO_ROTATION_HASH, 1.0f, method);
@@ -93,21 +75,13 @@ TEST_CASE("depth conventions: the same scene gives the same AO in every clip ran
             const std::string cname = c.name;
             CAPTURE(cname);
             const GBuffer g = analytic::render(scene, c.proj, c.clip, W, H);
-            hc::RunOptions o;
-            o.depth_format = c.format;
-            const auto r = hc::run(fx, g, c.proj, c.clip, o);
+            const auto r = hc::run(fx, g, c);
             REQUIRE(r.status == SSAO_OK);
             hc::check_unit_finite(r.ao, c.name);
             check_frame_info(fx, c);
             if (ref.empty()) { ref = r.ao; continue; }
-            const auto d = hc::diff(ref, r.ao, {}, 1.0 / s.sample_count);
-            MESSAGE("kernel " << shape << ", " << cname << " vs GL D32F: mean |diff| " << d.mean_abs << ", worst " << d.worst
-                              << ", " << d.over_1e3 << " px > 1e-3, " << d.over_one_sample << " px > one sample, of " << d.compared);
-            // Depth precision only moves samples lying within a few depth steps of
-            // a comparison threshold: at most one sample flips at a pixel, rarely.
-            CHECK(d.mean_abs < 0.004);
-            CHECK(d.over_one_sample <= d.compared / 100);
-            CHECK(d.worst <= 2.0 / s.sample_count + 2e-3);
+            hc::check_same_ao(ref, r.ao, s.sample_count,
+                              "kernel " + std::to_string(shape) + ", " + cname + " vs GL D32F");
         }
     }
     CHECK(fx.gl_errors().empty());
@@ -117,15 +91,13 @@ TEST_CASE("depth conventions: orthographic in [-1,1], [0,1] and reversed give th
     HC_EACH_METHOD(method);
     testgl::Fixture fx;
     const int W = 64, H = 48;
-    const Scene scene = hc::to_view(hc::crease_world(), hc::crease_view());
+    const Scene scene = hc::crease_scene();
     const ssao_settings s = fx.settings(hc::make(16, SSAO_BLUR_NONE, SSAO_ROTATION_HASH, 1.0f, method));
     std::vector<float> ref;
     for (const auto& c : ortho_conventions(4.0, 3.0, 0.5, 60.0)) {
         const std::string cname = c.name; CAPTURE(cname);
         const GBuffer g = analytic::render(scene, c.proj, c.clip, W, H);
-        hc::RunOptions o;
-        o.depth_format = c.format;
-        const auto r = hc::run(fx, g, c.proj, c.clip, o);
+        const auto r = hc::run(fx, g, c);
         REQUIRE(r.status == SSAO_OK);
         hc::check_unit_finite(r.ao, c.name);
         check_frame_info(fx, c);
@@ -137,12 +109,7 @@ TEST_CASE("depth conventions: orthographic in [-1,1], [0,1] and reversed give th
             CHECK(hc::mean(r.ao) > 0.5);
             continue;
         }
-        const auto d = hc::diff(ref, r.ao, {}, 1.0 / s.sample_count);
-        MESSAGE(std::string(c.name) << " vs ortho GL D32F: mean |diff| " << d.mean_abs << ", worst " << d.worst << ", "
-                       << d.over_one_sample << " px > one sample, of " << d.compared);
-        CHECK(d.mean_abs < 0.004);
-        CHECK(d.over_one_sample <= d.compared / 100);
-        CHECK(d.worst <= 2.0 / s.sample_count + 2e-3);
+        hc::check_same_ao(ref, r.ao, s.sample_count, cname + " vs ortho GL D32F");
     }
     CHECK(fx.gl_errors().empty());
 }
@@ -152,7 +119,7 @@ TEST_CASE("depth conventions: an off-centre frustum gives the AO of the matching
     testgl::Fixture fx;
     const int W = 64, H = 48;
     const double n = 0.1, f = 100, b = std::tan(hc::kFov / 2) * n, a = b * W / H;
-    const Scene scene = hc::to_view(hc::crease_world(), hc::crease_view());
+    const Scene scene = hc::crease_scene();
     fx.settings(hc::make(16, SSAO_BLUR_NONE, SSAO_ROTATION_NONE, 0.5f, method));
     const auto full_proj = hc::frustum(-a, a, -b, b, n, f);
     const auto right_proj = hc::frustum(0, a, -b, b, n, f);  // the right half: pixels W/2..W-1
@@ -192,7 +159,7 @@ TEST_CASE("depth conventions: a half-pixel jitter leaves the AO profile across t
     testgl::Fixture fx;
     const int W = 96, H = 96;
     const glm::dmat4 view = hc::crease_view();
-    const Scene scene = hc::to_view(hc::crease_world(1.0, false), view);
+    const Scene scene = hc::crease_scene(1.0, false);
     fx.settings(hc::make(32, SSAO_BLUR_DEFAULT, SSAO_ROTATION_HASH, 1.5f, method));
     const auto proj = analytic::reverse_z(hc::kFov, 1.0, 0.1, 100.0);
     const double radius = 1.5;
@@ -236,7 +203,7 @@ TEST_CASE("reconstruction: view positions rebuilt from float depth and a float m
     // from the float-rounded matrix) against the exact hit, within the depth
     // format's step at the hit (docs/hard-cases.md, the depth-step table) plus float rounding.
     const int W = 40, H = 30;
-    const Scene scene = hc::to_view(hc::crease_world(), hc::crease_view());
+    const Scene scene = hc::crease_scene();
     auto convs = perspective_conventions(double(W) / H, 0.1, 100.0);
     for (auto& c : ortho_conventions(4.0, 3.0, 0.5, 60.0)) convs.push_back(c);
     const double b = std::tan(hc::kFov / 2) * 0.1, a = b * W / H;
@@ -489,7 +456,7 @@ TEST_CASE("depth range: view depths beyond the half-float range (> 65504) give t
     for (const Case& c : cases) {
         const std::string cname = c.name; CAPTURE(cname);
         fx.settings(hc::make(16, SSAO_BLUR_DEFAULT, SSAO_ROTATION_HASH, static_cast<float>(k), method));
-        const GBuffer g = analytic::render(hc::to_view(hc::crease_world(k), hc::crease_view(k)), c.proj, SSAO_CLIP_ZERO_TO_ONE, W, H);
+        const GBuffer g = analytic::render(hc::crease_scene(k), c.proj, SSAO_CLIP_ZERO_TO_ONE, W, H);
         double zmax = 0;
         for (const auto& p : g.position) if (!std::isnan(p.z)) zmax = std::max(zmax, -p.z);
         REQUIRE(zmax > 65504.0 * 4);

@@ -8,6 +8,7 @@
 // textures gives the same AO, odd sizes stay in [0,1].
 #include <doctest/doctest.h>
 
+#include "conventions.h"
 #include "hc_util.h"
 
 #include <algorithm>
@@ -20,25 +21,13 @@ using analytic::Scene;
 
 namespace {
 
-struct Convention {
-    const char* name;
-    glm::dmat4 proj;
-    ssao_clip_range clip;
-    GLenum format;
-};
+using hc::Convention;
 
 std::vector<Convention> conventions(double aspect) {
-    const double n = 0.1, f = 100.0;
-    return {
-        {"GL [-1,1] D32F", analytic::perspective(hc::kFov, aspect, n, f), SSAO_CLIP_NEGATIVE_ONE_TO_ONE, GL_DEPTH_COMPONENT32F},
-        {"GL [-1,1] D24", analytic::perspective(hc::kFov, aspect, n, f), SSAO_CLIP_NEGATIVE_ONE_TO_ONE, GL_DEPTH_COMPONENT24},
-        {"GL [-1,1] D16", analytic::perspective(hc::kFov, aspect, n, f), SSAO_CLIP_NEGATIVE_ONE_TO_ONE, GL_DEPTH_COMPONENT16},
-        {"reverse-Z [0,1] D32F", analytic::reverse_z(hc::kFov, aspect, n, f), SSAO_CLIP_ZERO_TO_ONE, GL_DEPTH_COMPONENT32F},
-        {"reverse-Z infinite D32F", analytic::reverse_z_infinite(hc::kFov, aspect, n), SSAO_CLIP_ZERO_TO_ONE, GL_DEPTH_COMPONENT32F},
-        {"GL infinite D24", analytic::infinite(hc::kFov, aspect, n), SSAO_CLIP_NEGATIVE_ONE_TO_ONE, GL_DEPTH_COMPONENT24},
-        {"ortho GL [-1,1] D32F", analytic::orthographic(4.0, 3.0, 0.5, 60.0), SSAO_CLIP_NEGATIVE_ONE_TO_ONE, GL_DEPTH_COMPONENT32F},
-        {"ortho reverse [0,1] D32F", hc::ortho_reverse(4.0, 3.0, 0.5, 60.0), SSAO_CLIP_ZERO_TO_ONE, GL_DEPTH_COMPONENT32F},
-    };
+    return hc::perspective_conventions(aspect, 0.1, 100.0,
+                                       {"GL [-1,1] D32F", "GL [-1,1] D24", "GL [-1,1] D16", "reverse-Z [0,1] D32F",
+                                        "reverse-Z infinite D32F", "GL infinite D24"}) +
+           hc::ortho_conventions(4.0, 3.0, 0.5, 60.0, {"ortho GL [-1,1] D32F", "ortho reverse [0,1] D32F"});
 }
 
 bool same_bits(float a, float b) { return std::memcmp(&a, &b, sizeof a) == 0; }
@@ -89,23 +78,21 @@ TEST_CASE("fade: before fade_start bit for bit, beyond fade_end exactly 1, linea
     HC_EACH_METHOD(method);
     testgl::Fixture fx;
     const int W = 96, H = 64;
-    const Scene scene = hc::to_view(hc::crease_world(), hc::crease_view());
+    const Scene scene = hc::crease_scene();
     for (const auto& c : conventions(double(W) / H)) {
         const std::string cname = c.name;
         CAPTURE(cname);
         const GBuffer g = analytic::render(scene, c.proj, c.clip, W, H);
-        hc::RunOptions o;
-        o.depth_format = c.format;
         ssao_settings s = hc::make(16, SSAO_BLUR_NONE, SSAO_ROTATION_HASH, 1.0f, method);
         s.output_format = SSAO_OUTPUT_R16F;
         fx.settings(s);
-        const auto plain = hc::run(fx, g, c.proj, c.clip, o);
+        const auto plain = hc::run(fx, g, c);
         REQUIRE(plain.status == SSAO_OK);
         // The crease scene spans view depths of about 2..7 (orthographic: and sky).
         s.fade_start = 3.0f;
         s.fade_end = 5.0f;
         fx.settings(s);
-        const auto faded = hc::run(fx, g, c.proj, c.clip, o);
+        const auto faded = hc::run(fx, g, c);
         REQUIRE(faded.status == SSAO_OK);
         hc::check_unit_finite(faded.ao, c.name);
         // R16F output: each value carries at most half an ulp of 1 (2^-12)
@@ -126,12 +113,8 @@ TEST_CASE("fade: before fade_start bit for bit, beyond fade_end exactly 1, linea
     CHECK(fx.gl_errors().empty());
 }
 
-TEST_CASE("fade: fading from the camera (fade_start 0) and a fade beyond the scene change what they should") {
+TEST_CASE_FIXTURE(hc::CreaseGl, "fade: fading from the camera (fade_start 0) and a fade beyond the scene change what they should") {
     HC_EACH_METHOD(method);
-    testgl::Fixture fx;
-    const int W = 64, H = 48;
-    const glm::dmat4 proj = analytic::perspective(hc::kFov, double(W) / H, 0.1, 100.0);
-    const GBuffer g = hc::crease_gbuffer(proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, W, H);
     ssao_settings s = hc::make(16, SSAO_BLUR_NONE, SSAO_ROTATION_NOISE_4X4, 1.0f, method);
     fx.settings(s);
     const auto plain = hc::run(fx, g, proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE);
@@ -165,7 +148,7 @@ TEST_CASE("fade: fading from the camera (fade_start 0) and a fade beyond the sce
 TEST_CASE("fade: hard cases with the fade on - a viewport inside larger textures, odd sizes, broken normals, half resolution") {
     HC_EACH_METHOD(method);
     testgl::Fixture fx;
-    const Scene scene = hc::to_view(hc::crease_world(), hc::crease_view());
+    const Scene scene = hc::crease_scene();
     ssao_settings s = hc::make(16, SSAO_BLUR_DEPTH_AWARE, SSAO_ROTATION_NOISE_4X4, 1.0f, method);
     s.fade_start = 3.0f;
     s.fade_end = 5.0f;

@@ -7,6 +7,7 @@
 // and no GL error is raised.
 #include <doctest/doctest.h>
 
+#include "conventions.h"
 #include "hc_util.h"
 
 #include <algorithm>
@@ -30,8 +31,6 @@ ssao_settings make(ssao_method method, ssao_resolution res, ssao_blur blur, ssao
 }
 
 std::string method_name(ssao_method m) { return m == SSAO_METHOD_VISIBILITY ? "visibility" : "kernel"; }
-
-Scene crease() { return hc::to_view(hc::crease_world(), hc::crease_view()); }
 
 // A few bindings of the host's that every execute must leave as they were.
 struct HostState {
@@ -97,32 +96,18 @@ Stats compare(const std::vector<float>& a, const std::vector<float>& b, const st
 TEST_CASE("half resolution: the same scene gives the same AO in every depth convention and format") {
     testgl::Fixture fx;
     const int W = 64, H = 48;
-    const double n = 0.1, f = 100.0, aspect = double(W) / H;
-    struct Convention {
-        const char* name;
-        glm::dmat4 proj;
-        ssao_clip_range clip;
-        GLenum format;
-    };
-    const Convention conventions[] = {
-        {"GL [-1,1] D32F", analytic::perspective(hc::kFov, aspect, n, f), SSAO_CLIP_NEGATIVE_ONE_TO_ONE, GL_DEPTH_COMPONENT32F},
-        {"GL [-1,1] D24", analytic::perspective(hc::kFov, aspect, n, f), SSAO_CLIP_NEGATIVE_ONE_TO_ONE, GL_DEPTH_COMPONENT24},
-        {"GL [-1,1] D24S8", analytic::perspective(hc::kFov, aspect, n, f), SSAO_CLIP_NEGATIVE_ONE_TO_ONE, GL_DEPTH24_STENCIL8},
-        {"[0,1] D32F", analytic::perspective_zo(hc::kFov, aspect, n, f), SSAO_CLIP_ZERO_TO_ONE, GL_DEPTH_COMPONENT32F},
-        {"reverse-Z [0,1] D32F", analytic::reverse_z(hc::kFov, aspect, n, f), SSAO_CLIP_ZERO_TO_ONE, GL_DEPTH_COMPONENT32F},
-        {"reverse-Z [0,1] D32FS8", analytic::reverse_z(hc::kFov, aspect, n, f), SSAO_CLIP_ZERO_TO_ONE, GL_DEPTH32F_STENCIL8},
-        {"reverse-Z infinite D32F", analytic::reverse_z_infinite(hc::kFov, aspect, n), SSAO_CLIP_ZERO_TO_ONE, GL_DEPTH_COMPONENT32F},
-        {"GL infinite D32F", analytic::infinite(hc::kFov, aspect, n), SSAO_CLIP_NEGATIVE_ONE_TO_ONE, GL_DEPTH_COMPONENT32F},
-        {"reverse-Z [-1,1] D32F", hc::reverse_z_gl(hc::kFov, aspect, n, f), SSAO_CLIP_NEGATIVE_ONE_TO_ONE, GL_DEPTH_COMPONENT32F},
-    };
-    const Scene scene = crease();
+    const auto conventions = hc::perspective_conventions(
+        double(W) / H, 0.1, 100.0,
+        {"GL [-1,1] D32F", "GL [-1,1] D24", "GL [-1,1] D24S8", "[0,1] D32F", "reverse-Z [0,1] D32F",
+         "reverse-Z [0,1] D32FS8", "reverse-Z infinite D32F", "GL infinite D32F", "reverse-Z [-1,1] D32F"});
+    const Scene scene = hc::crease_scene();
     for (ssao_method method : kMethods)
         for (ssao_resolution res : {SSAO_RESOLUTION_HALF, SSAO_RESOLUTION_QUARTER}) {
             CAPTURE(method);
             CAPTURE(res);
             const ssao_settings s = fx.settings(make(method, res, SSAO_BLUR_NONE, SSAO_ROTATION_HASH, 1.0f));
             std::vector<float> ref;
-            for (const Convention& c : conventions) {
+            for (const hc::Convention& c : conventions) {
                 const std::string cname = c.name;
                 CAPTURE(cname);
                 const GBuffer g = analytic::render(scene, c.proj, c.clip, W, H);
@@ -156,25 +141,15 @@ TEST_CASE("half resolution: the same scene gives the same AO in every depth conv
 TEST_CASE("half resolution: orthographic in [-1,1], [0,1] and reversed, D16 to D32F, give the same AO") {
     testgl::Fixture fx;
     const int W = 64, H = 48;
-    struct Convention {
-        const char* name;
-        glm::dmat4 proj;
-        ssao_clip_range clip;
-        GLenum format;
-    };
-    const Convention conventions[] = {
-        {"ortho GL D32F", analytic::orthographic(4.0, 3.0, 0.5, 60.0), SSAO_CLIP_NEGATIVE_ONE_TO_ONE, GL_DEPTH_COMPONENT32F},
-        {"ortho GL D24", analytic::orthographic(4.0, 3.0, 0.5, 60.0), SSAO_CLIP_NEGATIVE_ONE_TO_ONE, GL_DEPTH_COMPONENT24},
-        {"ortho GL D16", analytic::orthographic(4.0, 3.0, 0.5, 60.0), SSAO_CLIP_NEGATIVE_ONE_TO_ONE, GL_DEPTH_COMPONENT16},
-        {"ortho [0,1] D32F", hc::ortho_zo(4.0, 3.0, 0.5, 60.0), SSAO_CLIP_ZERO_TO_ONE, GL_DEPTH_COMPONENT32F},
-        {"ortho reverse D32F", hc::ortho_reverse(4.0, 3.0, 0.5, 60.0), SSAO_CLIP_ZERO_TO_ONE, GL_DEPTH_COMPONENT32F},
-    };
-    const Scene scene = crease();
+    const auto conventions = hc::ortho_conventions(4.0, 3.0, 0.5, 60.0,
+                                                   {"ortho GL [-1,1] D32F", "ortho GL [-1,1] D24", "ortho GL [-1,1] D16",
+                                                    "ortho [0,1] D32F", "ortho reverse [0,1] D32F"});
+    const Scene scene = hc::crease_scene();
     for (ssao_method method : kMethods) {
         CAPTURE(method);
         const ssao_settings s = fx.settings(make(method, SSAO_RESOLUTION_HALF, SSAO_BLUR_NONE, SSAO_ROTATION_HASH, 1.0f));
         std::vector<float> ref;
-        for (const Convention& c : conventions) {
+        for (const hc::Convention& c : conventions) {
             const std::string cname = c.name;
             CAPTURE(cname);
             const GBuffer g = analytic::render(scene, c.proj, c.clip, W, H);
@@ -201,30 +176,17 @@ TEST_CASE("half resolution: orthographic in [-1,1], [0,1] and reversed, D16 to D
 TEST_CASE("half resolution: sky pixels are exactly 1 and geometry next to the sky keeps its own AO") {
     testgl::Fixture fx;
     const int W = 48, H = 40;
-    Scene scene;  // two quads and a box floating in the sky, and a ledge
-    scene.add_quad({-2, -2, -6}, {3, 0, 0}, {0, 3, 0});
-    scene.add_box({0.5, -1.0, -5.0}, {1.5, 0.5, -4.0});
-    scene.add_quad({-3, 0.5, -7}, {2, 0, 0}, {0, 0, 2});
-    const double aspect = double(W) / H;
-    struct Case {
-        const char* name;
-        glm::dmat4 proj;
-        ssao_clip_range clip;
-        GLenum fmt;
-        bool perspective;
-    };
-    const Case cases[] = {
-        {"GL D24", analytic::perspective(hc::kFov, aspect, 0.1, 100), SSAO_CLIP_NEGATIVE_ONE_TO_ONE, GL_DEPTH_COMPONENT24, true},
-        {"GL D16", analytic::perspective(hc::kFov, aspect, 0.1, 100), SSAO_CLIP_NEGATIVE_ONE_TO_ONE, GL_DEPTH_COMPONENT16, true},
-        {"reverse-Z infinite D32F", analytic::reverse_z_infinite(hc::kFov, aspect, 0.1), SSAO_CLIP_ZERO_TO_ONE, GL_DEPTH_COMPONENT32F, true},
-        {"ortho GL D32F", analytic::orthographic(4, 3.3, 0.1, 50), SSAO_CLIP_NEGATIVE_ONE_TO_ONE, GL_DEPTH_COMPONENT32F, false},
-    };
-    for (const Case& c : cases) {
+    const Scene scene = hc::sky_scene();
+    const auto cases =
+        hc::perspective_conventions(double(W) / H, 0.1, 100.0,
+                                    {"GL [-1,1] D24", "GL [-1,1] D16", "reverse-Z infinite D32F"}) +
+        hc::ortho_conventions(4.0, 3.3, 0.1, 50.0, {"ortho GL [-1,1] D32F"});
+    for (const hc::Convention& c : cases) {
         const std::string cname = c.name;
         CAPTURE(cname);
         const GBuffer g = analytic::render(scene, c.proj, c.clip, W, H);
         hc::RunOptions o;
-        o.depth_format = c.fmt;
+        o.depth_format = c.format;
         for (ssao_method method : kMethods)
             for (ssao_resolution res : {SSAO_RESOLUTION_HALF, SSAO_RESOLUTION_QUARTER})
                 for (ssao_blur blur : {SSAO_BLUR_NONE, SSAO_BLUR_DEPTH_AWARE, SSAO_BLUR_BOX_4X4, SSAO_BLUR_GAUSSIAN})
@@ -255,7 +217,7 @@ TEST_CASE("half resolution: sky pixels are exactly 1 and geometry next to the sk
                         // In perspective the ledge meets the quad in a visible
                         // crease, so geometry is not all 1 (orthographic sees
                         // the ledge edge-on and the box 1 unit > radius in front).
-                        if (c.perspective) CHECK(dark > 0);
+                        if (!c.ortho) CHECK(dark > 0);
                     }
     }
     CHECK(fx.gl_errors().empty());
@@ -265,7 +227,7 @@ TEST_CASE("half resolution: a viewport inside larger textures gives exactly the 
     testgl::Fixture fx;
     const int W = 67, H = 41;  // odd both ways: partial blocks on the right and at the top
     const auto proj = analytic::reverse_z(hc::kFov, double(W) / H, 0.1, 100.0);
-    const GBuffer g = analytic::render(crease(), proj, SSAO_CLIP_ZERO_TO_ONE, W, H);
+    const GBuffer g = analytic::render(hc::crease_scene(), proj, SSAO_CLIP_ZERO_TO_ONE, W, H);
     for (ssao_method method : kMethods)
         for (ssao_resolution res : {SSAO_RESOLUTION_HALF, SSAO_RESOLUTION_QUARTER})
             for (ssao_rotation rot : {SSAO_ROTATION_NOISE_4X4, SSAO_ROTATION_HASH}) {
@@ -301,36 +263,20 @@ TEST_CASE("half resolution: odd sizes, 1x1 and 2x1 - every viewport pixel writte
         CAPTURE(W);
         CAPTURE(H);
         const auto proj = analytic::reverse_z(hc::kFov, double(W) / H, 0.1, 100.0);
-        const GBuffer g = analytic::render(crease(), proj, SSAO_CLIP_ZERO_TO_ONE, W, H);
+        const GBuffer g = analytic::render(hc::crease_scene(), proj, SSAO_CLIP_ZERO_TO_ONE, W, H);
         // The viewport at (2,3) of textures with 2 more texels on each side;
         // the host's output texture holds a sentinel that AO never takes.
         const int TW = W + 4, TH = H + 6, ox = 2, oy = 3;
-        std::vector<float> depth(size_t(TW) * TH, 0.37f);
-        std::vector<glm::vec3> nrm(size_t(TW) * TH, glm::vec3(0.6f, -0.8f, 0.0f));
-        for (int y = 0; y < H; ++y)
-            for (int x = 0; x < W; ++x) {
-                depth[hc::at(x + ox, y + oy, TW)] = g.depth[hc::at(x, y, W)];
-                nrm[hc::at(x + ox, y + oy, TW)] = g.normal[hc::at(x, y, W)];
-            }
-        const GLuint dt = fx.make_depth(GL_DEPTH_COMPONENT32F, TW, TH, depth);
-        const GLuint nt = fx.make_normals(GL_RGBA16F, TW, TH, nrm);
+        const testgl::Textures inset = hc::inset_textures(fx, g, ox, oy, TW, TH);
+        const GLuint dt = inset.depth, nt = inset.normal;
         for (ssao_method method : kMethods)
             for (ssao_resolution res : {SSAO_RESOLUTION_FULL, SSAO_RESOLUTION_HALF, SSAO_RESOLUTION_QUARTER}) {
                 CAPTURE(method);
                 CAPTURE(res);
                 fx.settings(make(method, res, SSAO_BLUR_DEPTH_AWARE, SSAO_ROTATION_NOISE_4X4, 1.0f));
-                const std::vector<float> sentinel(size_t(TW) * TH, -7.0f);
-                GLuint out = 0;
-                gl.GenTextures(1, &out);
-                gl.BindTexture(GL_TEXTURE_2D, out);
-                gl.TexImage2D(GL_TEXTURE_2D, 0, GL_R32F, TW, TH, 0, GL_RED, GL_FLOAT, sentinel.data());
-                gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-                gl.BindTexture(GL_TEXTURE_2D, 0);
+                const GLuint out = hc::sentinel_texture(gl, TW, TH, -7.0f);
                 ssao_inputs in = fx.inputs(dt, nt, proj, SSAO_CLIP_ZERO_TO_ONE);
-                in.viewport[0] = ox;
-                in.viewport[1] = oy;
-                in.viewport[2] = W;
-                in.viewport[3] = H;
+                testgl::set_viewport(in, ox, oy, W, H);
                 in.output_texture = out;
                 ssao_output o{};
                 o.size = sizeof o;
@@ -366,7 +312,7 @@ TEST_CASE("half resolution: on a smooth scene no row or column stands out (no se
     testgl::Fixture fx;
     const int W = 67, H = 41;
     const auto proj = analytic::reverse_z(hc::kFov, double(W) / H, 0.1, 100.0);
-    const GBuffer g = analytic::render(hc::to_view(hc::crease_world(1.0, false), hc::crease_view()), proj,
+    const GBuffer g = analytic::render(hc::crease_scene(1.0, false), proj,
                                        SSAO_CLIP_ZERO_TO_ONE, W, H);
     for (ssao_method method : kMethods) {
         CAPTURE(method);
@@ -405,7 +351,7 @@ TEST_CASE("half resolution: broken normals (zero, NaN, inf, back-facing) stay fi
     testgl::Fixture fx;
     const int W = 64, H = 48;
     const auto proj = analytic::reverse_z(hc::kFov, double(W) / H, 0.1, 100.0);
-    const GBuffer g = analytic::render(crease(), proj, SSAO_CLIP_ZERO_TO_ONE, W, H);
+    const GBuffer g = analytic::render(hc::crease_scene(), proj, SSAO_CLIP_ZERO_TO_ONE, W, H);
     const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
     const glm::vec3 bads[] = {glm::vec3(0.0f), glm::vec3(nan, 0.0f, 1.0f), glm::vec3(inf, 0.0f, 0.0f),
                               glm::vec3(0.0f, 0.0f, -1.0f), glm::vec3(-inf, nan, inf)};
@@ -578,7 +524,7 @@ TEST_CASE("half resolution: the 4x4 rotation noise leaves no fixed pattern at th
     testgl::Fixture fx;
     const int W = 512, H = 256;
     const auto proj = analytic::perspective(hc::kFov, double(W) / H, 0.1, 100.0);
-    const GBuffer g = analytic::render(hc::to_view(hc::crease_world(1.0, false), hc::crease_view()), proj,
+    const GBuffer g = analytic::render(hc::crease_scene(1.0, false), proj,
                                        SSAO_CLIP_NEGATIVE_ONE_TO_ONE, W, H);
     const auto column_spread = [&](const std::vector<float>& ao) {
         double sum[8] = {}, n[8] = {};

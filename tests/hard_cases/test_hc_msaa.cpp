@@ -55,25 +55,15 @@ Inputs make_inputs(testgl::Fixture& fx, const analytic::GBuffer& g, const Conven
     Inputs t;
     t.tw = c.w + c.pad_x + 5;
     t.th = c.h + c.pad_y + 5;
-    std::vector<float> depth(size_t(t.tw) * t.th, 0.37f);
-    std::vector<glm::vec3> normal(size_t(t.tw) * t.th, glm::vec3(0.6f, -0.8f, 0.0f));
-    for (int y = 0; y < c.h; ++y)
-        for (int x = 0; x < c.w; ++x) {
-            depth[size_t(y + c.pad_y) * t.tw + (x + c.pad_x)] = g.depth[size_t(y) * c.w + x];
-            normal[size_t(y + c.pad_y) * t.tw + (x + c.pad_x)] = g.normal[size_t(y) * c.w + x];
-        }
-    t.single = {fx.make_depth(c.depth_format, t.tw, t.th, depth), fx.make_normals(c.normal_format, t.tw, t.th, normal)};
+    t.single = hc::inset_textures(fx, g, c.pad_x, c.pad_y, t.tw, t.th, c.depth_format, c.normal_format);
     t.multi = msaa::make(fx.gl(), {t.single}, t.tw, t.th, 4, c.depth_format, c.normal_format);
     return t;
 }
 
 std::vector<float> run(testgl::Fixture& fx, const Convention& c, GLuint depth, GLuint normal, uint32_t sample) {
     ssao_inputs in = fx.inputs(depth, normal, c.proj, c.clip);
-    in.normal_packing = c.normal_format == GL_RGBA8 ? SSAO_NORMAL_PACKING_UNORM : SSAO_NORMAL_PACKING_SIGNED;
-    in.viewport[0] = c.pad_x;
-    in.viewport[1] = c.pad_y;
-    in.viewport[2] = c.w;
-    in.viewport[3] = c.h;
+    in.normal_packing = testgl::packing_of(c.normal_format);
+    testgl::set_viewport(in, c.pad_x, c.pad_y, c.w, c.h);
     in.sample_index = sample;
     ssao_output out{};
     out.size = sizeof out;

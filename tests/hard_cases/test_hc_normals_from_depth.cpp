@@ -154,7 +154,7 @@ bool resolvable(const GBuffer& g, int x, int y, glm::ivec2 d) {
 
 TEST_CASE("normals from depth: a crease and box silhouettes keep each side's exact normal up to the crease pixel, no smear across") {
     testgl::Fixture fx;
-    const Scene scene = hc::to_view(hc::crease_world(1.0, true), hc::crease_view());
+    const Scene scene = hc::crease_scene();
     for (const auto& c : nfd::conventions(double(kW) / kH, 3.0)) {
         if (hc::format_bits(c.format) != 32) continue;  // the plane test covers the formats
         CAPTURE(c.name);
@@ -220,7 +220,7 @@ ssao_settings at_resolution(ssao_method m, ssao_resolution res, ssao_blur blur, 
 TEST_CASE("normals from depth: the AO from depth alone equals the AO from exact normals (full, half and quarter resolution)") {
     HC_EACH_METHOD(method);
     testgl::Fixture fx;
-    const Scene scene = hc::to_view(hc::crease_world(1.0, true), hc::crease_view());
+    const Scene scene = hc::crease_scene();
     for (const auto& c : nfd::conventions(double(kW) / kH, 3.0)) {
         if (hc::format_bits(c.format) != 32) continue;  // coarser formats: the plane test bounds their normals
         CAPTURE(c.name);
@@ -307,10 +307,7 @@ TEST_CASE("normals from depth, hard cases: a plane tilted 0..80 degrees stays un
 TEST_CASE("normals from depth, hard cases: sky stays exactly 1, odd sizes and a viewport inside larger textures stay finite and in [0,1]") {
     HC_EACH_METHOD(method);
     testgl::Fixture fx;
-    Scene scene;  // quads and a box floating in the sky, and a ledge
-    scene.add_quad({-2, -2, -6}, {3, 0, 0}, {0, 3, 0});
-    scene.add_box({0.5, -1.0, -5.0}, {1.5, 0.5, -4.0});
-    scene.add_quad({-3, 0.5, -7}, {2, 0, 0}, {0, 0, 2});
+    const Scene scene = hc::sky_scene();
     const int sizes[][2] = {{48, 40}, {17, 9}, {1, 1}, {2, 1}, {1, 3}};
     for (const auto& c : nfd::conventions(48.0 / 40.0, 3.3)) {
         CAPTURE(c.name);

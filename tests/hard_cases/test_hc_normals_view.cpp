@@ -18,7 +18,7 @@ namespace {
 constexpr int kW = 48, kH = 40;
 
 GBuffer crease_scene(const glm::dmat4& proj, ssao_clip_range clip) {
-    return analytic::render(hc::to_view(hc::crease_world(1.0, true), hc::crease_view()), proj, clip, kW, kH);
+    return analytic::render(hc::crease_scene(), proj, clip, kW, kH);
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 // cases hold with it on.
 #include <doctest/doctest.h>
 
+#include "conventions.h"
 #include "hc_util.h"
 
 #include <algorithm>
@@ -66,7 +67,7 @@ TEST_CASE("radius in pixels: orthographic - every pixel gets the view-unit radiu
     HC_EACH_METHOD(method);
     testgl::Fixture fx;
     const int W = 64, H = 48;
-    const Scene scene = hc::to_view(hc::crease_world(), hc::crease_view());
+    const Scene scene = hc::crease_scene();
     const double hw = 4.0, hh = 3.0;  // 0.125 view units per pixel both ways
     struct C { const char* name; glm::dmat4 proj; ssao_clip_range clip; };
     const C cases[] = {
@@ -135,12 +136,8 @@ TEST_CASE("radius in pixels: perspective, off-centre, reverse-Z infinite - a fro
     CHECK(fx.gl_errors().empty());
 }
 
-TEST_CASE("radius in pixels: the clamp - where N pixels span more than `radius` the AO is the plain run's bit for bit") {
+TEST_CASE_FIXTURE(hc::CreaseGl, "radius in pixels: the clamp - where N pixels span more than `radius` the AO is the plain run's bit for bit") {
     HC_EACH_METHOD(method);
-    testgl::Fixture fx;
-    const int W = 64, H = 48;
-    const glm::dmat4 proj = analytic::perspective(hc::kFov, double(W) / H, 0.1, 100.0);
-    const GBuffer g = hc::crease_gbuffer(proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, W, H);
     ssao_settings s = base(method);
     s.radius = 1.0f, s.bias = 0.025f, s.thickness = 1.0f;
     fx.settings(s);
@@ -205,28 +202,21 @@ TEST_CASE("radius in pixels: hard cases with it on - every depth convention alik
     testgl::Fixture fx;
     const int W = 64, H = 48;
     const double aspect = double(W) / H, n = 0.1, f = 100.0;
-    const Scene scene = hc::to_view(hc::crease_world(), hc::crease_view());
-    struct C { const char* name; glm::dmat4 proj; ssao_clip_range clip; GLenum format; };
-    const C cases[] = {
-        {"GL [-1,1] D32F", analytic::perspective(hc::kFov, aspect, n, f), SSAO_CLIP_NEGATIVE_ONE_TO_ONE, GL_DEPTH_COMPONENT32F},
-        {"GL [-1,1] D24", analytic::perspective(hc::kFov, aspect, n, f), SSAO_CLIP_NEGATIVE_ONE_TO_ONE, GL_DEPTH_COMPONENT24},
-        {"[0,1] D32F", analytic::perspective_zo(hc::kFov, aspect, n, f), SSAO_CLIP_ZERO_TO_ONE, GL_DEPTH_COMPONENT32F},
-        {"reverse-Z [0,1] D32F", analytic::reverse_z(hc::kFov, aspect, n, f), SSAO_CLIP_ZERO_TO_ONE, GL_DEPTH_COMPONENT32F},
-        {"reverse-Z infinite D32F", analytic::reverse_z_infinite(hc::kFov, aspect, n), SSAO_CLIP_ZERO_TO_ONE, GL_DEPTH_COMPONENT32F},
-        {"GL infinite D24", analytic::infinite(hc::kFov, aspect, n), SSAO_CLIP_NEGATIVE_ONE_TO_ONE, GL_DEPTH_COMPONENT24},
-        {"reverse-Z [-1,1] D32F", hc::reverse_z_gl(hc::kFov, aspect, n, f), SSAO_CLIP_NEGATIVE_ONE_TO_ONE, GL_DEPTH_COMPONENT32F},
-    };
+    const Scene scene = hc::crease_scene();
+    const auto cases = hc::perspective_conventions(aspect, n, f,
+                                                   {"GL [-1,1] D32F", "GL [-1,1] D24", "[0,1] D32F",
+                                                    "reverse-Z [0,1] D32F", "reverse-Z infinite D32F",
+                                                    "GL infinite D24", "reverse-Z [-1,1] D32F"});
     ssao_settings s = hc::make(16, SSAO_BLUR_NONE, SSAO_ROTATION_HASH, 2.0f, method);
     s.radius_pixels = 10.0f;
     fx.settings(s);
     std::vector<float> ref;
-    for (const C& c : cases) {
+    for (const hc::Convention& c : cases) {
         const std::string cname = c.name;
         CAPTURE(cname);
         const GBuffer g = analytic::render(scene, c.proj, c.clip, W, H);
         hc::RunOptions o;
-        o.depth_format = c.format;
-        const auto r = hc::run(fx, g, c.proj, c.clip, o);
+        const auto r = hc::run(fx, g, c, o);
         REQUIRE(r.status == SSAO_OK);
         hc::check_unit_finite(r.ao, c.name);
         for (int y = 0; y < H; ++y)
@@ -237,17 +227,12 @@ TEST_CASE("radius in pixels: hard cases with it on - every depth convention alik
             CHECK(hc::mean(r.ao) < 0.98);
             // A viewport inside larger textures: exactly the same AO.
             o.pad_x = 3, o.pad_y = 5, o.pad_right = 4, o.pad_top = 1;
-            const auto inside = hc::run(fx, g, c.proj, c.clip, o);
+            const auto inside = hc::run(fx, g, c, o);
             REQUIRE(inside.status == SSAO_OK);
             CHECK(std::memcmp(inside.ao.data(), r.ao.data(), r.ao.size() * sizeof(float)) == 0);
             continue;
         }
-        const auto d = hc::diff(ref, r.ao, {}, 1.0 / s.sample_count);
-        MESSAGE(cname << " vs GL D32F: mean |diff| " << d.mean_abs << ", worst " << d.worst << ", "
-                      << d.over_one_sample << " px > one sample, of " << d.compared);
-        CHECK(d.mean_abs < 0.004);
-        CHECK(d.over_one_sample <= d.compared / 100);
-        CHECK(d.worst <= 2.0 / s.sample_count + 2e-3);
+        hc::check_same_ao(ref, r.ao, s.sample_count, cname + " vs GL D32F");
     }
     // A hundredth of a pixel: the radius goes to 0 and so does the occlusion.
     s.radius_pixels = 0.01f;

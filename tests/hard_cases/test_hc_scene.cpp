@@ -3,6 +3,7 @@
 #include <doctest/doctest.h>
 
 #include "cpu_ssao.h"
+#include "conventions.h"
 #include "hc_util.h"
 
 #include <algorithm>
@@ -75,7 +76,7 @@ TEST_CASE("scale: the scene modelled 1000 times larger with a 1000 times larger 
             const auto proj = c.reverse ? analytic::reverse_z(hc::kFov, double(W) / H, n, f)
                                         : analytic::perspective(hc::kFov, double(W) / H, n, f);
             fx.settings(hc::make(16, SSAO_BLUR_DEFAULT, SSAO_ROTATION_NOISE_4X4, static_cast<float>(1.0 * k), method));
-            const GBuffer g = analytic::render(hc::to_view(hc::crease_world(k), hc::crease_view(k)), proj, c.clip, W, H);
+            const GBuffer g = analytic::render(hc::crease_scene(k), proj, c.clip, W, H);
             hc::RunOptions o;
             o.depth_format = c.fmt;
             const auto r = hc::run(fx, g, proj, c.clip, o);
@@ -331,7 +332,7 @@ TEST_CASE("screen borders: panning the projection by whole pixels shifts the AO 
     testgl::Fixture fx;
     const int W = 64, H = 48;
     const auto proj = analytic::perspective(hc::kFov, double(W) / H, 0.1, 100.0);
-    const Scene scene = hc::to_view(hc::crease_world(), hc::crease_view());
+    const Scene scene = hc::crease_scene();
     const GBuffer g0 = analytic::render(scene, proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, W, H);
     struct Case { ssao_rotation rot; int kx, ky; };
     // NONE: any shift. NOISE_4X4 tiles from the viewport's corner: only shifts
@@ -378,32 +379,21 @@ TEST_CASE("sky: far-plane pixels output exactly 1 in every convention and do not
     HC_EACH_METHOD(method);
     testgl::Fixture fx;
     const int W = 48, H = 40;
-    Scene scene;  // two quads and a box floating in the sky, and a corner
-    scene.add_quad({-2, -2, -6}, {3, 0, 0}, {0, 3, 0});
-    scene.add_box({0.5, -1.0, -5.0}, {1.5, 0.5, -4.0});
-    scene.add_quad({-3, 0.5, -7}, {2, 0, 0}, {0, 0, 2});
-    struct Case { const char* name; glm::dmat4 proj; ssao_clip_range clip; GLenum fmt; };
-    const double aspect = double(W) / H;
-    const Case cases[] = {
-        {"GL D24", analytic::perspective(hc::kFov, aspect, 0.1, 100), SSAO_CLIP_NEGATIVE_ONE_TO_ONE, GL_DEPTH_COMPONENT24},
-        {"GL D16", analytic::perspective(hc::kFov, aspect, 0.1, 100), SSAO_CLIP_NEGATIVE_ONE_TO_ONE, GL_DEPTH_COMPONENT16},
-        {"[0,1] D32F", analytic::perspective_zo(hc::kFov, aspect, 0.1, 100), SSAO_CLIP_ZERO_TO_ONE, GL_DEPTH_COMPONENT32F},
-        {"reverse-Z D32F", analytic::reverse_z(hc::kFov, aspect, 0.1, 100), SSAO_CLIP_ZERO_TO_ONE, GL_DEPTH_COMPONENT32F},
-        {"reverse-Z infinite D32F", analytic::reverse_z_infinite(hc::kFov, aspect, 0.1), SSAO_CLIP_ZERO_TO_ONE, GL_DEPTH_COMPONENT32F},
-        {"GL infinite D24S8", analytic::infinite(hc::kFov, aspect, 0.1), SSAO_CLIP_NEGATIVE_ONE_TO_ONE, GL_DEPTH24_STENCIL8},
-        {"ortho GL D32F", analytic::orthographic(4, 3.3, 0.1, 50), SSAO_CLIP_NEGATIVE_ONE_TO_ONE, GL_DEPTH_COMPONENT32F},
-    };
-    for (const Case& c : cases) {
+    const Scene scene = hc::sky_scene();
+    const auto cases =
+        hc::perspective_conventions(double(W) / H, 0.1, 100.0,
+                                    {"GL [-1,1] D24", "GL [-1,1] D16", "[0,1] D32F", "reverse-Z [0,1] D32F",
+                                     "reverse-Z infinite D32F", "GL infinite D24S8"}) +
+        hc::ortho_conventions(4.0, 3.3, 0.1, 50.0, {"ortho GL [-1,1] D32F"});
+    for (const hc::Convention& c : cases) {
         const std::string cname = c.name;
         CAPTURE(cname);
         const GBuffer g = analytic::render(scene, c.proj, c.clip, W, H);
         int sky = 0;
         for (int i = 0; i < W * H; ++i) sky += g.sky(i % W, i / W);
         REQUIRE(sky > W * H / 4);
-        hc::RunOptions o;
-        o.depth_format = c.fmt;
         fx.settings(hc::make(16, SSAO_BLUR_NONE, SSAO_ROTATION_HASH, 0.8f, method));
-        const auto raw = hc::run(fx, g, c.proj, c.clip, o);
+        const auto raw = hc::run(fx, g, c);
         REQUIRE(raw.status == SSAO_OK);
         for (ssao_output_format of : {SSAO_OUTPUT_R8, SSAO_OUTPUT_R16F})
             for (ssao_blur blur : {SSAO_BLUR_DEPTH_AWARE, SSAO_BLUR_GAUSSIAN, SSAO_BLUR_BOX_4X4}) {
@@ -413,7 +403,7 @@ TEST_CASE("sky: far-plane pixels output exactly 1 in every convention and do not
                 s.output_format = of;
                 s.blur_radius = 3;
                 fx.settings(s);
-                const auto r = hc::run(fx, g, c.proj, c.clip, o);
+                const auto r = hc::run(fx, g, c);
                 REQUIRE(r.status == SSAO_OK);
                 hc::check_unit_finite(r.ao, c.name);
                 int sky_not_one = 0, darkened = 0;
@@ -439,12 +429,8 @@ TEST_CASE("sky: far-plane pixels output exactly 1 in every convention and do not
     CHECK(fx.gl_errors().empty());
 }
 
-TEST_CASE("normals: zero, NaN, infinite, non-unit and back-facing normals stay finite and in [0,1] and spread no further than the blur") {
+TEST_CASE_FIXTURE(hc::CreaseReverseZ, "normals: zero, NaN, infinite, non-unit and back-facing normals stay finite and in [0,1] and spread no further than the blur") {
     HC_EACH_METHOD(method);
-    testgl::Fixture fx;
-    const int W = 64, H = 48;
-    const auto proj = analytic::reverse_z(hc::kFov, double(W) / H, 0.1, 100.0);
-    const GBuffer g = hc::crease_gbuffer(proj, SSAO_CLIP_ZERO_TO_ONE, W, H);
     const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
     struct Bad { const char* name; std::function<glm::vec3(glm::vec3)> make; bool same_ao; };
     const Bad bads[] = {
@@ -528,12 +514,8 @@ TEST_CASE("normals: zero, NaN, infinite, non-unit and back-facing normals stay f
     CHECK(fx.gl_errors().empty());
 }
 
-TEST_CASE("radius: as the radius goes to 0 the AO goes to 1 monotonically - a huge radius stays finite and fast") {
+TEST_CASE_FIXTURE(hc::CreaseGl, "radius: as the radius goes to 0 the AO goes to 1 monotonically - a huge radius stays finite and fast") {
     HC_EACH_METHOD(method);
-    testgl::Fixture fx;
-    const int W = 64, H = 48;
-    const auto proj = analytic::perspective(hc::kFov, double(W) / H, 0.1, 100.0);
-    const GBuffer g = hc::crease_gbuffer(proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, W, H);
     double previous = -1;
     std::vector<float> prev_ao;
     for (double radius : {4.0, 2.0, 1.0, 0.5, 0.25, 0.1, 0.03, 0.01, 1e-3, 1e-4}) {
@@ -578,7 +560,7 @@ TEST_CASE("radius: the wall case is non-increasing in the radius") {
     const int W = 96, H = 72;
     const glm::dmat4 view = hc::crease_view();
     const auto proj = analytic::perspective(hc::kFov, double(W) / H, 0.1, 100.0);
-    const GBuffer g = analytic::render(hc::to_view(hc::crease_world(1.0, false), view), proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, W, H);
+    const GBuffer g = analytic::render(hc::crease_scene(1.0, false), proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, W, H);
     std::vector<double> prev;
     for (double radius : {0.25, 0.5, 1.0, 1.5, 2.0, 3.0}) {
         CAPTURE(radius);
@@ -717,12 +699,8 @@ TEST_CASE("sizes: swapping width and height with the camera rolled 90 degrees ro
     CHECK(fx.gl_errors().empty());
 }
 
-TEST_CASE("float16 inputs: RGBA16F and RGB16F normals give the AO of RGBA32F normals - R16F output matches R8") {
+TEST_CASE_FIXTURE(hc::CreaseReverseZ, "float16 inputs: RGBA16F and RGB16F normals give the AO of RGBA32F normals - R16F output matches R8") {
     HC_EACH_METHOD(method);
-    testgl::Fixture fx;
-    const int W = 64, H = 48;
-    const auto proj = analytic::reverse_z(hc::kFov, double(W) / H, 0.1, 100.0);
-    const GBuffer g = hc::crease_gbuffer(proj, SSAO_CLIP_ZERO_TO_ONE, W, H);
     fx.settings(hc::make(16, SSAO_BLUR_NONE, SSAO_ROTATION_HASH, 1.0f, method));
     hc::RunOptions o;
     o.normal_format = GL_RGBA32F;
@@ -754,15 +732,11 @@ TEST_CASE("float16 inputs: RGBA16F and RGB16F normals give the AO of RGBA32F nor
     CHECK(fx.gl_errors().empty());
 }
 
-TEST_CASE("normals: a huge but finite normal (x 1e20, RGBA32F) is the same direction as the unit one") {
+TEST_CASE_FIXTURE(hc::CreaseReverseZ, "normals: a huge but finite normal (x 1e20, RGBA32F) is the same direction as the unit one") {
     // Finding F2: dot(n, n) overflows to +inf for |n| > ~1.8e19, and the
     // shader then treats the normal as broken (falls back to the direction
     // towards the camera) instead of normalising it.
     HC_EACH_METHOD(method);
-    testgl::Fixture fx;
-    const int W = 64, H = 48;
-    const auto proj = analytic::reverse_z(hc::kFov, double(W) / H, 0.1, 100.0);
-    const GBuffer g = hc::crease_gbuffer(proj, SSAO_CLIP_ZERO_TO_ONE, W, H);
     fx.settings(hc::make(16, SSAO_BLUR_NONE, SSAO_ROTATION_HASH, 1.0f, method));
     hc::RunOptions o;
     o.normal_format = GL_RGBA32F;
@@ -782,16 +756,12 @@ TEST_CASE("normals: a huge but finite normal (x 1e20, RGBA32F) is the same direc
     CHECK(fx.gl_errors().empty());
 }
 
-TEST_CASE("depth: NaN, infinite and out-of-range values in a D32F input stay finite, in [0,1] and contained") {
+TEST_CASE_FIXTURE(hc::CreaseReverseZ, "depth: NaN, infinite and out-of-range values in a D32F input stay finite, in [0,1] and contained") {
     // A float depth buffer can hold anything the host writes (or uploads).
     // Whatever GL keeps of such values, the output must stay finite and in
     // range, and pixels farther than the kernel footprint + blur radius from
     // the bad ones must be unchanged.
     HC_EACH_METHOD(method);
-    testgl::Fixture fx;
-    const int W = 64, H = 48;
-    const auto proj = analytic::reverse_z(hc::kFov, double(W) / H, 0.1, 100.0);
-    const GBuffer g = hc::crease_gbuffer(proj, SSAO_CLIP_ZERO_TO_ONE, W, H);
     const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
     for (ssao_blur blur : {SSAO_BLUR_NONE, SSAO_BLUR_DEPTH_AWARE, SSAO_BLUR_GAUSSIAN, SSAO_BLUR_BOX_4X4}) {
         ssao_settings s = hc::make(16, blur, SSAO_ROTATION_HASH, 0.5f, method);
@@ -825,15 +795,11 @@ TEST_CASE("depth: NaN, infinite and out-of-range values in a D32F input stay fin
     CHECK(fx.gl_errors().empty());
 }
 
-TEST_CASE("normals: every broken normal (zero, NaN in any component, inf) takes the same documented fallback") {
+TEST_CASE_FIXTURE(hc::CreaseReverseZ, "normals: every broken normal (zero, NaN in any component, inf) takes the same documented fallback") {
     // ao.frag: "a broken normal (zero, NaN, inf) falls back to the direction
     // towards the camera". Whole-image runs, RGBA32F, no blur: each kind of
     // broken normal must give the AO of the all-zero normal buffer.
     HC_EACH_METHOD(method);
-    testgl::Fixture fx;
-    const int W = 64, H = 48;
-    const auto proj = analytic::reverse_z(hc::kFov, double(W) / H, 0.1, 100.0);
-    const GBuffer g = hc::crease_gbuffer(proj, SSAO_CLIP_ZERO_TO_ONE, W, H);
     fx.settings(hc::make(16, SSAO_BLUR_NONE, SSAO_ROTATION_HASH, 1.0f, method));
     hc::RunOptions o;
     o.normal_format = GL_RGBA32F;

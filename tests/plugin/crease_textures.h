@@ -1,5 +1,6 @@
-// crease_textures.h - the crease scene's G-buffer as textures on the fixture's
-// (current) context, and the inputs that hand them to the library.
+// crease_textures.h - the crease scene's G-buffer (size x size, 60-degree
+// perspective, GL clip range) as textures on the fixture's (current) context,
+// and the inputs that hand them to the library.
 #pragma once
 
 #include "gl_fixture.h"
@@ -8,13 +9,15 @@
 namespace testscenes {
 
 struct CreaseTextures {
+    glm::dmat4 proj = analytic::perspective(kFov, 1.0, 0.1, 100.0);
+    analytic::GBuffer g;
     GLuint depth = 0, normal = 0;
     ssao_inputs in{};
-    CreaseTextures(testgl::Fixture& fx, int size) {
-        const auto proj = analytic::perspective(kFov, 1.0, 0.1, 100.0);
-        const analytic::GBuffer g = analytic::render(crease_scene(), proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, size, size);
-        depth = fx.make_depth(GL_DEPTH_COMPONENT32F, size, size, g.depth);
-        normal = fx.make_normals(GL_RGBA16F, size, size, g.normal);
+    explicit CreaseTextures(testgl::Fixture& fx, int size = 32)
+        : g(analytic::render(crease_scene(), proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, size, size)) {
+        const testgl::Textures t = fx.upload(g);
+        depth = t.depth;
+        normal = t.normal;
         in = fx.inputs(depth, normal, proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE);
     }
 };

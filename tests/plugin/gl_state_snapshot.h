@@ -206,4 +206,17 @@ inline Snapshot snapshot(GladGLContext& gl, int units = 4) {
     return s;
 }
 
+// The entries of `before` that `after` lacks or holds another value for, as
+// "name before -> after; ..." (empty when the state was kept).
+inline std::string changed_state(const Snapshot& before, const Snapshot& after) {
+    std::string changed;
+    for (const auto& entry : before) {
+        const auto it = after.find(entry.first);
+        if (it != after.end() && it->second == entry.second) continue;
+        changed += entry.first + " " + std::to_string(entry.second) + " -> " +
+                   (it == after.end() ? std::string("(missing)") : std::to_string(it->second)) + "; ";
+    }
+    return changed;
+}
+
 }  // namespace testgl

@@ -6,6 +6,7 @@
 #include <doctest/doctest.h>
 
 #include "debug_groups.h"
+#include "crease_textures.h"
 #include "gl_fixture.h"
 #include "test_scenes.h"
 
@@ -14,10 +15,7 @@
 #include <string>
 #include <vector>
 
-using analytic::GBuffer;
 using testgl::DebugGroupLog;
-using testscenes::crease_scene;
-using testscenes::kFov;
 using testscenes::make;
 
 namespace {
@@ -49,20 +47,7 @@ std::vector<std::string> names_of(const ssao_timings& t) {
     return out;
 }
 
-struct Inputs {
-    GBuffer g;
-    glm::dmat4 proj;
-    GLuint depth = 0, normal = 0;
-    ssao_inputs in{};
-    explicit Inputs(testgl::Fixture& fx, int size = 32)
-        : g(analytic::render(crease_scene(), analytic::perspective(kFov, 1.0, 0.1, 100.0),
-                             SSAO_CLIP_NEGATIVE_ONE_TO_ONE, size, size)),
-          proj(analytic::perspective(kFov, 1.0, 0.1, 100.0)) {
-        depth = fx.make_depth(GL_DEPTH_COMPONENT32F, g.width, g.height, g.depth);
-        normal = fx.make_normals(GL_RGBA16F, g.width, g.height, g.normal);
-        in = fx.inputs(depth, normal, proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE);
-    }
-};
+using Inputs = testscenes::CreaseTextures;
 
 }  // namespace
 

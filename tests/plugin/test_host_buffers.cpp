@@ -5,6 +5,7 @@
 // timings become available, and the AO is the AO without the binding.
 #include <doctest/doctest.h>
 
+#include "crease_textures.h"
 #include "gl_fixture.h"
 #include "gl_state_snapshot.h"
 #include "test_scenes.h"
@@ -12,8 +13,6 @@
 #include <string>
 #include <vector>
 
-using testscenes::crease_scene;
-using testscenes::kFov;
 using testscenes::make;
 
 namespace {
@@ -49,11 +48,7 @@ const Binding kBindings[] = {
 TEST_CASE("host buffers at every binding point: no GL error, state kept, timings available, AO unchanged") {
     testgl::Fixture fx;
     auto& gl = fx.gl();
-    const auto proj = analytic::perspective(kFov, 1.0, 0.1, 100.0);
-    const analytic::GBuffer g = analytic::render(crease_scene(), proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, kSize, kSize);
-    const GLuint depth = fx.make_depth(GL_DEPTH_COMPONENT32F, kSize, kSize, g.depth);
-    const GLuint normal = fx.make_normals(GL_RGBA16F, kSize, kSize, g.normal);
-    const ssao_inputs in = fx.inputs(depth, normal, proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE);
+    const ssao_inputs in = testscenes::CreaseTextures(fx, kSize).in;
     GLint major = 0, minor = 0;
     gl.GetIntegerv(GL_MAJOR_VERSION, &major);
     gl.GetIntegerv(GL_MINOR_VERSION, &minor);
@@ -105,11 +100,7 @@ TEST_CASE("host buffers at every binding point: no GL error, state kept, timings
         CHECK(t.total_ms > 0.0);
         executes += kFrames;
 
-        const testgl::Snapshot after = testgl::snapshot(gl);
-        for (const auto& entry : before) {
-            CAPTURE(entry.first);
-            CHECK(after.at(entry.first) == entry.second);
-        }
+        CHECK(testgl::changed_state(before, testgl::snapshot(gl)) == "");
         for (const std::string& e : fx.gl_errors()) MESSAGE(e);
         CHECK(fx.gl_errors().empty());
 

@@ -55,6 +55,18 @@ ssao_settings settings_for(ssao_method method, ssao_resolution resolution) {
     return s;
 }
 
+// The crease and the floor scene, each alone and together in 4x textures
+// whose samples 0 and 2 hold the crease, 1 and 3 the floor.
+struct TwoScenes {
+    glm::dmat4 proj = projection();
+    msaa::Textures alone[2], ms;
+    explicit TwoScenes(testgl::Fixture& fx) {
+        alone[0] = fx.upload(analytic::render(crease_scene(), proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, kW, kH));
+        alone[1] = fx.upload(analytic::render(floor_scene(), proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, kW, kH));
+        ms = msaa::make(fx.gl(), {alone[0], alone[1]}, kW, kH, 4, GL_DEPTH_COMPONENT32F, GL_RGBA16F);
+    }
+};
+
 struct Run {
     ssao_status status = SSAO_OK;
     std::vector<float> ao;
@@ -80,8 +92,7 @@ TEST_CASE("4x MSAA inputs whose samples equal the single-sample G-buffer give it
     const GBuffer g = analytic::render(crease_scene(), proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, kW, kH);
     for (GLenum depth_format : {GLenum(GL_DEPTH_COMPONENT32F), GLenum(GL_DEPTH24_STENCIL8), GLenum(GL_DEPTH_COMPONENT16)}) {
         CAPTURE(depth_format);
-        const msaa::Textures single{fx.make_depth(depth_format, kW, kH, g.depth),
-                                    fx.make_normals(GL_RGBA16F, kW, kH, g.normal)};
+        const msaa::Textures single = fx.upload(g, depth_format);
         const msaa::Textures ms = msaa::make(gl, {single}, kW, kH, 4, depth_format, GL_RGBA16F);
         for (ssao_method method : {SSAO_METHOD_KERNEL, SSAO_METHOD_VISIBILITY})
             for (ssao_resolution res : {SSAO_RESOLUTION_FULL, SSAO_RESOLUTION_HALF, SSAO_RESOLUTION_QUARTER}) {
@@ -126,14 +137,9 @@ TEST_CASE("4x MSAA depth without a normal texture: each sample_index gives its o
     // 3 the floor, so a neighbour read from another sample would show.
     testgl::Fixture fx;
     auto& gl = fx.gl();
-    const auto proj = projection();
-    const GBuffer a = analytic::render(crease_scene(), proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, kW, kH);
-    const GBuffer b = analytic::render(floor_scene(), proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, kW, kH);
-    const msaa::Textures ta{fx.make_depth(GL_DEPTH_COMPONENT32F, kW, kH, a.depth),
-                            fx.make_normals(GL_RGBA16F, kW, kH, a.normal)};
-    const msaa::Textures tb{fx.make_depth(GL_DEPTH_COMPONENT32F, kW, kH, b.depth),
-                            fx.make_normals(GL_RGBA16F, kW, kH, b.normal)};
-    const msaa::Textures ms = msaa::make(gl, {ta, tb}, kW, kH, 4, GL_DEPTH_COMPONENT32F, GL_RGBA16F);
+    const TwoScenes two(fx);
+    const glm::dmat4& proj = two.proj;
+    const msaa::Textures &ta = two.alone[0], &tb = two.alone[1], &ms = two.ms;
     for (ssao_method method : {SSAO_METHOD_KERNEL, SSAO_METHOD_VISIBILITY})
         for (ssao_resolution res : {SSAO_RESOLUTION_FULL, SSAO_RESOLUTION_HALF}) {
             CAPTURE(method);
@@ -162,16 +168,9 @@ TEST_CASE("4x MSAA depth without a normal texture: each sample_index gives its o
 
 TEST_CASE("sample_index picks the sample: samples holding two different scenes give each scene's AO") {
     testgl::Fixture fx;
-    auto& gl = fx.gl();
-    const auto proj = projection();
-    const GBuffer a = analytic::render(crease_scene(), proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, kW, kH);
-    const GBuffer b = analytic::render(floor_scene(), proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, kW, kH);
-    const msaa::Textures ta{fx.make_depth(GL_DEPTH_COMPONENT32F, kW, kH, a.depth),
-                            fx.make_normals(GL_RGBA16F, kW, kH, a.normal)};
-    const msaa::Textures tb{fx.make_depth(GL_DEPTH_COMPONENT32F, kW, kH, b.depth),
-                            fx.make_normals(GL_RGBA16F, kW, kH, b.normal)};
-    // Samples 0 and 2 hold the crease, 1 and 3 the floor.
-    const msaa::Textures ms = msaa::make(gl, {ta, tb}, kW, kH, 4, GL_DEPTH_COMPONENT32F, GL_RGBA16F);
+    const TwoScenes two(fx);
+    const glm::dmat4& proj = two.proj;
+    const msaa::Textures &ta = two.alone[0], &tb = two.alone[1], &ms = two.ms;
     for (ssao_resolution res : {SSAO_RESOLUTION_FULL, SSAO_RESOLUTION_HALF}) {
         CAPTURE(res);
         fx.settings(settings_for(SSAO_METHOD_VISIBILITY, res));
@@ -202,8 +201,7 @@ TEST_CASE("MSAA inputs: mixed targets and mismatched sample counts and sample_in
     auto& gl = fx.gl();
     const auto proj = projection();
     const GBuffer g = analytic::render(crease_scene(), proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, kW, kH);
-    const msaa::Textures single{fx.make_depth(GL_DEPTH_COMPONENT32F, kW, kH, g.depth),
-                                fx.make_normals(GL_RGBA16F, kW, kH, g.normal)};
+    const msaa::Textures single = fx.upload(g);
     const msaa::Textures ms4 = msaa::make(gl, {single}, kW, kH, 4, GL_DEPTH_COMPONENT32F, GL_RGBA16F);
     // The driver may round a sample count up (llvmpipe: 2 -> 4): the counts are read back.
     const msaa::Textures ms2 = msaa::make(gl, {single}, kW, kH, 2, GL_DEPTH_COMPONENT32F, GL_RGBA16F);
@@ -277,8 +275,7 @@ TEST_CASE("with MSAA inputs the multisample bindings of units 0..3 and every lis
     auto& gl = fx.gl();
     const auto proj = projection();
     const GBuffer g = analytic::render(crease_scene(), proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, kW, kH);
-    const msaa::Textures single{fx.make_depth(GL_DEPTH24_STENCIL8, kW, kH, g.depth),
-                                fx.make_normals(GL_RGBA16F, kW, kH, g.normal)};
+    const msaa::Textures single = fx.upload(g, GL_DEPTH24_STENCIL8);
     const msaa::Textures ms = msaa::make(gl, {single}, kW, kH, 4, GL_DEPTH24_STENCIL8, GL_RGBA16F);
     // The host's own textures on both targets of every unit the library uses.
     GLuint host2d[4] = {}, host_ms[4] = {};
@@ -306,11 +303,7 @@ TEST_CASE("with MSAA inputs the multisample bindings of units 0..3 and every lis
         out.size = sizeof out;
         REQUIRE(fx.api().execute(fx.ctx(), &in, &out) == SSAO_OK);
         REQUIRE(fx.api().execute(fx.ctx(), &in, &out) == SSAO_OK);
-        const testgl::Snapshot after = testgl::snapshot(gl);
-        for (const auto& entry : before) {
-            CAPTURE(entry.first);
-            CHECK(after.at(entry.first) == entry.second);
-        }
+        CHECK(testgl::changed_state(before, testgl::snapshot(gl)) == "");
         GLint mode = 0;
         gl.BindTexture(GL_TEXTURE_2D_MULTISAMPLE, ms.depth);
         gl.GetTexParameteriv(GL_TEXTURE_2D_MULTISAMPLE, GL_DEPTH_STENCIL_TEXTURE_MODE, &mode);

@@ -49,10 +49,7 @@ Frame make_frame(testgl::Fixture& fx) {
 
 ssao_inputs inputs_for(testgl::Fixture& fx, const Frame& f, GLuint output, ssao_output_mode mode) {
     ssao_inputs in = fx.inputs(f.depth, f.normal, f.proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE);
-    in.viewport[0] = kVX;
-    in.viewport[1] = kVY;
-    in.viewport[2] = kVW;
-    in.viewport[3] = kVH;
+    testgl::set_viewport(in, kVX, kVY, kVW, kVH);
     in.output_texture = output;
     in.output_mode = mode;
     return in;
@@ -256,11 +253,7 @@ TEST_CASE("MULTIPLY restores the blend state it changes and strength off runs no
     out.size = sizeof out;
     REQUIRE(fx.api().execute(fx.ctx(), &in, &out) == SSAO_OK);
     CHECK((out.passes_run & SSAO_PASS_UPSAMPLE) != 0);
-    const testgl::Snapshot after = testgl::snapshot(gl);
-    for (const auto& entry : before) {
-        CAPTURE(entry.first);
-        CHECK(after.at(entry.first) == entry.second);
-    }
+    CHECK(testgl::changed_state(before, testgl::snapshot(gl)) == "");
     CHECK(blend_of(0) == blend0);
     CHECK(blend_of(1) == blend1);
     gl.Disable(GL_FRAMEBUFFER_SRGB);

@@ -15,13 +15,12 @@
 #define DOCTEST_CONFIG_IMPLEMENT
 #include <doctest/doctest.h>
 
+#include "child_process.h"
 #include "cpu_ssao.h"
+#include "crease_textures.h"
 #include "debug_groups.h"
 #include "gl_fixture.h"
 #include "other_context.h"
-
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -40,12 +39,7 @@ TEST_CASE("a GL 3.3 core context works: AO from D24S8 depth matches the CPU form
     const Scene scene = crease_scene();
     const auto proj = analytic::perspective(kFov, 1.0, 0.1, 100.0);
     const GBuffer g = analytic::render(scene, proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, 48, 48);
-    setenv("MESA_GL_VERSION_OVERRIDE", "3.3", 1);
-    testgl::Fixture fx(3, 3);
-    auto& gl = fx.gl();
-    const std::string version = reinterpret_cast<const char*>(gl.GetString(GL_VERSION));
-    CAPTURE(version);
-    REQUIRE(version.rfind("3.3", 0) == 0);
+    testgl::Gl33Fixture fx;
     ssao_settings s = make(16, SSAO_BLUR_NONE);
     s.radius = 1.5f;
     s.output_format = SSAO_OUTPUT_R16F;
@@ -74,13 +68,11 @@ TEST_CASE("a GL 3.3 core context works: AO from D24S8 depth matches the CPU form
 }
 
 TEST_CASE("below GL 4.5 a texture of another target is refused (INVALID_TEXTURE) and the host's binding kept") {
-    setenv("MESA_GL_VERSION_OVERRIDE", "3.3", 1);
-    testgl::Fixture fx(3, 3);
+    testgl::Gl33Fixture fx;
     auto& gl = fx.gl();
-    const auto proj = analytic::perspective(kFov, 1.0, 0.1, 100.0);
-    const GBuffer g = analytic::render(crease_scene(), proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, 16, 16);
-    const GLuint depth = fx.make_depth(GL_DEPTH_COMPONENT32F, 16, 16, g.depth);
-    const GLuint normal = fx.make_normals(GL_RGBA16F, 16, 16, g.normal);
+    const testscenes::CreaseTextures scene(fx, 16);
+    const glm::dmat4& proj = scene.proj;
+    const GLuint depth = scene.depth, normal = scene.normal;
     GLuint array = 0;
     gl.GenTextures(1, &array);
     gl.BindTexture(GL_TEXTURE_2D_ARRAY, array);
@@ -139,9 +131,8 @@ int ao_mismatches(testgl::Fixture& fx) {
 // 6 execute on another context (told apart by the vertex array's name alone,
 // without labels) was not refused with WRONG_CONTEXT, or raised a GL error there.
 int child_without_khr_debug() {
-    setenv("MESA_GL_VERSION_OVERRIDE", "3.3", 1);
     setenv("MESA_EXTENSION_OVERRIDE", "-GL_KHR_debug", 1);
-    testgl::Fixture fx(3, 3);
+    testgl::Gl33Fixture fx;
     auto& gl = fx.gl();
     if (has_extension(gl, "GL_KHR_debug") || gl.KHR_debug || gl.PushDebugGroup || gl.ObjectLabel) return 2;
     const int off = ao_mismatches(fx);
@@ -163,12 +154,8 @@ int child_without_khr_debug() {
 }  // namespace
 
 TEST_CASE("GL 3.3 with the KHR_debug extension: the passes are named there too") {
-    setenv("MESA_GL_VERSION_OVERRIDE", "3.3", 1);
-    testgl::Fixture fx(3, 3);
+    testgl::Gl33Fixture fx;
     auto& gl = fx.gl();
-    const std::string version = reinterpret_cast<const char*>(gl.GetString(GL_VERSION));
-    CAPTURE(version);
-    REQUIRE(version.rfind("3.3", 0) == 0);
     // Mesa 22 exposes the extension on 3.3 core; without it this case has
     // nothing to observe (the child-process case covers that context).
     if (!has_extension(gl, "GL_KHR_debug")) {
@@ -188,49 +175,33 @@ TEST_CASE("GL 3.3 with the KHR_debug extension: the passes are named there too")
 
 TEST_CASE("without KHR_debug (3.3, extension removed) execute runs as before and calls none of it") {
     // A NULL KHR_debug pointer called by the library would crash the child.
-    const pid_t pid = fork();
-    REQUIRE(pid >= 0);
-    if (pid == 0) {
-        execl("/proc/self/exe", "test_plugin_gl33", "--child-without-khr-debug", static_cast<char*>(nullptr));
-        _exit(127);
-    }
-    int status = 0;
-    REQUIRE(waitpid(pid, &status, 0) == pid);
-    const bool crashed = WIFSIGNALED(status);
-    const int code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    CAPTURE(crashed);
-    CAPTURE(code);
-    CHECK_FALSE(crashed);
-    CHECK(code == 0);
+    const testgl::ChildResult child = testgl::run_self("test_plugin_gl33", {"--child-without-khr-debug"});
+    CAPTURE(child.crashed);
+    CAPTURE(child.code);
+    CHECK_FALSE(child.crashed);
+    CHECK(child.code == 0);
 }
 
 TEST_CASE("GL 3.3: create_context with the host's program flagged for deletion leaves program 0, without a GL error") {
     // Without glProgramUniform the plugin binds its programs to set their
     // samplers; the host's flagged program is deleted by that, so 0 is
     // restored rather than its dead name (GL_INVALID_VALUE before).
-    setenv("MESA_GL_VERSION_OVERRIDE", "3.3", 1);
-    testgl::Fixture fx(3, 3);
+    testgl::Gl33Fixture fx;
     auto& gl = fx.gl();
     const GLuint host = testgl::make_host_program(gl);
     gl.UseProgram(host);
     gl.DeleteProgram(host);
-    ssao_context_desc desc{};
-    desc.size = sizeof desc;
-    desc.get_proc_address = &eglctx::Context::get_proc;
     ssao_context* second = nullptr;
-    REQUIRE(fx.api().create_context(&desc, &second) == SSAO_OK);
+    REQUIRE(testgl::create_default_context(fx.api(), &second) == SSAO_OK);
     GLint current = -1;
     gl.GetIntegerv(GL_CURRENT_PROGRAM, &current);
     CHECK(current == 0);
     CHECK(fx.gl_errors().empty());
     // Its samplers were still set: it renders the same AO as the fixture's context.
-    const auto proj = analytic::perspective(kFov, 1.0, 0.1, 100.0);
-    const GBuffer g = analytic::render(crease_scene(), proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, 16, 16);
-    const auto reference = fx.run(g, proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE);
+    const testscenes::CreaseTextures scene(fx, 16);
+    const auto reference = fx.run(scene.g, scene.proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE);
     REQUIRE(reference.status == SSAO_OK);
-    const GLuint depth = fx.make_depth(GL_DEPTH_COMPONENT32F, 16, 16, g.depth);
-    const GLuint normal = fx.make_normals(GL_RGBA16F, 16, 16, g.normal);
-    const ssao_inputs in = fx.inputs(depth, normal, proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE);
+    const ssao_inputs& in = scene.in;
     ssao_output out{};
     out.size = sizeof out;
     REQUIRE(fx.api().execute(second, &in, &out) == SSAO_OK);

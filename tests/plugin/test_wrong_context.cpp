@@ -97,11 +97,7 @@ TEST_CASE("wrong context: an unrelated GL context current: refused, no GL error,
     for (const std::string& e : other.gl_errors()) MESSAGE(e);
     CHECK(live_vertex_arrays(gl) == vaos);
     CHECK(live_framebuffers(gl) == fbos);
-    const testgl::Snapshot after = testgl::snapshot(gl);
-    for (const auto& entry : before) {
-        CAPTURE(entry.first);
-        CHECK(after.at(entry.first) == entry.second);
-    }
+    CHECK(testgl::changed_state(before, testgl::snapshot(gl)) == "");
 
     // Back on the creating context everything works as before.
     other.make_first_current();
@@ -119,11 +115,8 @@ TEST_CASE("wrong context: another GL context with its own ssao_context (same obj
     // the same name there (both are the first one each context made).
     OtherContext other(OtherContext::Sharing::none);
     other.make_current();
-    ssao_context_desc desc{};
-    desc.size = sizeof desc;
-    desc.get_proc_address = &eglctx::Context::get_proc;
     ssao_context* second = nullptr;
-    REQUIRE(fx.api().create_context(&desc, &second) == SSAO_OK);
+    REQUIRE(testgl::create_default_context(fx.api(), &second) == SSAO_OK);
     CHECK(live_vertex_arrays(other.gl()) == first_vaos);
 
     CHECK(fx.api().execute(fx.ctx(), &scene.in, nullptr) == SSAO_ERROR_WRONG_CONTEXT);
@@ -221,11 +214,8 @@ TEST_CASE("wrong context: no context current, and the creating context destroyed
     std::string error;
     REQUIRE_MESSAGE(lib.open(plugin::Library::default_path(), error), error);
     const ssao_api& api = lib.api();
-    ssao_context_desc desc{};
-    desc.size = sizeof desc;
-    desc.get_proc_address = &eglctx::Context::get_proc;
     ssao_context* ctx = nullptr;
-    REQUIRE(api.create_context(&desc, &ctx) == SSAO_OK);
+    REQUIRE(testgl::create_default_context(api, &ctx) == SSAO_OK);
     // Inputs on the first context.
     auto& g = first->gl();
     const std::vector<float> depth(kSize * kSize, 0.5f), normal(kSize * kSize * 4, 0.0f);

@@ -1,5 +1,6 @@
 #include "gl_fixture.h"
 
+#include <cstdlib>
 #include <stdexcept>
 #include <utility>
 
@@ -47,21 +48,43 @@ std::unique_ptr<eglctx::Context> make_debug_context(int major, int minor) {
     return egl;
 }
 
+void set_viewport(ssao_inputs& in, int x, int y, int w, int h) {
+    in.viewport[0] = x;
+    in.viewport[1] = y;
+    in.viewport[2] = w;
+    in.viewport[3] = h;
+}
+
+ssao_normal_packing packing_of(GLenum normal_format) {
+    return normal_format == GL_RGBA8 ? SSAO_NORMAL_PACKING_UNORM : SSAO_NORMAL_PACKING_SIGNED;
+}
+
+ssao_status create_default_context(const ssao_api& api, ssao_context** out) {
+    ssao_context_desc desc{};
+    desc.size = sizeof desc;
+    desc.get_proc_address = &eglctx::Context::get_proc;
+    return api.create_context(&desc, out);
+}
+
 Fixture::Fixture(int major, int minor) {
     egl_ = make_debug_context(major, minor);
     std::string error;
     if (!lib_.open(plugin::Library::default_path(), error)) throw std::runtime_error(error);
     errors_ = std::make_unique<DebugErrors>(gl());
-    ssao_context_desc desc{};
-    desc.size = sizeof desc;
-    desc.get_proc_address = &eglctx::Context::get_proc;
-    const ssao_status st = api().create_context(&desc, &ctx_);
+    const ssao_status st = create_default_context(api(), &ctx_);
     if (st != SSAO_OK) throw std::runtime_error(std::string("create_context: ") + api().status_string(st));
 }
 
 Fixture::~Fixture() {
     if (!textures_.empty()) gl().DeleteTextures(static_cast<GLsizei>(textures_.size()), textures_.data());
     api().destroy_context(ctx_);
+}
+
+MesaGl33Override::MesaGl33Override() { setenv("MESA_GL_VERSION_OVERRIDE", "3.3", 1); }
+
+Gl33Fixture::Gl33Fixture() : Fixture(3, 3) {
+    const std::string version = reinterpret_cast<const char*>(gl().GetString(GL_VERSION));
+    if (version.rfind("3.3", 0) != 0) throw std::runtime_error("asked for GL 3.3 core, got GL_VERSION " + version);
 }
 
 GLuint Fixture::make_depth(GLenum internal, int w, int h, const std::vector<float>& depth) {
@@ -106,6 +129,13 @@ GLuint Fixture::make_normals(GLenum internal, int w, int h, const std::vector<gl
     return t;
 }
 
+Textures Fixture::upload(const analytic::GBuffer& g, GLenum depth_format, GLenum normal_format) {
+    Textures t;
+    t.depth = make_depth(depth_format, g.width, g.height, g.depth);
+    t.normal = make_normals(normal_format, g.width, g.height, g.normal);
+    return t;
+}
+
 std::vector<float> Fixture::read_red(GLuint texture, int w, int h) {
     auto& g = gl();
     GLuint fbo = 0;
@@ -145,9 +175,8 @@ ssao_inputs Fixture::inputs(GLuint depth, GLuint normal, const glm::dmat4& proj,
 Fixture::Result Fixture::run(const analytic::GBuffer& g, const glm::dmat4& proj, ssao_clip_range clip,
                              GLenum depth_format) {
     Result r;
-    const GLuint depth = make_depth(depth_format, g.width, g.height, g.depth);
-    const GLuint normal = make_normals(GL_RGBA16F, g.width, g.height, g.normal);
-    ssao_inputs in = inputs(depth, normal, proj, clip);
+    const Textures t = upload(g, depth_format);
+    ssao_inputs in = inputs(t.depth, t.normal, proj, clip);
     r.output.size = sizeof r.output;
     r.status = api().execute(ctx_, &in, &r.output);
     if (r.status == SSAO_OK) r.ao = read_red(r.output.texture, g.width, g.height);

@@ -35,6 +35,21 @@ GLuint make_host_program(GladGLContext& gl);
 // A debug EGL context (4.5 core unless asked otherwise) or an exception.
 std::unique_ptr<eglctx::Context> make_debug_context(int major = 4, int minor = 5);
 
+// Sets in.viewport to (x, y, w, h).
+void set_viewport(ssao_inputs& in, int x, int y, int w, int h);
+// The normal_packing of a normal texture Fixture::make_normals made in this
+// format: RGBA8 holds n * 0.5 + 0.5, the float formats n itself.
+ssao_normal_packing packing_of(GLenum normal_format);
+
+// create_context on the current GL context with the default description
+// (EGL's get_proc_address, no log, default settings); *out is the new context.
+ssao_status create_default_context(const ssao_api& api, ssao_context** out);
+
+// A G-buffer's depth and normal textures.
+struct Textures {
+    GLuint depth = 0, normal = 0;
+};
+
 class Fixture {
 public:
     explicit Fixture(int major = 4, int minor = 5);
@@ -54,6 +69,9 @@ public:
     GLuint make_depth(GLenum internal, int w, int h, const std::vector<float>& depth);
     // Normal texture: RGBA16F signed (default), RGBA32F, or RGBA8 packed to [0,1].
     GLuint make_normals(GLenum internal, int w, int h, const std::vector<glm::vec3>& normals);
+    // The G-buffer's depth and normals as textures of those formats (owned by the fixture).
+    Textures upload(const analytic::GBuffer& g, GLenum depth_format = GL_DEPTH_COMPONENT32F,
+                    GLenum normal_format = GL_RGBA16F);
     // Reads the red channel of a texture's level 0 (any colour format) as floats.
     std::vector<float> read_red(GLuint texture, int w, int h);
 
@@ -74,6 +92,19 @@ private:
     ssao_context* ctx_ = nullptr;
     std::unique_ptr<DebugErrors> errors_;
     std::vector<GLuint> textures_;
+};
+
+// Sets MESA_GL_VERSION_OVERRIDE=3.3 for the rest of the process: Mesa's EGL
+// hands out 4.5 when 3.3 is asked for, unless this is set before the context.
+struct MesaGl33Override {
+    MesaGl33Override();
+};
+
+// The fixture on a genuine GL 3.3 core context (GL_VERSION starts with 3.3,
+// else the constructor throws, naming the version it got).
+class Gl33Fixture : private MesaGl33Override, public Fixture {
+public:
+    Gl33Fixture();
 };
 
 }  // namespace testgl

@@ -10,6 +10,8 @@
 // Header-only so that test targets use it without a library of their own.
 #pragma once
 
+#include "gl_fixture.h"
+
 #include <glad/gl.h>
 
 #include <stdexcept>
@@ -18,9 +20,7 @@
 
 namespace msaa {
 
-struct Textures {
-    GLuint depth = 0, normal = 0;
-};
+using Textures = testgl::Textures;
 
 namespace detail {
 

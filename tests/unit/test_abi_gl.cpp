@@ -3,13 +3,11 @@
 // function, every execute validation error, settings that must not apply,
 // which passes run, and the plugin-owned output across resizes.
 #include "abi_common.h"
+#include "child_process.h"
 
 #include <glm/glm.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
-
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <cmath>
 #include <limits>
@@ -679,10 +677,8 @@ TEST_CASE("abi: destroy_context deletes every GL object the plugin made") {
     Scene scene(gl, kW, kH);
     const LiveObjects before = count_live(gl);
 
-    ssao_context_desc desc = sized<ssao_context_desc>();
-    desc.get_proc_address = eglctx::Context::get_proc;
     ssao_context* ctx = nullptr;
-    REQUIRE(a.create_context(&desc, &ctx) == SSAO_OK);
+    REQUIRE(testgl::create_default_context(a, &ctx) == SSAO_OK);
     // Exercise every lazily made object: blur temporaries, output, timers.
     for (int i = 0; i < 6; ++i) REQUIRE(a.execute(ctx, &scene.inputs, nullptr) == SSAO_OK);
     ssao_timings t = sized<ssao_timings>();
@@ -714,10 +710,8 @@ TEST_CASE("abi: create_context with the host's program flagged for deletion keep
     const GLuint host = testgl::make_host_program(gl);
     gl.UseProgram(host);
     gl.DeleteProgram(host);  // flagged: lives while current
-    ssao_context_desc desc = sized<ssao_context_desc>();
-    desc.get_proc_address = eglctx::Context::get_proc;
     ssao_context* second = nullptr;
-    REQUIRE(api().create_context(&desc, &second) == SSAO_OK);
+    REQUIRE(testgl::create_default_context(api(), &second) == SSAO_OK);
     GLint current = 0;
     gl.GetIntegerv(GL_CURRENT_PROGRAM, &current);
     CHECK(static_cast<GLuint>(current) == host);  // GL 4.5: set through glProgramUniform, never unbound
@@ -741,20 +735,11 @@ TEST_CASE("abi: create_context is GL_LOAD when one GL 3.3 function is missing") 
     for (const char* name : names) {
         const std::string what_ = name;
         CAPTURE(what_);
-        const pid_t pid = fork();
-        REQUIRE(pid >= 0);
-        if (pid == 0) {
-            execl("/proc/self/exe", "unit_abi", "--unit-child-missing", name, static_cast<char*>(nullptr));
-            _exit(127);
-        }
-        int status = 0;
-        REQUIRE(waitpid(pid, &status, 0) == pid);
-        const bool crashed = WIFSIGNALED(status);
-        const int code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-        CAPTURE(crashed);
-        CAPTURE(code);
-        CHECK_FALSE(crashed);
-        CHECK(code == SSAO_ERROR_GL_LOAD);
+        const testgl::ChildResult child = testgl::run_self("unit_abi", {"--unit-child-missing", name});
+        CAPTURE(child.crashed);
+        CAPTURE(child.code);
+        CHECK_FALSE(child.crashed);
+        CHECK(child.code == SSAO_ERROR_GL_LOAD);
     }
 }
 

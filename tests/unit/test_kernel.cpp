@@ -1,6 +1,7 @@
 // test_kernel.cpp - the sample kernel, the rotation noise and the pixel hash
 // (plugin/kernel.h) against the properties documented in ssao.h and kernel.h.
 #include "kernel.h"
+#include "plan_test_util.h"
 #include "settings.h"
 
 #include <doctest/doctest.h>
@@ -20,16 +21,11 @@ namespace {
 
 ssao_settings resolved(uint32_t samples, ssao_kernel_shape shape, ssao_kernel_distribution dist, uint32_t seed = 0) {
     ssao_settings in{};
-    in.size = sizeof in;
     in.sample_count = samples;
     in.kernel_shape = shape;
     in.distribution = dist;
     in.seed = seed;
-    ssao_settings out{};
-    out.size = sizeof out;
-    std::string why;
-    REQUIRE(ssao_impl::resolve_settings(in, out, why) == SSAO_OK);
-    return out;
+    return plan_test::resolve(in);
 }
 
 const ssao_kernel_shape kShapes[] = {SSAO_KERNEL_HEMISPHERE, SSAO_KERNEL_SPHERE, SSAO_KERNEL_SEPARABLE};

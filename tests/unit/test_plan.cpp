@@ -5,6 +5,7 @@
 // before it is read).
 #include "pass_table.h"
 #include "plan.h"
+#include "plan_test_util.h"
 #include "settings.h"
 
 #include <doctest/doctest.h>
@@ -18,32 +19,13 @@ using Source = TexRef::Source;
 
 namespace {
 
+// The kernel method (the plan's cases name its program) at full resolution (and its passes).
 ssao_settings resolved(ssao_blur blur, float strength = 0.0f) {
-    ssao_settings in{};
-    in.size = sizeof in;
-    in.method = SSAO_METHOD_KERNEL;  // the plan's cases name the kernel's program
-    in.resolution = SSAO_RESOLUTION_FULL;  // and the full-resolution passes
-    in.blur = blur;
-    in.strength = strength;
-    ssao_settings out{};
-    out.size = sizeof out;
-    std::string why;
-    REQUIRE(resolve_settings(in, out, why) == SSAO_OK);
-    return out;
+    return plan_test::resolve(plan_test::request(SSAO_METHOD_KERNEL, SSAO_RESOLUTION_FULL, blur, strength));
 }
 
 AnalysedInputs inputs(int x, int y, int w, int h, uint32_t host_output = 0) {
-    AnalysedInputs in;
-    in.texture_width = x + w;
-    in.texture_height = y + h;
-    in.viewport[0] = x;
-    in.viewport[1] = y;
-    in.viewport[2] = w;
-    in.viewport[3] = h;
-    in.output_texture = host_output;
-    in.depth.bits = 32;
-    in.depth.is_float = true;
-    return in;
+    return plan_test::viewport_inputs(x, y, w, h, host_output);
 }
 
 std::vector<PassKind> kinds(const FramePlan& p) {

@@ -6,6 +6,7 @@
 // variant bit of its own (free when off).
 #include "pass_table.h"
 #include "plan.h"
+#include "plan_test_util.h"
 #include "settings.h"
 
 #include <doctest/doctest.h>
@@ -18,33 +19,10 @@ using Source = TexRef::Source;
 namespace {
 
 ssao_settings resolved(ssao_blur blur, ssao_resolution res, ssao_debug_view view, float strength = 0.0f) {
-    ssao_settings in{};
-    in.size = sizeof in;
-    in.method = SSAO_METHOD_KERNEL;
-    in.resolution = res;
-    in.blur = blur;
-    in.strength = strength;
-    in.debug_view = view;
-    ssao_settings out{};
-    out.size = sizeof out;
-    std::string why;
-    REQUIRE(resolve_settings(in, out, why) == SSAO_OK);
-    return out;
+    return plan_test::resolve(plan_test::request(SSAO_METHOD_KERNEL, res, blur, strength, view));
 }
 
-AnalysedInputs inputs(int w, int h, uint32_t host_output = 0) {
-    AnalysedInputs in;
-    in.texture_width = w + 3;
-    in.texture_height = h + 2;
-    in.viewport[0] = 3;
-    in.viewport[1] = 2;
-    in.viewport[2] = w;
-    in.viewport[3] = h;
-    in.output_texture = host_output;
-    in.depth.bits = 32;
-    in.depth.is_float = true;
-    return in;
-}
+AnalysedInputs inputs(int w, int h, uint32_t host_output = 0) { return plan_test::viewport_inputs(3, 2, w, h, host_output); }
 
 // Same passes (kind, program, inputs, target, rectangle, packing, scale,
 // direction, depth awareness), variant bits aside.

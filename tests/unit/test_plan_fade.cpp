@@ -6,6 +6,7 @@
 #include "kernel.h"
 #include "pass_table.h"
 #include "plan.h"
+#include "plan_test_util.h"
 #include "settings.h"
 
 #include <doctest/doctest.h>
@@ -20,27 +21,15 @@ namespace {
 constexpr uint32_t kFeatureBits = variant::fade | variant::radius_pixels | variant::frame_noise;
 
 ssao_settings resolved(float fade_start, float fade_end, float radius_pixels, ssao_resolution res) {
-    ssao_settings in{};
-    in.size = sizeof in;
-    in.resolution = res;
+    ssao_settings in = plan_test::request(SSAO_METHOD_DEFAULT, res, SSAO_BLUR_DEFAULT);
     in.fade_start = fade_start;
     in.fade_end = fade_end;
     in.radius_pixels = radius_pixels;
-    ssao_settings out{};
-    out.size = sizeof out;
-    std::string why;
-    REQUIRE(resolve_settings(in, out, why) == SSAO_OK);
-    return out;
+    return plan_test::resolve(in);
 }
 
 AnalysedInputs inputs(uint32_t frame_index) {
-    AnalysedInputs in;
-    in.texture_width = 64;
-    in.texture_height = 48;
-    in.viewport[2] = 64;
-    in.viewport[3] = 48;
-    in.depth.bits = 32;
-    in.depth.is_float = true;
+    AnalysedInputs in = plan_test::viewport_inputs(0, 0, 64, 48);
     in.frame_index = frame_index;
     return in;
 }

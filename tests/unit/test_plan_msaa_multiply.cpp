@@ -4,6 +4,7 @@
 // pass blends into the output, and that strength off in multiply mode runs
 // nothing.
 #include "plan.h"
+#include "plan_test_util.h"
 #include "settings.h"
 
 #include <doctest/doctest.h>
@@ -16,28 +17,14 @@ using Source = TexRef::Source;
 namespace {
 
 ssao_settings resolved(ssao_method method, ssao_resolution res, ssao_blur blur, float strength = 0.0f) {
-    ssao_settings in{};
-    in.size = sizeof in;
-    in.method = method;
-    in.resolution = res;
-    in.blur = blur;
-    in.strength = strength;
-    ssao_settings out{};
-    out.size = sizeof out;
-    std::string why;
-    REQUIRE(resolve_settings(in, out, why) == SSAO_OK);
-    return out;
+    return plan_test::resolve(plan_test::request(method, res, blur, strength));
 }
 
+// The host's textures 1 and 2 in, its texture 3 out (the depth format left unknown).
 AnalysedInputs host_output_inputs() {
-    AnalysedInputs in;
-    in.texture_width = 64;
-    in.texture_height = 48;
-    in.viewport[2] = 64;
-    in.viewport[3] = 48;
+    AnalysedInputs in = plan_test::viewport_inputs(0, 0, 64, 48, 3, DepthFormat{});
     in.depth_texture = 1;
     in.normal_texture = 2;
-    in.output_texture = 3;
     return in;
 }
 

@@ -4,6 +4,7 @@
 // whatever the resolution, blur or strength; the owned output is RGBA8.
 #include "pass_table.h"
 #include "plan.h"
+#include "plan_test_util.h"
 #include "settings.h"
 
 #include <doctest/doctest.h>
@@ -16,29 +17,11 @@ using Source = TexRef::Source;
 namespace {
 
 ssao_settings resolved_view(ssao_debug_view view, ssao_resolution res, ssao_blur blur, float strength) {
-    ssao_settings in{};
-    in.size = sizeof in;
-    in.debug_view = view;
-    in.resolution = res;
-    in.blur = blur;
-    in.strength = strength;
-    ssao_settings out{};
-    std::string why;
-    REQUIRE(resolve_settings(in, out, why) == SSAO_OK);
-    return out;
+    return plan_test::resolve(plan_test::request(SSAO_METHOD_DEFAULT, res, blur, strength, view));
 }
 
 AnalysedInputs viewport(int x, int y, int w, int h, uint32_t host_output) {
-    AnalysedInputs in;
-    in.texture_width = x + w;
-    in.texture_height = y + h;
-    in.viewport[0] = x;
-    in.viewport[1] = y;
-    in.viewport[2] = w;
-    in.viewport[3] = h;
-    in.output_texture = host_output;
-    in.depth.bits = 24;
-    return in;
+    return plan_test::viewport_inputs(x, y, w, h, host_output, plan_test::depth_format(24, false));
 }
 
 }  // namespace

@@ -1,4 +1,4 @@
-// test_scenes.h - analytic scenes and settings shared by the plugin's GL tests.
+// test_scenes.h - analytic scenes and settings shared by the GL tests.
 #pragma once
 
 #include "analytic_scene.h"
