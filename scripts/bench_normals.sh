@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Depth-only input against the G-buffer's normals (issue 12, feature 1): two
+# Depth-only input against the G-buffer's normals: two
 # quick ssao-bench runs over the same scenes, settings and references, one
 # with the G-buffer's normals and one with normal_texture = 0, into
 # DIR/gbuffer and DIR/depth (default docs/bench-normals); then the docs'

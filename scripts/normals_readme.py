@@ -5,7 +5,7 @@ Reads two ssao-bench runs (DIR/gbuffer/bench.csv and DIR/depth/bench.csv,
 made by scripts/bench_normals.sh: the same scenes, settings and references,
 the plugin given the G-buffer's normals or normal_texture = 0) and writes,
 per preset and scene, the PSNR against V_R both ways, the difference and the
-GPU time, with issue 12's target (depth-only within 1 dB of the G-buffer's
+GPU time, with the target (depth-only within 1 dB of the G-buffer's
 normals) stated as met or missed. Nothing is typed by hand.
 
 usage: scripts/normals_readme.py [DIR] [DOC...]   (default: README.md docs/*.md)

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Sanitizer runs (issue 11), after the normal suite (.ci/run):
+# Sanitizer runs, after the normal suite (.ci/run):
 #   1. an ASan+UBSan build (build-asan/, clang) running the CTest suite, the
 #      soak test included, with leak detection on;
 #   2. each libFuzzer target for a bounded number of inputs, on the same build;

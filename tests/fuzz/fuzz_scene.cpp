@@ -3,7 +3,7 @@
 // byte mutations, a custom mutator edits the JSON as a structure: it nests a
 // value in arrays and objects, repeats array elements and nodes, and inflates
 // numbers and counts, the shapes that overflowed the stack and multiplied
-// the work in issue 11, and swaps buffer and image URIs for names of a
+// the work, and swaps buffer and image URIs for names of a
 // scratch folder the fuzzer makes (scratch() below): a buffer file, files
 // outside the scene's folder, symbolic links in and out, a FIFO, a directory,
 // a sparse file far larger than declared, data URIs. Any crash, sanitizer

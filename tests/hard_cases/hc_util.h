@@ -60,7 +60,7 @@ int check_unit_finite(const std::vector<float>& ao, const char* what = "");
 // Resolved-to-be settings for a hard case: R16F output, everything else default.
 ssao_settings make(uint32_t samples, ssao_blur blur, ssao_rotation rotation, float radius, ssao_method method);
 
-// Every hard case holds for both estimators (issue 8). HC_EACH_METHOD(m)
+// Every hard case holds for both estimators. HC_EACH_METHOD(m)
 // declares `ssao_method m` and opens one doctest subcase per estimator;
 // doctest re-enters the test case once per subcase, so everything after this
 // line runs once with m = SSAO_METHOD_KERNEL and once with

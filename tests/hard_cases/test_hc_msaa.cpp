@@ -1,4 +1,4 @@
-// The hard cases with MSAA inputs (issue 12, feature 2): every depth
+// The hard cases with MSAA inputs: every depth
 // convention and format, odd sizes with the viewport inside larger textures,
 // sky, world-space unorm normals, for both estimators at full and half
 // resolution. The G-buffer is copied into 4x multisampled textures whose every

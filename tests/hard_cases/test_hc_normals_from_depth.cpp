@@ -1,4 +1,4 @@
-// Depth-only input (issue 12, feature 1): normal_texture = 0 rebuilds
+// Depth-only input: normal_texture = 0 rebuilds
 // view-space normals from depth in the grid pass. Read through the debug
 // view RECONSTRUCTED_NORMALS (float precision: a host RGBA32F output):
 // a plane gives its analytic normal in every depth convention and at the

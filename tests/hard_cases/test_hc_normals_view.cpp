@@ -1,5 +1,5 @@
 // The normal debug views (ssao_settings.debug_view NORMALS and
-// RECONSTRUCTED_NORMALS, issue 12) and the ABI's handling of
+// RECONSTRUCTED_NORMALS) and the ABI's handling of
 // normal_texture = 0: the NORMALS view shows the decoded G-buffer normal,
 // the reconstructed view ignores the normal texture, the library's own output
 // is RGBA8 for them, and every refusal of a bad depth texture stays.

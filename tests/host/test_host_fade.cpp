@@ -1,4 +1,4 @@
-// ssao-host and issue 12's features 4 and 5, end to end: the glTF extras
+// ssao-host's fade, radius in pixels and frame index, end to end: the glTF extras
 // hints fade_start / fade_end / radius_pixels reach the settings the host
 // uses and its flags override them; the fade shows in ao.exr against the
 // host's own view_depth.exr; --frame-index is bit-stable and 0 is today's

@@ -1,7 +1,7 @@
 // gl_state_snapshot.h - reads every piece of GL state the plugin promises to
 // leave as it found it (the list in include/ssao/ssao.h), by name, so a test
 // can say exactly which one changed. Beyond that list it reads the state a
-// real engine leaves set and execute must not disturb either (issue 11).
+// real engine leaves set and execute must not disturb either.
 #pragma once
 
 #include <glad/gl.h>
@@ -129,7 +129,7 @@ inline Snapshot snapshot(GladGLContext& gl, int units = 4) {
         geti("clip_origin", GL_CLIP_ORIGIN);
         geti("clip_depth_mode", GL_CLIP_DEPTH_MODE);
     }
-    // What a real engine leaves set between passes (issue 11).
+    // What a real engine leaves set between passes.
     getf("viewport_f", GL_VIEWPORT, 4);  // index 0 exactly, sub-pixel included
     enabled("primitive_restart", GL_PRIMITIVE_RESTART);
     enabled("primitive_restart_fixed_index", GL_PRIMITIVE_RESTART_FIXED_INDEX);

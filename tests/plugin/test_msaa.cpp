@@ -1,4 +1,4 @@
-// MSAA inputs (issue 12, feature 2): GL_TEXTURE_2D_MULTISAMPLE depth and
+// MSAA inputs: GL_TEXTURE_2D_MULTISAMPLE depth and
 // normal, one sample (inputs.sample_index) read per pixel.
 //
 // The exact oracle: multisampled copies whose every sample holds the

@@ -1,4 +1,4 @@
-// MSAA inputs on a genuine GL 3.3 core context (issue 12, feature 2): no
+// MSAA inputs on a genuine GL 3.3 core context: no
 // GL_TEXTURE_TARGET query there, so the library tells a multisampled input
 // from a 2D one by binding it (see test_plugin_gl33.cpp for how the context
 // is made). The first execute tries the previous frame's target (2D at

@@ -1,4 +1,4 @@
-// Output mode MULTIPLY (issue 12, feature 3): the host's lit image's RGB at
+// Output mode MULTIPLY: the host's lit image's RGB at
 // the viewport rectangle is multiplied by AO through blending, alpha and the
 // pixels outside the viewport untouched. The oracle is the host's own
 // composite: the same frame's AO written in overwrite mode into an RGBA32F

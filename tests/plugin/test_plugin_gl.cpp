@@ -180,7 +180,7 @@ TEST_CASE("background pixels exit early with exactly 1 and the passes run are on
 
 namespace {
 
-// Everything else an engine leaves set (issue 11), each to a non-default value.
+// Everything else an engine leaves set, each to a non-default value.
 // The host framebuffer must be bound (its draw and read buffers are set).
 void disturb_engine_state(GladGLContext& gl) {
     gl.ViewportIndexedf(0, 3.25f, 5.5f, 17.75f, 19.125f);  // sub-pixel viewport at index 0

@@ -225,7 +225,7 @@ TEST_CASE("EXR round trip keeps NaN-free floats and channel names") {
 TEST_CASE("a truncated EXR is refused with a sentence, and nothing it allocated is kept") {
     // Cut in the pixels: tinyexr 1.0.1 frees a failed load's channel buffers only up to the
     // image's channel count, which it sets after decoding: every truncated
-    // file leaked its buffers (LeakSanitizer, found by fuzz_exr, issue 11).
+    // file leaked its buffers (LeakSanitizer, found by fuzz_exr).
     const auto dir = std::filesystem::temp_directory_path() / ("ssao_metrics_cut_" + std::to_string(getpid()));
     std::filesystem::create_directories(dir);
     const std::string path = (dir / "cut.exr").string();

@@ -246,7 +246,7 @@ TEST_CASE("the triangle budget counts flattened triangles: at the budget loads, 
 TEST_CASE("flattening is linear in node instances: 20,000 nodes of one triangle allocate megabytes, not gigabytes") {
     // An exact reserve() per node instance once reallocated the whole index
     // list for every node: 12 * n^2 / 2 bytes, 2.4 GB here, and a 16 KB
-    // fuzzed .glb took a minute under ASan (found by fuzz_scene, issue 11).
+    // fuzzed .glb took a minute under ASan (found by fuzz_scene).
     TempDir dir;
     const std::string path = dir.write("many.glb", repeated_primitive_glb(20000, 1));
     scene::Scene sc;

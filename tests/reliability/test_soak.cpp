@@ -1,4 +1,4 @@
-// test_soak.cpp - a long session as a renderer has one (issue 11): 10,000
+// test_soak.cpp - a long session as a renderer has one: 10,000
 // executes with the viewport resized every few frames (1x1 and odd sizes
 // among them), output format, output target and blur toggled and settings
 // changed, then 500 create/destroy cycles. Run under LeakSanitizer by

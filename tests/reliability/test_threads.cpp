@@ -1,5 +1,5 @@
 // test_threads.cpp - the header's promise that distinct contexts work from
-// distinct threads, each with its own GL context (issue 11): two threads, two
+// distinct threads, each with its own GL context: two threads, two
 // EGL contexts, 1,000 executes each with changing settings and viewports, and
 // every frame's AO identical to the same sequence run on one thread.
 // Both threads wait at a barrier after creating their contexts, so their

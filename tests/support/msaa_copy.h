@@ -1,4 +1,4 @@
-// msaa_copy.h - multisampled G-buffers for the MSAA tests (issue 12): copies
+// msaa_copy.h - multisampled G-buffers for the MSAA tests: copies
 // single-sample depth and normal textures into GL_TEXTURE_2D_MULTISAMPLE ones
 // by drawing a fullscreen triangle into a multisampled framebuffer. The
 // fragment shader runs once per pixel (it reads no per-sample input) and

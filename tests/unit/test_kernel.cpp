@@ -287,7 +287,7 @@ TEST_CASE("kernel: the draws are taken in one fixed order, whatever compiler bui
     // The oracle: the generator's stream read in the order kernel.cpp promises
     // (z, then y, then x, then the length), uniform hemisphere, seed 1. An
     // unsequenced vec3(next(), next(), next()) gave GCC and clang builds
-    // different kernels (found by the clang sanitizer build, issue 11).
+    // different kernels (found by the clang sanitizer build).
     ssao_impl::Random rng(0x5ea0u ^ (uint64_t(1) << 32));
     glm::vec3 dir;
     for (;;) {

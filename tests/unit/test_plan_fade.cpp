@@ -1,4 +1,4 @@
-// test_plan_fade.cpp - issue 12 features 4 and 5 in the frame plan (no GL):
+// test_plan_fade.cpp - fade, radius in pixels and the frame index in the frame plan (no GL):
 // the sampling pass gets the FADE, RADIUS_PIXELS and FRAME_NOISE variant bits
 // only when asked for (fade_end > 0, radius_pixels > 0, frame_index != 0),
 // no other pass ever does and no pass is added, so a frame without them runs

@@ -1,4 +1,4 @@
-// test_plan_msaa_multiply.cpp - the frame plan (plugin/plan.h) for issue 12's
+// test_plan_msaa_multiply.cpp - the frame plan (plugin/plan.h) for the
 // MSAA inputs and MULTIPLY output mode, without GL: which passes read the
 // host's multisampled textures (variant MULTISAMPLE, the sample index), which
 // pass blends into the output, and that strength off in multiply mode runs

@@ -1,5 +1,5 @@
 // test_plan_normals_view.cpp - the frame plan of the normal debug views
-// (ssao_settings.debug_view NORMALS / RECONSTRUCTED_NORMALS, issue 12):
+// (ssao_settings.debug_view NORMALS / RECONSTRUCTED_NORMALS):
 // the grid pass at full resolution then the view pass into the output,
 // whatever the resolution, blur or strength; the owned output is RGBA8.
 #include "pass_table.h"
