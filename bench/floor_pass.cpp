@@ -6,12 +6,6 @@ namespace bench {
 
 namespace {
 
-const char* kVs = R"(#version 330 core
-void main() {
-    vec2 p = vec2(float((gl_VertexID << 1) & 2), float(gl_VertexID & 2));
-    gl_Position = vec4(p * 2.0 - 1.0, 0.0, 1.0);
-})";
-
 // One texelFetch of each input and a value that depends on both, so neither
 // read can be optimised away.
 const char* kFs = R"(#version 330 core
@@ -34,7 +28,7 @@ FloorPass::FloorPass(GladGLContext& gl, int width, int height) : gl_(gl), width_
     gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, target_, 0);
     gl_util::check_framebuffer(gl, "bandwidth floor target");
     gl.BindFramebuffer(GL_FRAMEBUFFER, 0);
-    program_ = gl_util::make_program(gl, "bandwidth floor", kVs, kFs);
+    program_ = gl_util::make_program(gl, "bandwidth floor", gl_util::fullscreen_vertex_shader().c_str(), kFs);
     gl.UseProgram(program_);
     gl.Uniform1i(gl.GetUniformLocation(program_, "u_depth"), 0);
     gl.Uniform1i(gl.GetUniformLocation(program_, "u_normal"), 1);
