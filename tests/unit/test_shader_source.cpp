@@ -251,9 +251,10 @@ TEST_CASE("shader source: no file declares a uniform, output, constant or functi
     CHECK(files_of_name["SKY_Z"] == std::set<std::string>{"common.glsl"});
     CHECK(files_of_name["result"] == std::set<std::string>{"ao_texture.glsl"});
     CHECK(files_of_name["texel_surface"] == std::set<std::string>{"common.glsl"});
-    for (const auto& [name, where] : files_of_name) {
+    for (const auto& entry : files_of_name) {
+        const std::string& name = entry.first;  // not a structured binding: clang 14's CAPTURE cannot capture one
         CAPTURE(name);
-        CHECK(where.size() == 1);
+        CHECK(entry.second.size() == 1);
     }
 }
 
@@ -286,8 +287,10 @@ TEST_CASE("shader source: every SsaoFrame and SsaoKernel member sits at the same
     REQUIRE(shader_build::link_pass_program(gl, ProgramId::visibility, 0, program) == "");
     std::map<std::string, size_t> glsl;
     size_t members = 0;
-    for (const auto& [block, size] : {std::pair<const char*, size_t>{"SsaoFrame", sizeof(SsaoFrame)},
-                                      std::pair<const char*, size_t>{"SsaoKernel", sizeof(SsaoKernel)}}) {
+    for (const auto& block_size : {std::pair<const char*, size_t>{"SsaoFrame", sizeof(SsaoFrame)},
+                                   std::pair<const char*, size_t>{"SsaoKernel", sizeof(SsaoKernel)}}) {
+        const char* block = block_size.first;  // not a structured binding: clang 14's CAPTURE cannot capture one
+        const size_t size = block_size.second;
         CAPTURE(block);
         const GLuint index = gl.GetUniformBlockIndex(program, block);
         REQUIRE(index != GL_INVALID_INDEX);
