@@ -23,16 +23,33 @@
 // ray, and reading other rays through it misplaces the surface by far more
 // than the thickness: one such texel would shade the whole disc of pixels
 // whose marches cross it (hard case "normals: zero, NaN, ...").
+#ifdef SSAO_GRID_INPUT
+// From the grid: one 16-byte plane texel (grid.frag plane_texel) per step,
+// which holds the tangent plane as the depth it puts under each viewport
+// position: the plane's depth under the step's own position spf (the eye
+// ray through s) is z / (1 + g.(spf - u0)) in perspective, z + g.(spf - u0)
+// orthographic. The ray is grazing where the cosine between it and the plane
+// (the texel's, scaled to the step's ray) is 1e-3 or less; alpha 0 marks a
+// texel whose normal is unusable. False for the sky; q_step: the view-z
+// change of one depth-format step at the texel.
+bool step_surface(vec3 s, vec2 spf, ivec2 spx, Surface sf, out float in_front, out float q_step) {
+    vec4 plane = texelFetch(u_depth_tex, spx, 0);
+    float z = plane.x;
+    vec2 u0 = vec2(grid_pixel(spx)) + 0.5;
+    float g_du = dot(plane.yz, spf - u0);
+    float r = sf.ortho ? 1.0 : 1.0 + g_du;
+    float plane_z = sf.ortho ? z + g_du : z / r;
+    vec3 Q = view_position_from_z(u0, z);
+    float snapped = z - snap_to_texel_ray(s, sf.n, Q, sf.ortho).z;
+    in_front = plane.w * abs(r) > 1e-3 ? plane_z - s.z : snapped;
+    q_step = depth_step_z(z);  // read only for a surface
+    return z != SKY_Z;
+}
+#else
 float surface_in_front(vec3 s, vec3 Q, ivec2 spx, Surface sf) {
     vec3 nq;
-#ifdef SSAO_GRID_INPUT
-    // The grid pass stored it unit length already, zero when broken.
-    nq = texelFetch(u_normal_tex, spx, 0).xyz;
-    bool usable = dot(nq, nq) > 0.5;
-#else
     bool usable = raw_normal(spx, nq);
     nq = normalize(nq);  // not read when unusable
-#endif
     // Facing the camera (towards the eye from Q; orthographic: +z): a sign, no normalisation.
     float facing = sf.ortho ? nq.z : -dot(nq, Q);
     if (!usable || !(facing > 0.0)) return Q.z - snap_to_texel_ray(s, sf.n, Q, sf.ortho).z;
@@ -45,6 +62,16 @@ float surface_in_front(vec3 s, vec3 Q, ivec2 spx, Surface sf) {
     }
     return Q.z - snap_to_texel_ray(s, sf.n, Q, sf.ortho).z;
 }
+
+// From the host's textures at full resolution: the texel's depth through the
+// inverse projection and its normal.
+bool step_surface(vec3 s, vec2 spf, ivec2 spx, Surface sf, out float in_front, out float q_step) {
+    vec3 Q;
+    bool surface = texel_surface(spx, Q, q_step);
+    in_front = surface_in_front(s, Q, spx, sf);
+    return surface;
+}
+#endif
 
 void main() {
     Surface sf;
@@ -73,12 +100,11 @@ void main() {
             // step): off screen or behind the eye is unknown and open (the
             // texel read is then texel 0's, unused), and the sky blocks nothing.
             ivec2 spx;
-            bool on_screen = clip_to_texel(clip_p + clip_dir * t, spx);
-            vec3 Q;
-            float q_step;
-            bool surface = texel_surface(spx, Q, q_step);
+            vec2 spf;
+            bool on_screen = clip_to_texel(clip_p + clip_dir * t, spx, spf);
+            float in_front, q_step;  // in_front > 0: the surface hides the step
+            bool surface = step_surface(s, spf, spx, sf, in_front, q_step);
             float bias = consts.bias * sf.radius_scale + consts.depth_step_bias * (sf.step + q_step);
-            float in_front = surface_in_front(s, Q, spx, sf);  // > 0: the surface hides the step
             blocked = on_screen && surface && in_front >= bias && in_front <= thickness;
         }
         open += blocked ? 0.0 : 1.0;
