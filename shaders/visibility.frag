@@ -24,6 +24,55 @@
 // than the thickness: one such texel would shade the whole disc of pixels
 // whose marches cross it (hard case "normals: zero, NaN, ...").
 #ifdef SSAO_GRID_INPUT
+// The snap (snap_to_texel_ray) with the pixel's own normal n, set up once per
+// pixel so that a step needs only the texel's view z and picked pixel centre
+// u0: along the texel's ray Q = (z D(u0) + add_1, z) in perspective,
+// D(u0) = (view_mul_z u0 + view_add_z, 1), so n.Q = z (a.u0 + k) + e;
+// orthographic Q.xy = view_mul_1 u0 + view_add_1, so n.Q.xy = a.u0 + k. And
+// s.n = n.P + t (dir.n) along a direction. The perspective guard's |Q| is
+// |z| |D| with |D| taken at the pixel's own ray (within the march's few
+// pixels the ray's length changes by far less than the guard's margin).
+struct StepSetup {
+    vec2 a;
+    float k, e;
+    float pn;        // n.P
+    float grazing;   // perspective: 1e-3 |D(pixel)|
+    float inv_nz;    // orthographic: 1 / n.z
+    bool ortho_snap; // orthographic: |n.z| > 1e-3
+};
+
+StepSetup step_setup(Surface sf) {
+    StepSetup st;
+    vec3 n = sf.n;
+    st.pn = dot(n, sf.P);
+    st.inv_nz = 1.0 / n.z;
+    st.ortho_snap = abs(n.z) > 1e-3;
+    mat2 mul_z = mat2(consts.view_mul_z.xy, consts.view_mul_z.zw);
+    if (sf.ortho) {
+        st.a = n.xy * mat2(consts.view_mul_1.xy, consts.view_mul_1.zw);
+        st.k = dot(n.xy, consts.view_add_1);
+        st.e = 0.0;
+        st.grazing = 0.0;
+    } else {
+        st.a = n.xy * mul_z;
+        st.k = dot(n.xy, consts.view_add_z) + n.z;
+        st.e = dot(n.xy, consts.view_add_1);
+        vec2 up = vec2(grid_pixel(sf.vpx)) + 0.5;
+        st.grazing = 1e-3 * length(vec3(mul_z * up + consts.view_add_z, 1.0));
+    }
+    return st;
+}
+
+// The snap's depth gap at the texel (view z z, pixel centre u0) for a step
+// at view z sz with s.n = sn.
+float snap_in_front(float z, vec2 u0, float sz, float sn, StepSetup st, bool ortho) {
+    float l = dot(st.a, u0) + st.k;
+    float qn = ortho ? l : z * l + st.e;  // perspective: n.Q; orthographic: n.xy . Q.xy
+    float snap_z = ortho ? (sn - qn) * st.inv_nz : z * (sn / qn);
+    bool ok = ortho ? st.ortho_snap : abs(qn) > st.grazing * abs(z);
+    return z - (ok ? snap_z : sz);
+}
+
 // From the grid: one 16-byte plane texel (grid.frag plane_texel) per step,
 // which holds the tangent plane as the depth it puts under each viewport
 // position: the plane's depth under the step's own position spf (the eye
@@ -32,16 +81,15 @@
 // (the texel's, scaled to the step's ray) is 1e-3 or less; alpha 0 marks a
 // texel whose normal is unusable. False for the sky; q_step: the view-z
 // change of one depth-format step at the texel.
-bool step_surface(vec3 s, vec2 spf, ivec2 spx, Surface sf, out float in_front, out float q_step) {
+bool step_surface(vec3 s, float sn, vec2 spf, ivec2 spx, Surface sf, StepSetup st, out float in_front,
+                  out float q_step) {
     vec4 plane = texelFetch(u_depth_tex, spx, 0);
     float z = plane.x;
     vec2 u0 = vec2(grid_pixel(spx)) + 0.5;
     float g_du = dot(plane.yz, spf - u0);
     float r = sf.ortho ? 1.0 : 1.0 + g_du;
     float plane_z = sf.ortho ? z + g_du : z / r;
-    vec3 Q = view_position_from_z(u0, z);
-    float snapped = z - snap_to_texel_ray(s, sf.n, Q, sf.ortho).z;
-    in_front = plane.w * abs(r) > 1e-3 ? plane_z - s.z : snapped;
+    in_front = plane.w * abs(r) > 1e-3 ? plane_z - s.z : snap_in_front(z, u0, s.z, sn, st, sf.ortho);
     q_step = depth_step_z(z);  // read only for a surface
     return z != SKY_Z;
 }
@@ -65,7 +113,18 @@ float surface_in_front(vec3 s, vec3 Q, ivec2 spx, Surface sf) {
 
 // From the host's textures at full resolution: the texel's depth through the
 // inverse projection and its normal.
-bool step_surface(vec3 s, vec2 spf, ivec2 spx, Surface sf, out float in_front, out float q_step) {
+struct StepSetup {
+    float pn;
+};
+
+StepSetup step_setup(Surface sf) {
+    StepSetup st;
+    st.pn = 0.0;
+    return st;
+}
+
+bool step_surface(vec3 s, float sn, vec2 spf, ivec2 spx, Surface sf, StepSetup st, out float in_front,
+                  out float q_step) {
     vec3 Q;
     bool surface = texel_surface(spx, Q, q_step);
     in_front = surface_in_front(s, Q, spx, sf);
@@ -89,9 +148,11 @@ void main() {
     // Projection is linear: a step's clip coordinates are those of P plus
     // those of the direction times the distance (no matrix product per step).
     vec4 clip_p = consts.proj * vec4(sf.P, 1.0);
+    StepSetup st = step_setup(sf);
     for (int i = 0; i < count; ++i) {
         vec3 dir = sf.TBN * kernel.vectors[i].xyz;
         vec4 clip_dir = consts.proj * vec4(dir, 0.0);
+        float dn = dot(dir, sf.n);
         bool blocked = false;
         for (int j = 0; j < steps && !blocked; ++j) {
             float t = radius * (float(j) + jitter) / float(steps);
@@ -103,7 +164,7 @@ void main() {
             vec2 spf;
             bool on_screen = clip_to_texel(clip_p + clip_dir * t, spx, spf);
             float in_front, q_step;  // in_front > 0: the surface hides the step
-            bool surface = step_surface(s, spf, spx, sf, in_front, q_step);
+            bool surface = step_surface(s, st.pn + dn * t, spf, spx, sf, st, in_front, q_step);
             float bias = consts.bias * sf.radius_scale + consts.depth_step_bias * (sf.step + q_step);
             blocked = on_screen && surface && in_front >= bias && in_front <= thickness;
         }
