@@ -63,6 +63,21 @@ StepSetup step_setup(Surface sf) {
     return st;
 }
 
+// A step's clip coordinates in viewport-pixel units: (x_px w, y_px w, z, w),
+// still linear in the step, so a step's pixel position is one division.
+vec4 step_clip(vec4 c) { return vec4((c.xy + c.w) * (0.5 * vec2(consts.viewport_size)), c.zw); }
+
+// Where a step (step_clip's coordinates) lands, as clip_to_texel.
+bool step_to_texel(vec4 c, out ivec2 texel, out vec2 spf) {
+    texel = ivec2(0);
+    spf = vec2(0.0);
+    if (!(c.w > 0.0)) return false;
+    spf = c.xy / c.w;
+    if (any(lessThan(spf, vec2(0.0))) || any(greaterThanEqual(spf, vec2(consts.viewport_size)))) return false;
+    texel = ivec2(spf * (1.0 / float(u_scale)));
+    return true;
+}
+
 // The snap's depth gap at the texel (view z z, pixel centre u0) for a step
 // at view z sz with s.n = sn.
 float snap_in_front(float z, vec2 u0, float sz, float sn, StepSetup st, bool ortho) {
@@ -123,6 +138,9 @@ StepSetup step_setup(Surface sf) {
     return st;
 }
 
+vec4 step_clip(vec4 c) { return c; }
+bool step_to_texel(vec4 c, out ivec2 texel, out vec2 spf) { return clip_to_texel(c, texel, spf); }
+
 bool step_surface(vec3 s, float sn, vec2 spf, ivec2 spx, Surface sf, StepSetup st, out float in_front,
                   out float q_step) {
     vec3 Q;
@@ -147,11 +165,11 @@ void main() {
     float open = 0.0;
     // Projection is linear: a step's clip coordinates are those of P plus
     // those of the direction times the distance (no matrix product per step).
-    vec4 clip_p = consts.proj * vec4(sf.P, 1.0);
+    vec4 clip_p = step_clip(consts.proj * vec4(sf.P, 1.0));
     StepSetup st = step_setup(sf);
     for (int i = 0; i < count; ++i) {
         vec3 dir = sf.TBN * kernel.vectors[i].xyz;
-        vec4 clip_dir = consts.proj * vec4(dir, 0.0);
+        vec4 clip_dir = step_clip(consts.proj * vec4(dir, 0.0));
         float dn = dot(dir, sf.n);
         bool blocked = false;
         for (int j = 0; j < steps && !blocked; ++j) {
@@ -162,7 +180,7 @@ void main() {
             // texel read is then texel 0's, unused), and the sky blocks nothing.
             ivec2 spx;
             vec2 spf;
-            bool on_screen = clip_to_texel(clip_p + clip_dir * t, spx, spf);
+            bool on_screen = step_to_texel(clip_p + clip_dir * t, spx, spf);
             float in_front, q_step;  // in_front > 0: the surface hides the step
             bool surface = step_surface(s, st.pn + dn * t, spf, spx, sf, st, in_front, q_step);
             float bias = consts.bias * sf.radius_scale + consts.depth_step_bias * (sf.step + q_step);
