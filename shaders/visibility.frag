@@ -30,14 +30,14 @@
 // D(u0) = (view_mul_z u0 + view_add_z, 1), so n.Q = z (a.u0 + k) + e;
 // orthographic Q.xy = view_mul_1 u0 + view_add_1, so n.Q.xy = a.u0 + k. And
 // s.n = n.P + t (dir.n) along a direction. The perspective guard's |Q| is
-// |z| |D| with |D| taken at the pixel's own ray (within the march's few
-// pixels the ray's length changes by far less than the guard's margin).
+// |z| |D| with |D| taken at the pixel's own ray: across a march the two
+// rays' lengths differ by a few percent, the guard's threshold with them.
 struct StepSetup {
     vec2 a;
     float k, e;
     float pn;        // n.P
     float grazing;   // perspective: 1e-3 |D(pixel)|
-    float inv_nz;    // orthographic: 1 / n.z
+    float nz;        // orthographic: n.z
     bool ortho_snap; // orthographic: |n.z| > 1e-3
 };
 
@@ -45,7 +45,7 @@ StepSetup step_setup(Surface sf) {
     StepSetup st;
     vec3 n = sf.n;
     st.pn = dot(n, sf.P);
-    st.inv_nz = 1.0 / n.z;
+    st.nz = n.z;
     st.ortho_snap = abs(n.z) > 1e-3;
     mat2 mul_z = mat2(consts.view_mul_z.xy, consts.view_mul_z.zw);
     if (sf.ortho) {
@@ -72,20 +72,10 @@ bool step_to_texel(vec4 c, out ivec2 texel, out vec2 spf) {
     texel = ivec2(0);
     spf = vec2(0.0);
     if (!(c.w > 0.0)) return false;
-    spf = c.xy / c.w;
+    spf = c.xy * (1.0 / c.w);
     if (any(lessThan(spf, vec2(0.0))) || any(greaterThanEqual(spf, vec2(consts.viewport_size)))) return false;
     texel = ivec2(spf * (1.0 / float(u_scale)));
     return true;
-}
-
-// The snap's depth gap at the texel (view z z, pixel centre u0) for a step
-// at view z sz with s.n = sn.
-float snap_in_front(float z, vec2 u0, float sz, float sn, StepSetup st, bool ortho) {
-    float l = dot(st.a, u0) + st.k;
-    float qn = ortho ? l : z * l + st.e;  // perspective: n.Q; orthographic: n.xy . Q.xy
-    float snap_z = ortho ? (sn - qn) * st.inv_nz : z * (sn / qn);
-    bool ok = ortho ? st.ortho_snap : abs(qn) > st.grazing * abs(z);
-    return z - (ok ? snap_z : sz);
 }
 
 // From the grid: one 16-byte plane texel (grid.frag plane_texel) per step,
@@ -94,8 +84,11 @@ float snap_in_front(float z, vec2 u0, float sz, float sn, StepSetup st, bool ort
 // ray through s) is z / (1 + g.(spf - u0)) in perspective, z + g.(spf - u0)
 // orthographic. The ray is grazing where the cosine between it and the plane
 // (the texel's, scaled to the step's ray) is 1e-3 or less; alpha 0 marks a
-// texel whose normal is unusable. False for the sky; q_step: the view-z
-// change of one depth-format step at the texel.
+// texel whose normal is unusable. The snap in its place (StepSetup): the
+// step's plane s.n = sn met by the texel's ray, perspective at view z
+// z sn / n.Q, orthographic (sn - n.xy Q.xy) / n.z. Both are worked out and
+// one division serves whichever is read. False for the sky; q_step: the
+// view-z change of one depth-format step at the texel.
 bool step_surface(vec3 s, float sn, vec2 spf, ivec2 spx, Surface sf, StepSetup st, out float in_front,
                   out float q_step) {
     vec4 plane = texelFetch(u_depth_tex, spx, 0);
@@ -103,8 +96,14 @@ bool step_surface(vec3 s, float sn, vec2 spf, ivec2 spx, Surface sf, StepSetup s
     vec2 u0 = vec2(grid_pixel(spx)) + 0.5;
     float g_du = dot(plane.yz, spf - u0);
     float r = sf.ortho ? 1.0 : 1.0 + g_du;
-    float plane_z = sf.ortho ? z + g_du : z / r;
-    in_front = plane.w * abs(r) > 1e-3 ? plane_z - s.z : snap_in_front(z, u0, s.z, sn, st, sf.ortho);
+    bool tangent = plane.w * abs(r) > 1e-3;
+    float l = dot(st.a, u0) + st.k;
+    float qn = sf.ortho ? l : z * l + st.e;  // perspective: n.Q; orthographic: n.xy . Q.xy
+    bool snap = sf.ortho ? st.ortho_snap : abs(qn) > st.grazing * abs(z);
+    float num = tangent ? (sf.ortho ? z + g_du : z) : (sf.ortho ? sn - qn : z * sn);
+    float den = tangent ? r : (sf.ortho ? st.nz : qn);
+    float q = num / den;  // the tangent plane's view z under s, or the snapped step's
+    in_front = tangent ? q - s.z : z - (snap ? q : s.z);
     q_step = depth_step_z(z);  // read only for a surface
     return z != SKY_Z;
 }
@@ -160,6 +159,7 @@ void main() {
     float radius = sf.radius;  // the step length scales with the per-pixel radius (RADIUS_PIXELS)
     float thickness = consts.thickness * sf.radius_scale;
     int steps = consts.step_count;
+    float step_length = radius / float(steps);
     float jitter = step_jitter(sf.vpx);
     int count = consts.sample_count;
     float open = 0.0;
@@ -173,7 +173,11 @@ void main() {
         float dn = dot(dir, sf.n);
         bool blocked = false;
         for (int j = 0; j < steps && !blocked; ++j) {
+#ifdef SSAO_GRID_INPUT
+            float t = (float(j) + jitter) * step_length;
+#else
             float t = radius * (float(j) + jitter) / float(steps);
+#endif
             vec3 s = sf.P + dir * t;
             // Every step does the same work and a mask decides (no branch per
             // step): off screen or behind the eye is unknown and open (the
