@@ -87,8 +87,7 @@ vec3 normal_from_depth(ivec2 p, float d0, vec3 P0, vec3 to_eye) {
 // The plane texel of a surface at view z z, picked pixel centre u0, unit
 // normal n (zero when broken): its tangent plane as the depth it puts under
 // every viewport position u, so that a march step reads the surface under
-// its own screen position from one texel (visibility.frag
-// surface_in_front). Along a pixel's ray X = D(u) z + (view_add_1, 0),
+// its own screen position from one texel (visibility.frag step_surface). Along a pixel's ray X = D(u) z + (view_add_1, 0),
 // D(u) = (view_mul_z u + view_add_z, 1) (view_position_from_z), so on the
 // plane n.X = n.Q:
 //   perspective:  1/z is affine in u, z(u) = z / (1 + g.(u - u0)),

@@ -126,7 +126,7 @@ float surface_in_front(vec3 s, vec3 Q, ivec2 spx, Surface sf) {
 }
 
 // From the host's textures at full resolution: the texel's depth through the
-// inverse projection and its normal.
+// inverse projection and its normal, and nothing set up per pixel.
 struct StepSetup {
     float pn;
 };
