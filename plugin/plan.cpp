@@ -55,22 +55,24 @@ uint32_t sampling_feature_variant(const ssao_settings& s, const AnalysedInputs& 
     return v;
 }
 
-// The textures of the grid pass: its view z (R32F, what each march step
-// reads) and its normal (RGBA32F, read once per pixel).
+// The textures of the grid pass: its plane texels (RGBA32F: view z and the
+// tangent plane as depth over the screen, what each march step reads; the
+// other passes read the view z alone) and its normal (RGBA32F, read once per
+// pixel).
 struct GridTextures {
-    TexRef z, normal;
+    TexRef plane, normal;
 };
 
 // The grid pass: one picked texel per scale x scale block (scale 1: every
-// pixel) -> R32F view z and RGBA32F view-space normal, in one draw to two
-// targets. It runs below full resolution, for multisampled inputs (it reads
-// one sample, so no later pass sees the multisampled textures) and when
+// pixel) -> RGBA32F plane texels and RGBA32F view-space normals, in one draw
+// to two targets. It runs below full resolution, for multisampled inputs (it
+// reads one sample, so no later pass sees the multisampled textures) and when
 // normals come from depth (it rebuilds them once, not in every sampling step).
 GridTextures add_grid_pass(Builder& b, const AnalysedInputs& in, int scale, const Rect& low) {
     GridTextures g;
-    g.z = TexRef::of(Source::intermediate, b.intermediate(low.width, low.height, TexFormat::r32f));
+    g.plane = TexRef::of(Source::intermediate, b.intermediate(low.width, low.height, TexFormat::rgba32f));
     g.normal = TexRef::of(Source::intermediate, b.intermediate(low.width, low.height, TexFormat::rgba32f));
-    Pass& down = b.add(PassKind::grid, g.z, low);
+    Pass& down = b.add(PassKind::grid, g.plane, low);
     down.target2 = g.normal;
     down.inputs[SSAO_UNIT_DEPTH] = TexRef::of(Source::depth);
     if (!in.normals_from_depth) down.inputs[SSAO_UNIT_NORMAL] = TexRef::of(Source::normal);
@@ -106,7 +108,7 @@ void plan_sampling(Builder& b, const ssao_settings& s, const AnalysedInputs& in,
     const TexRef ao_target =
         ao_to_output ? output : TexRef::of(Source::intermediate, b.intermediate(lw, lh, TexFormat::rg32f));
     Pass& ao = b.add(estimator, ao_target, ao_to_output ? final_rect : low);
-    ao.inputs[SSAO_UNIT_DEPTH] = grid ? grid_tex.z : TexRef::of(Source::depth);
+    ao.inputs[SSAO_UNIT_DEPTH] = grid ? grid_tex.plane : TexRef::of(Source::depth);
     ao.inputs[SSAO_UNIT_NORMAL] = grid ? grid_tex.normal : TexRef::of(Source::normal);
     ao.inputs[SSAO_UNIT_NOISE] = TexRef::of(Source::noise);
     ao.scale = scale;
@@ -184,7 +186,7 @@ bool plan_normals_view(Builder& b, const ssao_settings& s, const AnalysedInputs&
     if (s.debug_view == SSAO_DEBUG_VIEW_RECONSTRUCTED_NORMALS) grid_in.normals_from_depth = true;
     const GridTextures grid = add_grid_pass(b, grid_in, 1, Rect{0, 0, in.viewport[2], in.viewport[3]});
     Pass& view = b.add(PassKind::normals_view, output, final_rect);
-    view.inputs[SSAO_UNIT_DEPTH] = grid.z;
+    view.inputs[SSAO_UNIT_DEPTH] = grid.plane;
     view.inputs[SSAO_UNIT_NORMAL] = grid.normal;
     view.variant = variant::grid_input;
     return true;

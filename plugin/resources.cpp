@@ -19,7 +19,6 @@ GlFormat gl_format(TexFormat f) {
     switch (f) {
         case TexFormat::rg32f: return {GL_RG32F, GL_RG, GL_FLOAT};
         case TexFormat::rgba32f: return {GL_RGBA32F, GL_RGBA, GL_FLOAT};
-        case TexFormat::r32f: return {GL_R32F, GL_RED, GL_FLOAT};
         case TexFormat::r16f: return {GL_R16F, GL_RED, GL_FLOAT};
         case TexFormat::r8: return {GL_R8, GL_RED, GL_UNSIGNED_BYTE};
         case TexFormat::rgba8: return {GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE};

@@ -47,10 +47,11 @@ ivec2 grid_pixel(ivec2 t) {
 // normals; variant GRID_INPUT reads view z instead: texel_surface below).
 float fetch_depth(ivec2 t) { return input_depth(t); }
 
-// The grid pass stores view z (R32F) and the AO pass hands the blur and the
-// upsample its view z beside the AO (RG32F), so a later pass fetches one
-// value per texel and rebuilds nothing through the inverse projection. The
-// sky (and a depth whose position is not finite) carries this marker instead.
+// The grid pass stores view z (its plane texels' .r, grid.frag) and the AO
+// pass hands the blur and the upsample its view z beside the AO (RG32F), so a
+// later pass fetches one texel and rebuilds nothing through the inverse
+// projection. The sky (and a depth whose position is not finite) carries this
+// marker instead.
 const float SKY_Z = 3.0e38;
 
 bool finite3(vec3 v) { return all(lessThan(abs(v), vec3(3.0e38))) && !any(isnan(v)); }
@@ -114,8 +115,8 @@ float view_z_of_depth(ivec2 p, float d) {
 // change of one depth-format step there. False for the sky (and a depth whose
 // position is not finite, which the grid pass stores as sky). Variant
 // GRID_INPUT (below full resolution, multisampled inputs, normals from depth):
-// one 4-byte view z from the grid pass's R32F texture, the position by
-// multiply-adds. Else the host's depth through the inverse projection.
+// the view z of the grid pass's plane texel, the position by multiply-adds.
+// Else the host's depth through the inverse projection.
 #ifdef SSAO_GRID_INPUT
 bool texel_surface(ivec2 t, out vec3 P, out float step) {
     float z = texelFetch(u_depth_tex, t, 0).r;

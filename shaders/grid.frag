@@ -3,10 +3,11 @@
 // z, never an average, so no depth floats in the gap of a silhouette - and its normal in view
 // space: the host's decoded (unit length; zero when broken) or, variant
 // NORMALS_FROM_DEPTH, rebuilt from the host's depth around the picked pixel.
-// Two outputs (one framebuffer, two colour attachments): R32F view z of the
-// picked pixel (SKY_Z for the sky and for a depth whose position is not
-// finite), what every march step reads, 4 bytes; and RGBA32F (normal xyz, 0),
-// read once per pixel by the sampling pass.
+// Two outputs (one framebuffer, two colour attachments), both RGBA32F: the
+// plane texel (plane_texel below), what every march step reads, 16 bytes,
+// whose .r is the picked pixel's view z (SKY_Z for the sky and for a depth
+// whose position is not finite), all that the other readers use; and
+// (normal xyz, 0), read once per pixel by the sampling pass.
 
 layout(location = 1) out vec4 o_normal;
 
@@ -83,6 +84,39 @@ vec3 normal_from_depth(ivec2 p, float d0, vec3 P0, vec3 to_eye) {
 }
 #endif
 
+// The plane texel of a surface at view z z, picked pixel centre u0, unit
+// normal n (zero when broken): its tangent plane as the depth it puts under
+// every viewport position u, so that a march step reads the surface under
+// its own screen position from one texel (visibility.frag step_surface). Along a pixel's ray X = D(u) z + (view_add_1, 0),
+// D(u) = (view_mul_z u + view_add_z, 1) (view_position_from_z), so on the
+// plane n.X = n.Q:
+//   perspective:  1/z is affine in u, z(u) = z / (1 + g.(u - u0)),
+//                 g = (n.xy view_mul_z) / (n.D(u0));
+//   orthographic: z is affine in u,    z(u) = z + g.(u - u0),
+//                 g = -(n.xy view_mul_1) / n.z.
+// Alpha: the cosine between the eye ray at u0 and the plane (|n.D(u0)| /
+// |D(u0)|; orthographic n.z), which the march scales by the step's
+// (1 + g.(u - u0)) to test for a grazing ray; 0 marks a normal the march
+// must not use as a tangent plane: broken, facing away from the camera, or
+// so nearly edge-on to its own ray that g is not finite.
+vec4 plane_texel(vec2 u0, float z, vec3 n) {
+    vec2 g;
+    float cos0;
+    if (consts.orthographic != 0) {
+        g = -(n.xy * mat2(consts.view_mul_1.xy, consts.view_mul_1.zw)) / n.z;
+        cos0 = n.z;  // facing the camera: +z
+    } else {
+        vec3 D0 = vec3(mat2(consts.view_mul_z.xy, consts.view_mul_z.zw) * u0 + consts.view_add_z, 1.0);
+        float nd = dot(n, D0);
+        g = (n.xy * mat2(consts.view_mul_z.xy, consts.view_mul_z.zw)) / nd;
+        // Facing the camera: n points from the plane towards the eye, whose
+        // side of the plane n.X = n.Q is where n.Q - n.eye = z n.D(u0) < 0.
+        cos0 = -z * nd > 0.0 ? abs(nd) / length(D0) : 0.0;
+    }
+    bool usable = dot(n, n) > 0.5 && cos0 > 0.0 && all(lessThan(abs(g), vec2(3.0e38)));
+    return usable ? vec4(z, g, cos0) : vec4(z, 0.0, 0.0, 0.0);
+}
+
 void main() {
     ivec2 t = ivec2(gl_FragCoord.xy) - u_target_origin;
     ivec2 p = grid_pixel(t);
@@ -101,6 +135,7 @@ void main() {
         n = decode_raw_normal(input_normal(p), n) ? normalize(n) : vec3(0.0);
 #endif
     }
-    o_ao = vec4(is_sky(d) || !finite3(P) ? SKY_Z : P.z, 0.0, 0.0, 1.0);
+    bool surface = !is_sky(d) && finite3(P);
+    o_ao = surface ? plane_texel(vec2(p) + 0.5, P.z, n) : vec4(SKY_Z, 0.0, 0.0, 0.0);
     o_normal = vec4(n, 0.0);
 }

@@ -23,16 +23,95 @@
 // ray, and reading other rays through it misplaces the surface by far more
 // than the thickness: one such texel would shade the whole disc of pixels
 // whose marches cross it (hard case "normals: zero, NaN, ...").
+#ifdef SSAO_GRID_INPUT
+// The snap (snap_to_texel_ray) with the pixel's own normal n, set up once per
+// pixel so that a step needs only the texel's view z and picked pixel centre
+// u0: along the texel's ray Q = (z D(u0) + add_1, z) in perspective,
+// D(u0) = (view_mul_z u0 + view_add_z, 1), so n.Q = z (a.u0 + k) + e;
+// orthographic Q.xy = view_mul_1 u0 + view_add_1, so n.Q.xy = a.u0 + k. And
+// s.n = n.P + t (dir.n) along a direction. The perspective guard's |Q| is
+// |z| |D| with |D| taken at the pixel's own ray: across a march the two
+// rays' lengths differ by a few percent, the guard's threshold with them.
+struct StepSetup {
+    vec2 a;
+    float k, e;
+    float pn;        // n.P
+    float grazing;   // perspective: 1e-3 |D(pixel)|
+    float nz;        // orthographic: n.z
+    bool ortho_snap; // orthographic: |n.z| > 1e-3
+};
+
+StepSetup step_setup(Surface sf) {
+    StepSetup st;
+    vec3 n = sf.n;
+    st.pn = dot(n, sf.P);
+    st.nz = n.z;
+    st.ortho_snap = abs(n.z) > 1e-3;
+    mat2 mul_z = mat2(consts.view_mul_z.xy, consts.view_mul_z.zw);
+    if (sf.ortho) {
+        st.a = n.xy * mat2(consts.view_mul_1.xy, consts.view_mul_1.zw);
+        st.k = dot(n.xy, consts.view_add_1);
+        st.e = 0.0;
+        st.grazing = 0.0;
+    } else {
+        st.a = n.xy * mul_z;
+        st.k = dot(n.xy, consts.view_add_z) + n.z;
+        st.e = dot(n.xy, consts.view_add_1);
+        vec2 up = vec2(grid_pixel(sf.vpx)) + 0.5;
+        st.grazing = 1e-3 * length(vec3(mul_z * up + consts.view_add_z, 1.0));
+    }
+    return st;
+}
+
+// A step's clip coordinates in viewport-pixel units: (x_px w, y_px w, z, w),
+// still linear in the step, so a step's pixel position is one division.
+vec4 step_clip(vec4 c) { return vec4((c.xy + c.w) * (0.5 * vec2(consts.viewport_size)), c.zw); }
+
+// Where a step (step_clip's coordinates) lands, as clip_to_texel.
+bool step_to_texel(vec4 c, out ivec2 texel, out vec2 spf) {
+    texel = ivec2(0);
+    spf = vec2(0.0);
+    if (!(c.w > 0.0)) return false;
+    spf = c.xy * (1.0 / c.w);
+    if (any(lessThan(spf, vec2(0.0))) || any(greaterThanEqual(spf, vec2(consts.viewport_size)))) return false;
+    texel = ivec2(spf * (1.0 / float(u_scale)));
+    return true;
+}
+
+// From the grid: one 16-byte plane texel (grid.frag plane_texel) per step,
+// which holds the tangent plane as the depth it puts under each viewport
+// position: the plane's depth under the step's own position spf (the eye
+// ray through s) is z / (1 + g.(spf - u0)) in perspective, z + g.(spf - u0)
+// orthographic. The ray is grazing where the cosine between it and the plane
+// (the texel's, scaled to the step's ray) is 1e-3 or less; alpha 0 marks a
+// texel whose normal is unusable. The snap in its place (StepSetup): the
+// step's plane s.n = sn met by the texel's ray, perspective at view z
+// z sn / n.Q, orthographic (sn - n.xy Q.xy) / n.z. Both are worked out and
+// one division serves whichever is read. False for the sky; q_step: the
+// view-z change of one depth-format step at the texel.
+bool step_surface(vec3 s, float sn, vec2 spf, ivec2 spx, Surface sf, StepSetup st, out float in_front,
+                  out float q_step) {
+    vec4 plane = texelFetch(u_depth_tex, spx, 0);
+    float z = plane.x;
+    vec2 u0 = vec2(grid_pixel(spx)) + 0.5;
+    float g_du = dot(plane.yz, spf - u0);
+    float r = sf.ortho ? 1.0 : 1.0 + g_du;
+    bool tangent = plane.w * abs(r) > 1e-3;
+    float l = dot(st.a, u0) + st.k;
+    float qn = sf.ortho ? l : z * l + st.e;  // perspective: n.Q; orthographic: n.xy . Q.xy
+    bool snap = sf.ortho ? st.ortho_snap : abs(qn) > st.grazing * abs(z);
+    float num = tangent ? (sf.ortho ? z + g_du : z) : (sf.ortho ? sn - qn : z * sn);
+    float den = tangent ? r : (sf.ortho ? st.nz : qn);
+    float q = num / den;  // the tangent plane's view z under s, or the snapped step's
+    in_front = tangent ? q - s.z : z - (snap ? q : s.z);
+    q_step = depth_step_z(z);  // read only for a surface
+    return z != SKY_Z;
+}
+#else
 float surface_in_front(vec3 s, vec3 Q, ivec2 spx, Surface sf) {
     vec3 nq;
-#ifdef SSAO_GRID_INPUT
-    // The grid pass stored it unit length already, zero when broken.
-    nq = texelFetch(u_normal_tex, spx, 0).xyz;
-    bool usable = dot(nq, nq) > 0.5;
-#else
     bool usable = raw_normal(spx, nq);
     nq = normalize(nq);  // not read when unusable
-#endif
     // Facing the camera (towards the eye from Q; orthographic: +z): a sign, no normalisation.
     float facing = sf.ortho ? nq.z : -dot(nq, Q);
     if (!usable || !(facing > 0.0)) return Q.z - snap_to_texel_ray(s, sf.n, Q, sf.ortho).z;
@@ -46,6 +125,30 @@ float surface_in_front(vec3 s, vec3 Q, ivec2 spx, Surface sf) {
     return Q.z - snap_to_texel_ray(s, sf.n, Q, sf.ortho).z;
 }
 
+// From the host's textures at full resolution: the texel's depth through the
+// inverse projection and its normal, and nothing set up per pixel.
+struct StepSetup {
+    float pn;
+};
+
+StepSetup step_setup(Surface sf) {
+    StepSetup st;
+    st.pn = 0.0;
+    return st;
+}
+
+vec4 step_clip(vec4 c) { return c; }
+bool step_to_texel(vec4 c, out ivec2 texel, out vec2 spf) { return clip_to_texel(c, texel, spf); }
+
+bool step_surface(vec3 s, float sn, vec2 spf, ivec2 spx, Surface sf, StepSetup st, out float in_front,
+                  out float q_step) {
+    vec3 Q;
+    bool surface = texel_surface(spx, Q, q_step);
+    in_front = surface_in_front(s, Q, spx, sf);
+    return surface;
+}
+#endif
+
 void main() {
     Surface sf;
     if (!load_surface(sf)) { o_ao = result(1.0, SKY_Z); return; }
@@ -56,29 +159,35 @@ void main() {
     float radius = sf.radius;  // the step length scales with the per-pixel radius (RADIUS_PIXELS)
     float thickness = consts.thickness * sf.radius_scale;
     int steps = consts.step_count;
+    float step_length = radius / float(steps);
     float jitter = step_jitter(sf.vpx);
     int count = consts.sample_count;
     float open = 0.0;
     // Projection is linear: a step's clip coordinates are those of P plus
     // those of the direction times the distance (no matrix product per step).
-    vec4 clip_p = consts.proj * vec4(sf.P, 1.0);
+    vec4 clip_p = step_clip(consts.proj * vec4(sf.P, 1.0));
+    StepSetup st = step_setup(sf);
     for (int i = 0; i < count; ++i) {
         vec3 dir = sf.TBN * kernel.vectors[i].xyz;
-        vec4 clip_dir = consts.proj * vec4(dir, 0.0);
+        vec4 clip_dir = step_clip(consts.proj * vec4(dir, 0.0));
+        float dn = dot(dir, sf.n);
         bool blocked = false;
         for (int j = 0; j < steps && !blocked; ++j) {
+#ifdef SSAO_GRID_INPUT
+            float t = (float(j) + jitter) * step_length;
+#else
             float t = radius * (float(j) + jitter) / float(steps);
+#endif
             vec3 s = sf.P + dir * t;
             // Every step does the same work and a mask decides (no branch per
             // step): off screen or behind the eye is unknown and open (the
             // texel read is then texel 0's, unused), and the sky blocks nothing.
             ivec2 spx;
-            bool on_screen = clip_to_texel(clip_p + clip_dir * t, spx);
-            vec3 Q;
-            float q_step;
-            bool surface = texel_surface(spx, Q, q_step);
+            vec2 spf;
+            bool on_screen = step_to_texel(clip_p + clip_dir * t, spx, spf);
+            float in_front, q_step;  // in_front > 0: the surface hides the step
+            bool surface = step_surface(s, st.pn + dn * t, spf, spx, sf, st, in_front, q_step);
             float bias = consts.bias * sf.radius_scale + consts.depth_step_bias * (sf.step + q_step);
-            float in_front = surface_in_front(s, Q, spx, sf);  // > 0: the surface hides the step
             blocked = on_screen && surface && in_front >= bias && in_front <= thickness;
         }
         open += blocked ? 0.0 : 1.0;

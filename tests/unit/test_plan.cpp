@@ -308,9 +308,9 @@ TEST_CASE("plan: half resolution of 641x359 - downsample, AO and blur on a 321x1
         CHECK(p.passes_run() == uint32_t(SSAO_PASS_GRID | SSAO_PASS_OCCLUSION | SSAO_PASS_BLUR_X | SSAO_PASS_BLUR_Y |
                                          SSAO_PASS_UPSAMPLE));
         // ceil(641/2) x ceil(359/2): the last column and row are blocks of one pixel, not dropped.
-        // The grid pass's view z (R32F) and normals (RGBA32F), the AO, the blur's x pass.
+        // The grid pass's plane texels and normals (both RGBA32F), the AO, the blur's x pass.
         REQUIRE(p.intermediate_count == 4);
-        CHECK(p.intermediates[0].format == TexFormat::r32f);
+        CHECK(p.intermediates[0].format == TexFormat::rgba32f);
         CHECK(p.intermediates[1].format == TexFormat::rgba32f);
         for (int i = 0; i < p.intermediate_count; ++i) {
             CHECK(p.intermediates[i].width == 321);
@@ -449,9 +449,9 @@ TEST_CASE("plan: multisampled inputs or normals from depth add the grid pass at 
                     const int scale = res == SSAO_RESOLUTION_HALF ? 2 : 1;
                     CHECK(first.scale == scale);
                     CHECK(p.intermediates[first.target.index].width == (67 + scale - 1) / scale);
-                    CHECK(p.intermediates[first.target.index].format == TexFormat::r32f);
+                    CHECK(p.intermediates[first.target.index].format == TexFormat::rgba32f);
                     CHECK(p.intermediates[first.target2.index].format == TexFormat::rgba32f);
-                    // The sampling pass reads a 4-byte view z per step and the normals once.
+                    // The sampling pass reads the plane texels per step and the normals once.
                     for (int i = 0; i < p.pass_count; ++i)
                         if (p.passes[i].kind == PassKind::kernel) {
                             CHECK(p.passes[i].inputs[SSAO_UNIT_DEPTH] == first.target);

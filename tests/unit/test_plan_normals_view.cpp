@@ -48,7 +48,7 @@ TEST_CASE("plan: the normal views run the full-resolution grid pass and the view
                         CHECK(grid.target.source == Source::intermediate);
                         CHECK(p.intermediates[grid.target.index].width == 67);
                         CHECK(p.intermediates[grid.target.index].height == 41);
-                        CHECK(p.intermediates[grid.target.index].format == TexFormat::r32f);
+                        CHECK(p.intermediates[grid.target.index].format == TexFormat::rgba32f);
                         CHECK(p.intermediates[grid.target2.index].format == TexFormat::rgba32f);
                         const bool rebuild = from_depth || view == SSAO_DEBUG_VIEW_RECONSTRUCTED_NORMALS;
                         CHECK(((grid.variant & variant::normals_from_depth) != 0) == rebuild);
