@@ -73,9 +73,7 @@ bool step_to_texel(vec4 c, out ivec2 texel, out vec2 spf) {
     spf = vec2(0.0);
     if (!(c.w > 0.0)) return false;
     spf = c.xy * (1.0 / c.w);
-    if (any(lessThan(spf, vec2(0.0))) || any(greaterThanEqual(spf, vec2(consts.viewport_size)))) return false;
-    texel = ivec2(spf * (1.0 / float(u_scale)));
-    return true;
+    return pixel_to_texel(spf, texel);
 }
 
 // From the grid: one 16-byte plane texel (grid.frag plane_texel) per step,
@@ -176,6 +174,8 @@ void main() {
 #ifdef SSAO_GRID_INPUT
             float t = (float(j) + jitter) * step_length;
 #else
+            // The full-resolution path keeps its own rounding: its output is
+            // compared bit for bit against the golden images.
             float t = radius * (float(j) + jitter) / float(steps);
 #endif
             vec3 s = sf.P + dir * t;
