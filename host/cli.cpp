@@ -330,7 +330,7 @@ std::string help_text(const ssao_settings* d, const std::string& default_scene, 
          "  --blur-tolerance T      depth-aware blur's relative depth tolerance, (0, 1] (default "
       << def([&](const ssao_settings& s) { return num(s.blur_depth_tolerance); }) << ")\n"
          "  --thickness T           visibility: how far behind the depth buffer a step still counts as blocked,\n"
-         "                          view units, > 0 (default "
+         "                          view units, > 0 (default radius x (0.5 + 1.5 / steps): "
       << def([&](const ssao_settings& s) { return num(s.thickness / s.radius) + " x radius"; }) << ")\n"
          "  --steps N               visibility: steps per direction, 1.." << SSAO_MAX_STEPS << " (default "
       << def([](const ssao_settings& s) { return std::to_string(s.step_count); }) << ")\n"

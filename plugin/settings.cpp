@@ -103,12 +103,12 @@ ssao_status resolve_march(ssao_settings& r, const PresetRow& defaults, std::stri
 
     if (!finite(r.thickness) || r.thickness < 0.0f)
         return fail(why, SSAO_ERROR_INVALID_VALUE, "thickness must be a finite number > 0");
-    if (r.thickness == 0.0f) r.thickness = std::max(kDefaultThicknessFraction * r.radius, std::numeric_limits<float>::min());
-
     if (r.step_count == 0) r.step_count = defaults.step_count;
     if (r.step_count > SSAO_MAX_STEPS)
         return fail(why, SSAO_ERROR_INVALID_VALUE,
                     "step_count " + std::to_string(r.step_count) + " is outside 1..32");
+    if (r.thickness == 0.0f)
+        r.thickness = std::max(default_thickness(r.radius, r.step_count), std::numeric_limits<float>::min());
 
     if (!raw_enum_at_most(r.resolution, SSAO_RESOLUTION_QUARTER))
         return fail(why, SSAO_ERROR_INVALID_ENUM, "resolution is not an ssao_resolution");

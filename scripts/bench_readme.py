@@ -5,8 +5,9 @@ Reads a run of ssao-bench (bench.csv, presets.txt in DIR, default docs/bench)
 and rewrites the blocks (scripts/doc_blocks.py) between <!-- bench:NAME --> and
 <!-- /bench:NAME --> markers: the preset table rows, the summary per scene,
 the targets (met or missed, as measured over every scene, view and radius),
-every case, the time-against-pixels table and the half/quarter-resolution
-ratios. Time is process CPU time (ssao-bench, LP_NUM_THREADS=1). Every number in those blocks comes from the run; nothing is
+every case, the time-against-pixels table, the half/quarter-resolution
+ratios and, from thickness.csv (scripts/thickness-sweep.sh), the thickness
+table. Time is process CPU time (ssao-bench, LP_NUM_THREADS=1). Every number in those blocks comes from the run; nothing is
 typed by hand.
 
 usage: scripts/bench_readme.py [DIR] [DOC...]   (default: README.md docs/*.md)
@@ -117,6 +118,8 @@ def main():
     blocks["cases"] = cases_table(base, limit, of)
     blocks["time"] = time_table(rows, widths, height, of)
     blocks["resolution"] = resolution_table(standard, scenes)
+    if os.path.exists(d + "/thickness.csv"):
+        blocks["thickness"] = thickness_table(d + "/thickness.csv")
     write_blocks(blocks, docs, "bench_readme")
     print("bench_readme: %d blocks written from %s" % (len(blocks), d))
 
@@ -212,6 +215,24 @@ def time_table(rows, widths, height, of):
                 w, height[w], label, f(median(r["cpu_ms"] for r in v)), f(median(r["x_textbook_cpu"] for r in v), 3),
                 f(median(r["x_floor_cpu"] for r in v), 1), f(median(r["median_ms"] for r in v)),
                 f(median(r["wall_ms"] for r in v))))
+    return "\n".join(lines)
+
+
+def thickness_table(path):
+    """scripts/thickness-sweep.sh's run: mean PSNR per configuration and T, the best T, the derived default."""
+    rows = list(csv.DictReader(open(path)))
+    configs, ts = [], sorted({float(r["thickness_of_r"]) for r in rows})
+    for r in rows:
+        if r["config"] not in configs:
+            configs.append(r["config"])
+    lines = ["| march | steps | " + " | ".join("T = %g R" % t for t in ts) + " | best | default R (0.5 + 1.5 / steps) |",
+             "|---|---:|" + "---:|" * len(ts) + "---:|---:|"]
+    for c in configs:
+        rs = [r for r in rows if r["config"] == c]
+        means = [mean(float(r["psnr"]) for r in rs if float(r["thickness_of_r"]) == t) for t in ts]
+        steps = int(rs[0]["steps"])
+        best = ts[max(range(len(ts)), key=lambda i: means[i])]
+        lines.append("| %s | %d | %s | %g R | %.3g R |" % (c, steps, " | ".join(f(m) for m in means), best, 0.5 + 1.5 / steps))
     return "\n".join(lines)
 
 

@@ -1,8 +1,11 @@
 #!/usr/bin/env bash
-# The thickness rule of the visibility estimator, measured: DEFAULT with
-# T = 0.5, 0.75, 1 and 1.5 x R on every benchmark scene (standard view,
-# 320x180) at 0.5, 1 and 2 x its radius, PSNR and bias against V_R (256 rays).
-# Writes OUT/thickness.csv (default docs/bench). Needs a build (scripts/build.sh).
+# The thickness rule of the visibility estimator, measured: T = 0.5 to 1.5
+# x R for the march at 4, 8, 16 and 32 steps (8 directions, half
+# resolution, as DEFAULT) and for ULTRA's (4 x 8, full resolution, depth-aware
+# blur), on every benchmark scene (standard view, 320x180) at 0.5, 1 and 2 x
+# its radius: PSNR and bias against V_R (256 rays). The rule the plugin
+# derives (settings.h default_thickness) is read off it. Writes
+# OUT/thickness.csv (default docs/bench). Needs a build (scripts/build.sh).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 out=${1:-docs/bench}
@@ -10,7 +13,12 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 scenes="assets/models/spot-on-ground.glb assets/models/teapot-on-ground.glb assets/scenes/corner.gltf
         assets/scenes/overhang.gltf assets/scenes/creases.gltf assets/scenes/clutter.gltf"
-echo "scene,radius_scale,thickness_of_r,psnr,bias" > "$work/thickness.csv"
+configs="8x4-half:--steps 4
+8x8-half:--steps 8
+8x16-half:--steps 16
+8x32-half:--steps 32
+ultra:--preset ultra"
+echo "scene,radius_scale,config,steps,thickness_of_r,psnr,bias" > "$work/thickness.csv"
 for sc in $scenes; do
   name=$(basename "$sc" | sed 's/\..*//')
   # The scene's radius as every tool picks it (ssao-host's ssao: line).
@@ -20,16 +28,22 @@ for sc in $scenes; do
     r=$(awk -v a="$R" -v b="$k" 'BEGIN { print a * b }')
     build/reference/ssao-reference "$sc" --width 320 --height 180 --samples 256 --radius "$r" --quiet \
       --out "$work/ref" >/dev/null
-    for tr in 0.5 0.75 1 1.5; do
-      t=$(awk -v a="$r" -v b="$tr" 'BEGIN { print a * b }')
-      build/host/ssao-host "$sc" --width 320 --height 180 --only ao --no-sheet --radius "$r" --thickness "$t" \
-        --frames 1 --out "$work/host" >/dev/null
-      build/reference/ssao-error "$work/host/ao.exr" "$work/ref" --allow-mismatch |
-        awk -v s="$name" -v k="$k" -v tr="$tr" '$1 == "all" { print s "," k "," tr "," $4 "," $5 }' >> "$work/thickness.csv"
-    done
+    while IFS=: read -r cfg flags; do
+      steps=$(echo "$flags" | awk '{ print ($1 == "--steps") ? $2 : 8 }')
+      for tr in 0.5 0.625 0.75 0.875 1 1.5; do
+        t=$(awk -v a="$r" -v b="$tr" 'BEGIN { print a * b }')
+        # shellcheck disable=SC2086
+        build/host/ssao-host "$sc" --width 320 --height 180 --only ao --no-sheet --radius "$r" --thickness "$t" \
+          $flags --frames 1 --out "$work/host" >/dev/null
+        build/reference/ssao-error "$work/host/ao.exr" "$work/ref" --allow-mismatch |
+          awk -v s="$name" -v k="$k" -v c="$cfg" -v n="$steps" -v tr="$tr" \
+            '$1 == "all" { print s "," k "," c "," n "," tr "," $4 "," $5 }' >> "$work/thickness.csv"
+      done
+    done <<< "$configs"
   done
 done
 mkdir -p "$out"
 cp "$work/thickness.csv" "$out/thickness.csv"
-awk -F, 'NR > 1 { n[$3]++; p[$3] += $4 } END { for (t in n) printf "T = %s R: mean PSNR %.2f dB over %d cases\n", t, p[t] / n[t], n[t] }' \
+awk -F, 'NR > 1 { k = $3 " T = " $5 " R"; n[k]++; p[k] += $6 }
+         END { for (k in n) printf "%s: mean PSNR %.2f dB over %d cases\n", k, p[k] / n[k], n[k] }' \
   "$out/thickness.csv" | sort

@@ -581,7 +581,7 @@ TEST_CASE("--help lists every flag with the plugin's own defaults") {
     CHECK(r.out.find("(default " + std::string(d.method == SSAO_METHOD_VISIBILITY ? "visibility" : "kernel") + ")") !=
           std::string::npos);
     std::ostringstream thickness;
-    thickness << "(default " << d.thickness / d.radius << " x radius)";
+    thickness << "(default radius x (0.5 + 1.5 / steps): " << d.thickness / d.radius << " x radius)";
     CHECK(r.out.find(thickness.str()) != std::string::npos);
 }
 

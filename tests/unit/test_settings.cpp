@@ -135,7 +135,7 @@ TEST_CASE("settings: derived defaults follow the fields they derive from") {
     CHECK(r.bias == doctest::Approx(0.025 * 2.0));  // 0.025 * radius
     CHECK(r.blur_radius == 5u);
     CHECK(r.blur_sigma == 5.0f);  // = blur_radius
-    CHECK(r.thickness == 2.0f);   // = radius
+    CHECK(r.thickness == doctest::Approx(2.0 * (0.5 + 1.5 / r.step_count)));  // radius (0.5 + 1.5 / steps)
 
     // Explicit values are kept as given.
     in = zeroed();
@@ -441,9 +441,29 @@ TEST_CASE("settings: a preset plus a radius derives bias and thickness from that
             CHECK(same(a, b));
             CHECK(a.bias == b.bias);
             CHECK(a.thickness == b.thickness);
-            CHECK(a.thickness == doctest::Approx(resolve_ok(zeroed()).thickness / 0.5f * radius));
+            // The thickness follows the radius and the row's step count: R (0.5 + 1.5 / steps).
+            CHECK(a.thickness == doctest::Approx(radius * (0.5 + 1.5 / row.step_count)));
         }
     }
+}
+
+TEST_CASE("settings: the derived thickness follows the step count the settings resolve to; a set one is kept") {
+    for (uint32_t steps : {0u, 1u, 4u, 8u, 16u, 32u}) {
+        CAPTURE(steps);
+        ssao_settings in = zeroed();
+        in.radius = 2.0f;
+        in.step_count = steps;
+        const ssao_settings r = resolve_ok(in);
+        const uint32_t resolved = steps == 0 ? ssao_impl::preset_row(SSAO_PRESET_DEFAULT).step_count : steps;
+        CHECK(r.step_count == resolved);
+        CHECK(r.thickness == doctest::Approx(2.0 * (0.5 + 1.5 / resolved)));
+        in.thickness = 0.3f;
+        CHECK(resolve_ok(in).thickness == 0.3f);
+    }
+    // 4 steps (DEFAULT) give 0.875 R; many steps tend to the depth-only limit's R/2.
+    ssao_settings four = zeroed();
+    four.radius = 1.0f;
+    CHECK(resolve_ok(four).thickness == doctest::Approx(0.875));
 }
 
 TEST_CASE("settings: an unknown preset is INVALID_ENUM and leaves out untouched") {
