@@ -30,17 +30,38 @@ float input_depth(ivec2 vpx) { return SSAO_INPUT_TEXEL(u_depth_tex, vpx).r; }
 // partial and still has its texel.
 ivec2 grid_size() { return (consts.viewport_size + u_scale - 1) / u_scale; }
 
+// How viewport pixels and grid texels map, with the uniforms read once: a
+// loop that maps many points (the march) takes grid_map() before it, since
+// on llvmpipe every uniform read in a loop body is a load per iteration.
+struct GridMap {
+    vec2 size;        // the viewport's, in pixels
+    ivec2 last;       // its last pixel
+    int scale;        // u_scale
+    float inv_scale;  // 1 / u_scale, exact for a power of two
+    int pick;         // grid_pixel's offset into the block, before the checkerboard's
+    int checker;      // 1 below full resolution: the checkerboard's offset mask
+};
+
+GridMap grid_map() {
+    GridMap g;
+    g.size = vec2(consts.viewport_size);
+    g.last = consts.viewport_size - 1;
+    g.scale = u_scale;
+    g.inv_scale = 1.0 / float(u_scale);
+    g.checker = u_scale > 1 ? 1 : 0;
+    g.pick = u_scale > 1 ? u_scale / 2 - 1 : 0;
+    return g;
+}
+
 // The viewport pixel grid texel t stands for: one real pixel of its block,
 // near the block's centre, alternating between two positions in a
 // checkerboard (half: offset (0,0) or (1,1) in the 2x2 block, by the parity
 // of t.x + t.y; quarter: (1,1) or (2,2) in the 4x4 block) so that a
 // one-pixel-wide feature is picked in every other block along it. Clamped
-// into the viewport for the partial blocks of odd sizes.
-ivec2 grid_pixel(ivec2 t) {
-    if (u_scale == 1) return t;
-    int o = u_scale / 2 - 1 + ((t.x + t.y) & 1);
-    return min(t * u_scale + o, consts.viewport_size - 1);
-}
+// into the viewport for the partial blocks of odd sizes. At full
+// resolution: t itself.
+ivec2 grid_pixel(GridMap g, ivec2 t) { return min(t * g.scale + g.pick + ((t.x + t.y) & g.checker), g.last); }
+ivec2 grid_pixel(ivec2 t) { return grid_pixel(grid_map(), t); }
 
 // The host's depth at grid texel t (read only where the sampling passes read
 // the host's textures directly: full resolution, single sample, stored
@@ -87,19 +108,39 @@ vec3 view_position_from_z(vec2 px, float z) {
 
 // depth_step below for a point at view z z, from z alone: clip w and clip z
 // are affine in z (consts.clip_*), so d(view z)/d(ndc z) = w^2 / |det|
-// (consts.inv_det), and the stored depth (for the ulp of a float format) is
-// clip z / w in the clip range's convention.
-float depth_step_z(float z) {
-    float w = consts.clip_w_z * z + consts.clip_w_1;
-    float ulp = consts.unorm_depth_step;
-    if (ulp == 0.0) {
-        float ndc = (consts.clip_z_z * z + consts.clip_z_1) / w;
-        float d = consts.ndc_per_depth == 2.0 ? ndc * 0.5 + 0.5 : ndc;
-        ulp = max(abs(d) * 1.1920929e-7, 1.1754944e-38);
-        if (consts.ndc_per_depth == 2.0) ulp = max(ulp, abs(ndc) * 0.5 * 1.1920929e-7);
-    }
-    return w * w * consts.inv_det * consts.ndc_per_depth * ulp;
+// (consts.inv_det). A float format's ulp is one of the stored depth
+// d = clip z / w (the [-1,1] range: of d = (ndc + 1) / 2 and of ndc, as
+// depth_step), floored at the smallest normal; times w^2 it needs no
+// division: |d| w^2 = |clip z| w. The constants are read once
+// (depth_steps()) where a loop takes many (GridMap says why).
+struct DepthSteps {
+    vec4 clip;        // clip_w_z, clip_w_1, clip_z_z, clip_z_1
+    float unorm_k;    // inv_det ndc_per_depth unorm_depth_step: 0 for a float format
+    float float_k;    // inv_det ndc_per_depth 2^-23: a float format's ulp per |d| w^2
+    float normal_k;   // inv_det ndc_per_depth 2^-126: the floor, per w^2
+    bool half_range;  // the [-1,1] clip range
+};
+
+DepthSteps depth_steps() {
+    DepthSteps k;
+    k.clip = vec4(consts.clip_w_z, consts.clip_w_1, consts.clip_z_z, consts.clip_z_1);
+    float per_ndc = consts.inv_det * consts.ndc_per_depth;
+    k.unorm_k = per_ndc * consts.unorm_depth_step;
+    k.float_k = per_ndc * 1.1920929e-7;
+    k.normal_k = per_ndc * 1.1754944e-38;
+    k.half_range = consts.ndc_per_depth == 2.0;
+    return k;
 }
+
+float depth_step_z(DepthSteps k, float z) {
+    float w = k.clip.x * z + k.clip.y;
+    if (k.unorm_k != 0.0) return w * w * k.unorm_k;
+    float cz = k.clip.z * z + k.clip.w;
+    // |d| w and, for the [-1,1] range, |ndc| w / 2: the larger ulp wins.
+    float dw = k.half_range ? max(abs(cz + w), abs(cz)) * 0.5 : abs(cz);
+    return max(dw * abs(w) * k.float_k, w * w * k.normal_k);
+}
+float depth_step_z(float z) { return depth_step_z(depth_steps(), z); }
 
 // The view z of viewport pixel p holding depth d. Where clip z depends on view
 // z alone (every projection but an oblique near plane's) it inverts

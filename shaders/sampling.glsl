@@ -239,20 +239,21 @@ bool load_surface(out Surface sf) {
     return true;
 }
 
+// The grid texel whose block holds viewport pixel coordinates spf, or false
+// (texel 0) when spf lies off the viewport.
+bool pixel_to_texel(GridMap g, vec2 spf, out ivec2 texel) {
+    texel = ivec2(0);
+    if (any(lessThan(spf, vec2(0.0))) || any(greaterThanEqual(spf, g.size))) return false;
+    // spf / scale for a power-of-two scale is exact in float, so this is
+    // ivec2(spf) / u_scale without an integer division per step.
+    texel = ivec2(spf * g.inv_scale);
+    return true;
+}
+bool pixel_to_texel(vec2 spf, out ivec2 texel) { return pixel_to_texel(grid_map(), spf, texel); }
+
 // Where the point with clip coordinates c lands: the grid texel whose block
 // holds it, or false when it is behind the eye or off the viewport; spf: its
 // viewport pixel coordinates (a pixel's centre is +0.5).
-// The grid texel whose block holds viewport pixel coordinates spf, or false
-// (texel 0) when spf lies off the viewport.
-bool pixel_to_texel(vec2 spf, out ivec2 texel) {
-    texel = ivec2(0);
-    if (any(lessThan(spf, vec2(0.0))) || any(greaterThanEqual(spf, vec2(consts.viewport_size)))) return false;
-    // spf / scale for a power-of-two scale is exact in float, so this is
-    // ivec2(spf) / u_scale without an integer division per step.
-    texel = ivec2(spf * (1.0 / float(u_scale)));
-    return true;
-}
-
 bool clip_to_texel(vec4 c, out ivec2 texel, out vec2 spf) {
     texel = ivec2(0);
     spf = vec2(0.0);

@@ -17,13 +17,13 @@
 float depth_weighted(ivec2 p, float z0) {
     // Floored as in the blur: an orthographic surface may sit at view z = 0.
     float inv_tolerance = 1.0 / max(consts.blur_depth_tolerance * abs(z0), 1e-30);
-    float inv_scale = 1.0 / float(u_scale);
+    GridMap g = grid_map();
     ivec2 last = grid_size() - 1;
     // The blocks whose centres bracket p: p's own and its neighbour on the
     // side of p's half of the block (exact in float for a power-of-two
     // scale), clamped into the grid: at the border a texel may be taken
     // twice, which keeps the result a weighted mean of the texels there.
-    ivec2 t0 = ivec2(floor((vec2(p) + float(u_scale - u_scale / 2)) * inv_scale)) - 1;
+    ivec2 t0 = ivec2(floor((vec2(p) + float(g.scale - g.scale / 2)) * g.inv_scale)) - 1;
     float sum = 0.0, weight = 0.0;
     float nearest = 1.0, nearest_dz = 3.4e38;
     for (int k = 0; k < 4; ++k) {
@@ -35,7 +35,7 @@ float depth_weighted(ivec2 p, float z0) {
         bool closer = dz < nearest_dz;
         nearest_dz = closer ? dz : nearest_dz;
         nearest = closer ? tap.r : nearest;
-        vec2 tent = max(1.0 - abs(vec2(grid_pixel(t) - p)) * (0.5 * inv_scale), vec2(0.0625));
+        vec2 tent = max(1.0 - abs(vec2(grid_pixel(g, t) - p)) * (0.5 * g.inv_scale), vec2(0.0625));
         float w = tent.x * tent.y * clamp(1.0 - dz * inv_tolerance, 0.0, 1.0);
         sum += tap.r * w;
         weight += w;

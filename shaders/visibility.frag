@@ -39,6 +39,8 @@ struct StepSetup {
     float grazing;   // perspective: 1e-3 |D(pixel)|
     float nz;        // orthographic: n.z
     bool ortho_snap; // orthographic: |n.z| > 1e-3
+    GridMap g;       // the uniforms a step reads, read once (GridMap says why)
+    DepthSteps ds;
 };
 
 StepSetup step_setup(Surface sf) {
@@ -47,6 +49,8 @@ StepSetup step_setup(Surface sf) {
     st.pn = dot(n, sf.P);
     st.nz = n.z;
     st.ortho_snap = abs(n.z) > 1e-3;
+    st.g = grid_map();
+    st.ds = depth_steps();
     mat2 mul_z = mat2(consts.view_mul_z.xy, consts.view_mul_z.zw);
     if (sf.ortho) {
         st.a = n.xy * mat2(consts.view_mul_1.xy, consts.view_mul_1.zw);
@@ -65,15 +69,15 @@ StepSetup step_setup(Surface sf) {
 
 // A step's clip coordinates in viewport-pixel units: (x_px w, y_px w, z, w),
 // still linear in the step, so a step's pixel position is one division.
-vec4 step_clip(vec4 c) { return vec4((c.xy + c.w) * (0.5 * vec2(consts.viewport_size)), c.zw); }
+vec4 step_clip(StepSetup st, vec4 c) { return vec4((c.xy + c.w) * (0.5 * st.g.size), c.zw); }
 
 // Where a step (step_clip's coordinates) lands, as clip_to_texel.
-bool step_to_texel(vec4 c, out ivec2 texel, out vec2 spf) {
+bool step_to_texel(StepSetup st, vec4 c, out ivec2 texel, out vec2 spf) {
     texel = ivec2(0);
     spf = vec2(0.0);
     if (!(c.w > 0.0)) return false;
     spf = c.xy * (1.0 / c.w);
-    return pixel_to_texel(spf, texel);
+    return pixel_to_texel(st.g, spf, texel);
 }
 
 // From the grid: one 16-byte plane texel (grid.frag plane_texel) per step,
@@ -84,25 +88,26 @@ bool step_to_texel(vec4 c, out ivec2 texel, out vec2 spf) {
 // (the texel's, scaled to the step's ray) is 1e-3 or less; alpha 0 marks a
 // texel whose normal is unusable. The snap in its place (StepSetup): the
 // step's plane s.n = sn met by the texel's ray, perspective at view z
-// z sn / n.Q, orthographic (sn - n.xy Q.xy) / n.z. Both are worked out and
-// one division serves whichever is read. False for the sky; q_step: the
-// view-z change of one depth-format step at the texel.
+// z sn / n.Q, orthographic (sn - n.xy Q.xy) / n.z. False for the sky;
+// q_step: the view-z change of one depth-format step at the texel.
 bool step_surface(vec3 s, float sn, vec2 spf, ivec2 spx, Surface sf, StepSetup st, out float in_front,
                   out float q_step) {
     vec4 plane = texelFetch(u_depth_tex, spx, 0);
     float z = plane.x;
-    vec2 u0 = vec2(grid_pixel(spx)) + 0.5;
+    vec2 u0 = vec2(grid_pixel(st.g, spx)) + 0.5;
     float g_du = dot(plane.yz, spf - u0);
     float r = sf.ortho ? 1.0 : 1.0 + g_du;
-    bool tangent = plane.w * abs(r) > 1e-3;
-    float l = dot(st.a, u0) + st.k;
-    float qn = sf.ortho ? l : z * l + st.e;  // perspective: n.Q; orthographic: n.xy . Q.xy
-    bool snap = sf.ortho ? st.ortho_snap : abs(qn) > st.grazing * abs(z);
-    float num = tangent ? (sf.ortho ? z + g_du : z) : (sf.ortho ? sn - qn : z * sn);
-    float den = tangent ? r : (sf.ortho ? st.nz : qn);
-    float q = num / den;  // the tangent plane's view z under s, or the snapped step's
-    in_front = tangent ? q - s.z : z - (snap ? q : s.z);
-    q_step = depth_step_z(z);  // read only for a surface
+    in_front = (sf.ortho ? z + g_du : z / r) - s.z;  // the tangent plane's view z under s
+    // Grazing or unusable: the snap. Rare, so a branch (a SIMD batch or
+    // warp where no texel needs it skips it).
+    if (!(plane.w * abs(r) > 1e-3)) {
+        float l = dot(st.a, u0) + st.k;
+        float qn = sf.ortho ? l : z * l + st.e;  // perspective: n.Q; orthographic: n.xy . Q.xy
+        bool snap = sf.ortho ? st.ortho_snap : abs(qn) > st.grazing * abs(z);
+        float q = (sf.ortho ? sn - qn : z * sn) / (sf.ortho ? st.nz : qn);  // the snapped step's view z
+        in_front = z - (snap ? q : s.z);
+    }
+    q_step = depth_step_z(st.ds, z);  // read only for a surface
     return z != SKY_Z;
 }
 #else
@@ -135,8 +140,8 @@ StepSetup step_setup(Surface sf) {
     return st;
 }
 
-vec4 step_clip(vec4 c) { return c; }
-bool step_to_texel(vec4 c, out ivec2 texel, out vec2 spf) { return clip_to_texel(c, texel, spf); }
+vec4 step_clip(StepSetup st, vec4 c) { return c; }
+bool step_to_texel(StepSetup st, vec4 c, out ivec2 texel, out vec2 spf) { return clip_to_texel(c, texel, spf); }
 
 bool step_surface(vec3 s, float sn, vec2 spf, ivec2 spx, Surface sf, StepSetup st, out float in_front,
                   out float q_step) {
@@ -163,11 +168,15 @@ void main() {
     float open = 0.0;
     // Projection is linear: a step's clip coordinates are those of P plus
     // those of the direction times the distance (no matrix product per step).
-    vec4 clip_p = step_clip(consts.proj * vec4(sf.P, 1.0));
     StepSetup st = step_setup(sf);
+    mat4 proj = consts.proj;
+    vec4 clip_p = step_clip(st, proj * vec4(sf.P, 1.0));
+    // The bias's part that is the pixel's own; each step adds its texel's depth step.
+    float bias_p = consts.bias * sf.radius_scale + consts.depth_step_bias * sf.step;
+    float step_bias = consts.depth_step_bias;
     for (int i = 0; i < count; ++i) {
         vec3 dir = sf.TBN * kernel.vectors[i].xyz;
-        vec4 clip_dir = step_clip(consts.proj * vec4(dir, 0.0));
+        vec4 clip_dir = step_clip(st, proj * vec4(dir, 0.0));
         float dn = dot(dir, sf.n);
         bool blocked = false;
         for (int j = 0; j < steps && !blocked; ++j) {
@@ -184,10 +193,10 @@ void main() {
             // texel read is then texel 0's, unused), and the sky blocks nothing.
             ivec2 spx;
             vec2 spf;
-            bool on_screen = step_to_texel(clip_p + clip_dir * t, spx, spf);
+            bool on_screen = step_to_texel(st, clip_p + clip_dir * t, spx, spf);
             float in_front, q_step;  // in_front > 0: the surface hides the step
             bool surface = step_surface(s, st.pn + dn * t, spf, spx, sf, st, in_front, q_step);
-            float bias = consts.bias * sf.radius_scale + consts.depth_step_bias * (sf.step + q_step);
+            float bias = bias_p + step_bias * q_step;
             blocked = on_screen && surface && in_front >= bias && in_front <= thickness;
         }
         open += blocked ? 0.0 : 1.0;
