@@ -105,8 +105,11 @@ void plan_sampling(Builder& b, const ssao_settings& s, const AnalysedInputs& in,
     // else an intermediate for the upsample.
     const bool last_is_ao = !blur;
     const bool ao_to_output = !reduced && last_is_ao;
+    // Below full resolution the AO texture also carries the plane's screen
+    // gradient (ao_texture.glsl), which the upsample's depth test reads.
+    const TexFormat ao_format = reduced ? TexFormat::rgba32f : TexFormat::rg32f;
     const TexRef ao_target =
-        ao_to_output ? output : TexRef::of(Source::intermediate, b.intermediate(lw, lh, TexFormat::rg32f));
+        ao_to_output ? output : TexRef::of(Source::intermediate, b.intermediate(lw, lh, ao_format));
     Pass& ao = b.add(estimator, ao_target, ao_to_output ? final_rect : low);
     ao.inputs[SSAO_UNIT_DEPTH] = grid ? grid_tex.plane : TexRef::of(Source::depth);
     ao.inputs[SSAO_UNIT_NORMAL] = grid ? grid_tex.normal : TexRef::of(Source::normal);
@@ -119,7 +122,7 @@ void plan_sampling(Builder& b, const ssao_settings& s, const AnalysedInputs& in,
     if (blur) {
         const bool x_to_output = !reduced && !separable;
         const TexRef x_target =
-            x_to_output ? output : TexRef::of(Source::intermediate, b.intermediate(lw, lh, TexFormat::rg32f));
+            x_to_output ? output : TexRef::of(Source::intermediate, b.intermediate(lw, lh, ao_format));
         Pass& bx = b.add(PassKind::blur_x, x_target, x_to_output ? final_rect : low);
         bx.inputs[SSAO_UNIT_AO] = ao_target;
         bx.direction[0] = 1;

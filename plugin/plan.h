@@ -72,7 +72,7 @@ constexpr int kBits = 8;
 
 // Formats of the textures the plan renders into.
 enum class TexFormat : uint8_t {
-    rg32f,  // intermediate: (ao, view z) for the next pass
+    rg32f,  // intermediate: (ao, view z) for the next pass at full resolution
     rgba32f,  // intermediate: the grid pass's plane texel (view z, SKY_Z for the sky; depth gradient;
               // grazing cosine) and its view-space normal (xyz, 0) per block
     r8,     // owned output, SSAO_OUTPUT_R8

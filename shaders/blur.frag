@@ -21,8 +21,9 @@ void main() {
     ivec2 vpx = ivec2(gl_FragCoord.xy) - u_target_origin;
     ivec2 size = u_pass_size;
     int kind = consts.blur_kind;
-    vec2 c = texelFetch(u_ao_tex, vpx, 0).rg;
+    vec4 c = texelFetch(u_ao_tex, vpx, 0);
     float centre = c.r, z0 = c.g;
+    vec2 g0 = c.ba;  // the centre's plane gradient, handed on to the upsample
     if (z0 == SKY_Z) { o_ao = result(1.0, SKY_Z); return; }  // the sky stays exactly 1
     // Floored: an orthographic camera whose near plane lies behind the eye
     // has surfaces at view z = 0, where 0/0 would be undefined.
@@ -48,9 +49,9 @@ void main() {
 #endif
             }
 #ifdef SSAO_BLUR_WEIGHTS
-        o_ao = result(count / taps, z0);
+        o_ao = result(count / taps, z0, g0);
 #else
-        o_ao = result(sum / count, z0);
+        o_ao = result(sum / count, z0, g0);
 #endif
         return;
     }
@@ -77,8 +78,8 @@ void main() {
 #ifdef SSAO_BLUR_WEIGHTS
     // Same taps summed in the same order: exactly 1 when nothing was rejected.
     float before = u_blur_dir.y != 0 ? centre : 1.0;  // the horizontal pass's share
-    o_ao = result(weight / gaussian * before, z0);
+    o_ao = result(weight / gaussian * before, z0, g0);
 #else
-    o_ao = result(sum / weight, z0);
+    o_ao = result(sum / weight, z0, g0);
 #endif
 }

@@ -169,6 +169,15 @@ bool texel_surface(ivec2 t, out vec3 P, out float step) {
 }
 #endif
 
+// The screen gradient of grid texel t's tangent plane (grid.frag
+// plane_texel), which a sampling pass hands the upsample beside its AO
+// (ao_texture.glsl); 0 where the pass reads no grid.
+#ifdef SSAO_GRID_INPUT
+vec2 plane_gradient(ivec2 t) { return texelFetch(u_depth_tex, t, 0).yz; }
+#else
+vec2 plane_gradient(ivec2 t) { return vec2(0.0); }
+#endif
+
 // View-space z change for one step of the depth format at depth d, from the
 // point p = view_position_w(px, d): |dz/d(ndc)| * d(ndc)/d(depth) * step.
 // Analytic: with v = inv_proj * ndc, z = v.z / v.w and

@@ -7,7 +7,7 @@ void main() {
     Surface sf;
     if (!load_surface(sf)) { o_ao = result(1.0, SKY_Z); return; }
 #ifdef SSAO_FADE
-    if (fade_weight(sf.P) >= 1.0) { o_ao = result(1.0, sf.P.z); return; }  // faded out: nothing to sample
+    if (fade_weight(sf.P) >= 1.0) { o_ao = result(1.0, sf.P.z, plane_gradient(sf.vpx)); return; }  // faded out: nothing to sample
 #endif
     vec3 P = sf.P, n = sf.n;
     mat3 TBN = sf.TBN;
@@ -39,5 +39,5 @@ void main() {
 #ifdef SSAO_FADE
     ao = apply_fade(ao, P);
 #endif
-    o_ao = result(ao, P.z);
+    o_ao = result(ao, P.z, plane_gradient(sf.vpx));
 }

@@ -2,10 +2,12 @@
 // the 2x2 reduced-grid texels around it (the two nearest along each axis),
 // weighted by where their picked pixels lie (a tent two blocks wide, so the
 // four taps also average the grid's noise; floored so a tap is never ignored
-// on position alone) and by depth
-// similarity: a tap whose view z differs from the pixel's own (read from the
-// full-resolution depth) by the blur's relative tolerance or more gets no
-// weight, so AO is never carried across a silhouette. When no tap is within
+// on position alone) and by depth similarity: a tap whose tangent plane (the
+// plane texel's gradient, handed on with the AO: ao_texture.glsl) puts the
+// surface under the pixel at a view z that differs from the pixel's own (read
+// from the full-resolution depth) by kPlaneTolerance of the blur's relative
+// tolerance or more gets no weight, so AO is carried neither across a
+// silhouette nor between surfaces at different depths. When no tap is within
 // the tolerance (a feature thinner than a block), the tap nearest in depth is
 // taken. Sky pixels are exactly 1.
 //
@@ -13,11 +15,20 @@
 // takes the value of its own block's grid texel, no depth weights, so the
 // view shows what the grid holds.
 
+// A tap's plane puts the surface where it is for a plane, so the test can be
+// five times tighter than the blur's, which compares view z alone: tight
+// enough that the floor of a groove narrower than a block does not take the
+// AO of the ridges beside it (benchmark scene creases), where a view-z test
+// within the blur's tolerance let it.
+const float kPlaneTolerance = 0.2;
+
 // The depth-weighted bilinear AO of the 2x2 grid texels around pixel p at view z z0.
 float depth_weighted(ivec2 p, float z0) {
     // Floored as in the blur: an orthographic surface may sit at view z = 0.
-    float inv_tolerance = 1.0 / max(consts.blur_depth_tolerance * abs(z0), 1e-30);
+    float inv_tolerance = 1.0 / max(kPlaneTolerance * consts.blur_depth_tolerance * abs(z0), 1e-30);
     GridMap g = grid_map();
+    bool ortho = consts.orthographic != 0;
+    vec2 u = vec2(p) + 0.5;
     ivec2 last = grid_size() - 1;
     // The blocks whose centres bracket p: p's own and its neighbour on the
     // side of p's half of the block (exact in float for a power-of-two
@@ -28,14 +39,21 @@ float depth_weighted(ivec2 p, float z0) {
     float nearest = 1.0, nearest_dz = 3.4e38;
     for (int k = 0; k < 4; ++k) {
         ivec2 t = clamp(t0 + ivec2(k & 1, k >> 1), ivec2(0), last);
-        vec2 tap = texelFetch(u_ao_tex, t, 0).rg;
+        vec4 tap = texelFetch(u_ao_tex, t, 0);
+        vec2 u0 = vec2(grid_pixel(g, t)) + 0.5;
+        // The tap's tangent plane's view z under p (as the march reads it,
+        // visibility.frag step_surface); the tap's own where p's ray meets
+        // that plane behind the eye.
+        float gd = dot(tap.ba, u - u0);
+        float r = 1.0 + gd;
+        float zp = ortho ? tap.g + gd : (r > 0.0 ? tap.g / r : tap.g);
         // A sky tap (view z SKY_Z, AO 1) is never within the tolerance, and
         // the nearest in depth only when every tap is sky: then 1, open.
-        float dz = abs(tap.g - z0);
+        float dz = abs(zp - z0);
         bool closer = dz < nearest_dz;
         nearest_dz = closer ? dz : nearest_dz;
         nearest = closer ? tap.r : nearest;
-        vec2 tent = max(1.0 - abs(vec2(grid_pixel(g, t) - p)) * (0.5 * g.inv_scale), vec2(0.0625));
+        vec2 tent = max(1.0 - abs(u0 - u) * (0.5 * g.inv_scale), vec2(0.0625));
         float w = tent.x * tent.y * clamp(1.0 - dz * inv_tolerance, 0.0, 1.0);
         sum += tap.r * w;
         weight += w;
@@ -54,7 +72,10 @@ void main() {
 #ifdef SSAO_UPSAMPLE_NEAREST
     float ao = texelFetch(u_ao_tex, p / u_scale, 0).r;
 #else
-    float ao = depth_weighted(p, z);
+    // Beyond the distance fade's end the AO is exactly 1, as the sampling
+    // pass makes it on the grid: a tap whose plane continues a receding
+    // surface from before the fade's end would otherwise reach past it.
+    float ao = consts.fade_end > 0.0 && -z >= consts.fade_end ? 1.0 : depth_weighted(p, z);
 #endif
     o_ao = vec4(ao, ao, ao, 1.0);
 }

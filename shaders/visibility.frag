@@ -156,7 +156,7 @@ void main() {
     Surface sf;
     if (!load_surface(sf)) { o_ao = result(1.0, SKY_Z); return; }
 #ifdef SSAO_FADE
-    if (fade_weight(sf.P) >= 1.0) { o_ao = result(1.0, sf.P.z); return; }  // faded out: nothing to march
+    if (fade_weight(sf.P) >= 1.0) { o_ao = result(1.0, sf.P.z, plane_gradient(sf.vpx)); return; }  // faded out: nothing to march
 #endif
 
     float radius = sf.radius;  // the step length scales with the per-pixel radius (RADIUS_PIXELS)
@@ -206,5 +206,5 @@ void main() {
 #ifdef SSAO_FADE
     ao = apply_fade(ao, sf.P);
 #endif
-    o_ao = result(ao, sf.P.z);
+    o_ao = result(ao, sf.P.z, plane_gradient(sf.vpx));
 }
