@@ -7,18 +7,18 @@ namespace ssao_impl {
 
 namespace {
 
-constexpr ProgramInfo kNoProgram{ProgramId::none, nullptr, SharedCode::none, "", ""};
+constexpr ProgramInfo kNoProgram{ProgramId::none, nullptr, SharedCode::none, "", "", 0};
 constexpr ProgramInfo kGrid{ProgramId::grid, k_grid_frag, SharedCode::common_and_sampling, "grid.frag",
-                            "ssao: grid program"};
+                            "ssao: grid program", 0};
 constexpr ProgramInfo kKernel{ProgramId::kernel, k_kernel_frag, SharedCode::common_and_sampling, "kernel.frag",
-                              "ssao: kernel program"};
+                              "ssao: kernel program", 0};
 constexpr ProgramInfo kVisibility{ProgramId::visibility, k_visibility_frag, SharedCode::common_and_sampling,
-                                  "visibility.frag", "ssao: visibility program"};
+                                  "visibility.frag", "ssao: visibility program", variant::grid_input};
 constexpr ProgramInfo kNormalsView{ProgramId::normals_view, k_normals_view_frag, SharedCode::common_and_sampling,
-                                   "normals_view.frag", "ssao: normals view program"};
-constexpr ProgramInfo kBlur{ProgramId::blur, k_blur_frag, SharedCode::common, "blur.frag", "ssao: blur program"};
+                                   "normals_view.frag", "ssao: normals view program", variant::grid_input};
+constexpr ProgramInfo kBlur{ProgramId::blur, k_blur_frag, SharedCode::common, "blur.frag", "ssao: blur program", 0};
 constexpr ProgramInfo kUpsample{ProgramId::upsample, k_upsample_frag, SharedCode::common, "upsample.frag",
-                                "ssao: upsample program"};
+                                "ssao: upsample program", 0};
 
 // In PassKind order.
 constexpr PassInfo kPasses[] = {

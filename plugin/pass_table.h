@@ -28,6 +28,7 @@ struct ProgramInfo {
     SharedCode shared;
     const char* file_name;        // the shader file: compile errors name it
     const char* label;            // glObjectLabel name
+    uint32_t base_variant;        // what create_context compiles: the variant every plan needs (plan.h variant)
 };
 
 struct PassInfo {

@@ -98,7 +98,11 @@ void plan_sampling(Builder& b, const ssao_settings& s, const AnalysedInputs& in,
     const bool separable = blur && s.blur != SSAO_BLUR_BOX_4X4;
     const PassKind estimator = s.method == SSAO_METHOD_VISIBILITY ? PassKind::visibility : PassKind::kernel;
 
-    const bool grid = reduced || in.multisample || in.normals_from_depth;
+    // The visibility march reads one plane texel per step (grid.frag), which
+    // is cheaper than the host's depth through the inverse projection and a
+    // normal, so it runs on the grid at full resolution too; the kernel reads
+    // the host's textures there.
+    const bool grid = reduced || in.multisample || in.normals_from_depth || estimator == PassKind::visibility;
     const GridTextures grid_tex = grid ? add_grid_pass(b, in, scale, low) : GridTextures{};
 
     // Where the last pass on the grid writes: the output at full resolution,

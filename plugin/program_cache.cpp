@@ -137,8 +137,9 @@ ssao_status compile_base_programs(ssao_context& ctx) {
     for (int i = 0; i < static_cast<int>(ProgramId::count); ++i) {
         // The debug views' program waits for the first plan that uses one:
         // a context that never shows a view never compiles it.
-        if (static_cast<ProgramId>(i) == ProgramId::normals_view) continue;
-        const ssao_status st = add_program(ctx, static_cast<ProgramId>(i), 0);
+        const ProgramId id = static_cast<ProgramId>(i);
+        if (id == ProgramId::normals_view) continue;
+        const ssao_status st = add_program(ctx, id, program_info(id).base_variant);
         if (st != SSAO_OK) return st;
     }
     return SSAO_OK;

@@ -63,7 +63,7 @@ GridMap grid_map() {
 ivec2 grid_pixel(GridMap g, ivec2 t) { return min(t * g.scale + g.pick + ((t.x + t.y) & g.checker), g.last); }
 ivec2 grid_pixel(ivec2 t) { return grid_pixel(grid_map(), t); }
 
-// The host's depth at grid texel t (read only where the sampling passes read
+// The host's depth at grid texel t (read only where the kernel pass reads
 // the host's textures directly: full resolution, single sample, stored
 // normals; variant GRID_INPUT reads view z instead: texel_surface below).
 float fetch_depth(ivec2 t) { return input_depth(t); }
@@ -155,8 +155,9 @@ float view_z_of_depth(ivec2 p, float d) {
 // A surface texel the sampling passes read: its view position and the view-z
 // change of one depth-format step there. False for the sky (and a depth whose
 // position is not finite, which the grid pass stores as sky). Variant
-// GRID_INPUT (below full resolution, multisampled inputs, normals from depth):
-// the view z of the grid pass's plane texel, the position by multiply-adds.
+// GRID_INPUT (the visibility pass always; the kernel below full resolution,
+// with multisampled inputs or normals from depth): the view z of the grid
+// pass's plane texel, the position by multiply-adds.
 // Else the host's depth through the inverse projection.
 #ifdef SSAO_GRID_INPUT
 bool texel_surface(ivec2 t, out vec3 P, out float step) {

@@ -23,7 +23,10 @@
 // ray, and reading other rays through it misplaces the surface by far more
 // than the thickness: one such texel would shade the whole disc of pixels
 // whose marches cross it (hard case "normals: zero, NaN, ...").
-#ifdef SSAO_GRID_INPUT
+//
+// The pass always reads the grid (variant GRID_INPUT, at full resolution
+// too: plan.cpp), one plane texel per step.
+//
 // The snap (snap_to_texel_ray) with the pixel's own normal n, set up once per
 // pixel so that a step needs only the texel's view z and picked pixel centre
 // u0: along the texel's ray Q = (z D(u0) + add_1, z) in perspective,
@@ -110,47 +113,6 @@ bool step_surface(vec3 s, float sn, vec2 spf, ivec2 spx, Surface sf, StepSetup s
     q_step = depth_step_z(st.ds, z);  // read only for a surface
     return z != SKY_Z;
 }
-#else
-float surface_in_front(vec3 s, vec3 Q, ivec2 spx, Surface sf) {
-    vec3 nq;
-    bool usable = raw_normal(spx, nq);
-    nq = normalize(nq);  // not read when unusable
-    // Facing the camera (towards the eye from Q; orthographic: +z): a sign, no normalisation.
-    float facing = sf.ortho ? nq.z : -dot(nq, Q);
-    if (!usable || !(facing > 0.0)) return Q.z - snap_to_texel_ray(s, sf.n, Q, sf.ortho).z;
-    float plane = dot(Q, nq);
-    if (sf.ortho) {
-        if (abs(nq.z) > 1e-3) return (plane - nq.x * s.x - nq.y * s.y) / nq.z - s.z;
-    } else {
-        float sn = dot(s, nq);
-        if (abs(sn) > 1e-3 * length(s)) return s.z * (plane / sn) - s.z;
-    }
-    return Q.z - snap_to_texel_ray(s, sf.n, Q, sf.ortho).z;
-}
-
-// From the host's textures at full resolution: the texel's depth through the
-// inverse projection and its normal, and nothing set up per pixel.
-struct StepSetup {
-    float pn;
-};
-
-StepSetup step_setup(Surface sf) {
-    StepSetup st;
-    st.pn = 0.0;
-    return st;
-}
-
-vec4 step_clip(StepSetup st, vec4 c) { return c; }
-bool step_to_texel(StepSetup st, vec4 c, out ivec2 texel, out vec2 spf) { return clip_to_texel(c, texel, spf); }
-
-bool step_surface(vec3 s, float sn, vec2 spf, ivec2 spx, Surface sf, StepSetup st, out float in_front,
-                  out float q_step) {
-    vec3 Q;
-    bool surface = texel_surface(spx, Q, q_step);
-    in_front = surface_in_front(s, Q, spx, sf);
-    return surface;
-}
-#endif
 
 void main() {
     Surface sf;
@@ -180,17 +142,11 @@ void main() {
         float dn = dot(dir, sf.n);
         bool blocked = false;
         for (int j = 0; j < steps && !blocked; ++j) {
-#ifdef SSAO_GRID_INPUT
             float t = (float(j) + jitter) * step_length;
-#else
-            // The full-resolution path keeps its own rounding: its output is
-            // compared bit for bit against the golden images.
-            float t = radius * (float(j) + jitter) / float(steps);
-#endif
             vec3 s = sf.P + dir * t;
-            // Every step does the same work and a mask decides (no branch per
-            // step): off screen or behind the eye is unknown and open (the
-            // texel read is then texel 0's, unused), and the sky blocks nothing.
+            // Off screen or behind the eye is unknown and open, and the sky
+            // blocks nothing: a mask decides, not a branch (the texel read
+            // is then texel 0's, unused).
             ivec2 spx;
             vec2 spf;
             bool on_screen = step_to_texel(st, clip_p + clip_dir * t, spx, spf);

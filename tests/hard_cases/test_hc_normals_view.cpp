@@ -217,13 +217,16 @@ TEST_CASE("depth-only input: normal_texture 0 ignores normal space, packing and 
     gl.DeleteTextures(1, &colour);
 }
 
-TEST_CASE("depth-only input is free when off: with a G-buffer at full resolution no grid pass runs") {
+TEST_CASE("depth-only input is free when off: with a G-buffer the kernel at full resolution runs no grid pass") {
+    // (The visibility march reads the grid at every resolution; what depth-only
+    // input changes there is the grid pass's variant: tests/unit/test_plan.cpp.)
     testgl::Fixture fx;
     const auto proj = analytic::perspective(hc::kFov, double(kW) / kH, 0.1, 100.0);
     const GBuffer g = crease_scene(proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE);
     ssao_settings s{};
     s.size = sizeof s;
     s.resolution = SSAO_RESOLUTION_FULL;
+    s.method = SSAO_METHOD_KERNEL;
     fx.settings(s);
     const auto r = fx.run(g, proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE);
     REQUIRE(r.status == SSAO_OK);

@@ -520,12 +520,18 @@ TEST_CASE("abi: a valid execute runs the passes the settings call for") {
     off_no_blur.blur = SSAO_BLUR_NONE;
     ssao_settings half_no_blur = with_blur(SSAO_BLUR_NONE);
     half_no_blur.resolution = SSAO_RESOLUTION_HALF;
+    ssao_settings kernel_no_blur = with_blur(SSAO_BLUR_NONE);
+    kernel_no_blur.method = SSAO_METHOD_KERNEL;
+    // The visibility march (the default method) reads the grid at full
+    // resolution too; the kernel there reads the host's textures.
     const Expect expect[] = {
         {"half resolution, no blur", half_no_blur, SSAO_PASS_GRID | SSAO_PASS_OCCLUSION | SSAO_PASS_UPSAMPLE},
-        {"depth-aware", with_blur(SSAO_BLUR_DEPTH_AWARE), SSAO_PASS_OCCLUSION | SSAO_PASS_BLUR_X | SSAO_PASS_BLUR_Y},
-        {"gaussian", with_blur(SSAO_BLUR_GAUSSIAN), SSAO_PASS_OCCLUSION | SSAO_PASS_BLUR_X | SSAO_PASS_BLUR_Y},
-        {"box 4x4", with_blur(SSAO_BLUR_BOX_4X4), SSAO_PASS_OCCLUSION | SSAO_PASS_BLUR_X},
-        {"no blur", with_blur(SSAO_BLUR_NONE), SSAO_PASS_OCCLUSION},
+        {"depth-aware", with_blur(SSAO_BLUR_DEPTH_AWARE),
+         SSAO_PASS_GRID | SSAO_PASS_OCCLUSION | SSAO_PASS_BLUR_X | SSAO_PASS_BLUR_Y},
+        {"gaussian", with_blur(SSAO_BLUR_GAUSSIAN), SSAO_PASS_GRID | SSAO_PASS_OCCLUSION | SSAO_PASS_BLUR_X | SSAO_PASS_BLUR_Y},
+        {"box 4x4", with_blur(SSAO_BLUR_BOX_4X4), SSAO_PASS_GRID | SSAO_PASS_OCCLUSION | SSAO_PASS_BLUR_X},
+        {"no blur", with_blur(SSAO_BLUR_NONE), SSAO_PASS_GRID | SSAO_PASS_OCCLUSION},
+        {"kernel, no blur", kernel_no_blur, SSAO_PASS_OCCLUSION},
         {"strength off", off, SSAO_PASS_CLEAR},
         {"strength off, no blur", off_no_blur, SSAO_PASS_CLEAR},
     };
@@ -598,7 +604,7 @@ TEST_CASE("abi: a host output texture is written at the viewport only and return
         CHECK(out.origin[1] == 6);
         CHECK(out.passes_run == (s.strength == SSAO_STRENGTH_OFF
                                      ? uint32_t(SSAO_PASS_CLEAR)
-                                     : uint32_t(SSAO_PASS_OCCLUSION | SSAO_PASS_BLUR_X | SSAO_PASS_BLUR_Y)));
+                                     : uint32_t(SSAO_PASS_GRID | SSAO_PASS_OCCLUSION | SSAO_PASS_BLUR_X | SSAO_PASS_BLUR_Y)));
         const std::vector<float> px = read_red(gl, host_out, kSize, kSize);
         int outside_changed = 0, inside_low = 0;
         for (int y = 0; y < kSize; ++y)
@@ -874,9 +880,10 @@ TEST_CASE("abi: get_timings reports one GPU time per pass, in the order the pass
         std::vector<uint32_t> kinds;
     };
     const Expect expect[] = {
-        {"depth-aware", with_blur(SSAO_BLUR_DEPTH_AWARE), {SSAO_PASS_OCCLUSION, SSAO_PASS_BLUR_X, SSAO_PASS_BLUR_Y}},
-        {"box", box, {SSAO_PASS_OCCLUSION, SSAO_PASS_BLUR_X}},
-        {"no blur", with_blur(SSAO_BLUR_NONE), {SSAO_PASS_OCCLUSION}},
+        {"depth-aware", with_blur(SSAO_BLUR_DEPTH_AWARE),
+         {SSAO_PASS_GRID, SSAO_PASS_OCCLUSION, SSAO_PASS_BLUR_X, SSAO_PASS_BLUR_Y}},
+        {"box", box, {SSAO_PASS_GRID, SSAO_PASS_OCCLUSION, SSAO_PASS_BLUR_X}},
+        {"no blur", with_blur(SSAO_BLUR_NONE), {SSAO_PASS_GRID, SSAO_PASS_OCCLUSION}},
         {"strength off", off, {SSAO_PASS_CLEAR}},
     };
     uint64_t executes = 0;
@@ -914,7 +921,7 @@ TEST_CASE("abi: get_timings accepts the 1.0 size (fills the prefix only) and the
     uint64_t executes = 0;
     const ssao_timings full = measured_timings(f, scene, with_blur(SSAO_BLUR_DEPTH_AWARE), executes);
     REQUIRE(full.available == 1u);
-    REQUIRE(full.pass_count == 3u);
+    REQUIRE(full.pass_count == 4u);  // grid, visibility, blur x, blur y
 
     // A host compiled against the 1.0 header: 40 bytes, ending at total_ms.
     constexpr uint32_t kSize10 = 40;

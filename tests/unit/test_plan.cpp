@@ -272,18 +272,32 @@ TEST_CASE("pass table: one row per pass, with distinct debug groups, the public 
     CHECK(uint32_t(SSAO_PASS_DOWNSAMPLE) == uint32_t(SSAO_PASS_GRID));
 }
 
-TEST_CASE("plan: the method picks the AO pass's program and nothing else") {
+TEST_CASE("plan: the method picks the estimator's program; the visibility march always reads the grid") {
     const AnalysedInputs in = inputs(0, 0, 64, 48);
-    ssao_settings kernel = resolved(SSAO_BLUR_DEFAULT), visibility = kernel;
-    kernel.method = SSAO_METHOD_KERNEL;
-    visibility.method = SSAO_METHOD_VISIBILITY;
-    const FramePlan pk = plan_frame(kernel, in), pv = plan_frame(visibility, in);
-    check_invariants(pv, in);
-    REQUIRE(pk.pass_count == pv.pass_count);
-    CHECK(program_of(pk.passes[0].kind) == ProgramId::kernel);
-    CHECK(program_of(pv.passes[0].kind) == ProgramId::visibility);
-    for (int i = 1; i < pv.pass_count; ++i) CHECK(program_of(pv.passes[i].kind) == program_of(pk.passes[i].kind));
-    CHECK(pv.passes_run() == pk.passes_run());
+    for (ssao_resolution res : {SSAO_RESOLUTION_FULL, SSAO_RESOLUTION_HALF}) {
+        CAPTURE(res);
+        ssao_settings kernel = resolved(SSAO_BLUR_DEFAULT), visibility = kernel;
+        kernel.method = SSAO_METHOD_KERNEL;
+        visibility.method = SSAO_METHOD_VISIBILITY;
+        kernel.resolution = visibility.resolution = res;
+        const FramePlan pk = plan_frame(kernel, in), pv = plan_frame(visibility, in);
+        check_invariants(pk, in);
+        check_invariants(pv, in);
+        // At full resolution the kernel reads the host's textures; the
+        // march reads one plane texel per step, so a grid pass comes first.
+        const bool kernel_grid = res != SSAO_RESOLUTION_FULL;
+        REQUIRE(pv.pass_count == pk.pass_count + (kernel_grid ? 0 : 1));
+        REQUIRE(pv.passes[0].kind == PassKind::grid);
+        CHECK((pk.passes[0].kind == PassKind::grid) == kernel_grid);
+        const int k0 = kernel_grid ? 1 : 0;
+        CHECK(program_of(pk.passes[k0].kind) == ProgramId::kernel);
+        CHECK(program_of(pv.passes[1].kind) == ProgramId::visibility);
+        CHECK((pv.passes[1].variant & variant::grid_input) != 0);
+        CHECK(((pk.passes[k0].variant & variant::grid_input) != 0) == kernel_grid);
+        for (int i = 2; i < pv.pass_count; ++i)
+            CHECK(program_of(pv.passes[i].kind) == program_of(pk.passes[i - 1 + k0].kind));
+        CHECK(pv.passes_run() == (pk.passes_run() | SSAO_PASS_GRID));
+    }
 }
 
 namespace {
