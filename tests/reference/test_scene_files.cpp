@@ -195,11 +195,15 @@ TEST_CASE("a buffer file larger than its byteLength is refused before it is read
     CHECK_FALSE(has(r.error, "3221225472"));
     // A few bytes off: the same sentence, not tinygltf's "requestedBytes 36, but got 40".
     dir.write("forty.bin", triangle_bytes() + "pad!");
-    const Result f = load(dir.write("f.gltf", triangle_gltf("forty.bin")));
+    const std::string forty = dir.write("f.gltf", triangle_gltf("forty.bin"));
+    const Result f = load(forty);
     CHECK_FALSE(f.ok);
     CHECK(has(f.error, "names a file whose size is not the 36 bytes its byteLength declares."));
     CHECK_FALSE(has(f.error, "requestedBytes"));
-    CHECK_FALSE(has(f.error, "40"));
+    // The size is not said: no "40" after the scene's path (the temporary
+    // folder's name, which the sentence starts with, may hold those digits).
+    REQUIRE(f.error.compare(0, forty.size(), forty) == 0);
+    CHECK_FALSE(has(f.error.substr(forty.size()), "40"));
 }
 
 TEST_CASE("buffer URIs that leave the scene's folder are refused, naming the URI, unless allowed") {
