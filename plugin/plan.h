@@ -74,7 +74,8 @@ constexpr int kBits = 8;
 enum class TexFormat : uint8_t {
     rg32f,  // intermediate: (ao, view z) for the next pass at full resolution
     rgba32f,  // intermediate: the grid pass's plane texel (view z, SKY_Z for the sky; depth gradient;
-              // grazing cosine) and its view-space normal (xyz, 0) per block
+              // grazing cosine) and its view-space normal (xyz, 0) per block; below full resolution
+              // also the AO texture (ao, view z, the plane's gradient) for the upsample
     r8,     // owned output, SSAO_OUTPUT_R8
     r16f,   // owned output, SSAO_OUTPUT_R16F
     rgba8,  // owned output of the normal debug views: n * 0.5 + 0.5 in RGB, alpha 1
