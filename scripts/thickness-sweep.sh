@@ -29,7 +29,10 @@ for sc in $scenes; do
     build/reference/ssao-reference "$sc" --width 320 --height 180 --samples 256 --radius "$r" --quiet \
       --out "$work/ref" >/dev/null
     while IFS=: read -r cfg flags; do
-      steps=$(echo "$flags" | awk '{ print ($1 == "--steps") ? $2 : 8 }')
+      # The configuration's step count as the plugin resolves it (ssao-host's ssao: line).
+      # shellcheck disable=SC2086
+      steps=$(build/host/ssao-host "$sc" --width 32 --height 18 --only ao --no-sheet $flags --out "$work/probe" |
+              grep -o "x [0-9]* steps" | head -1 | awk '{print $2}')
       for tr in 0.5 0.625 0.75 0.875 1 1.5; do
         t=$(awk -v a="$r" -v b="$tr" 'BEGIN { print a * b }')
         # shellcheck disable=SC2086

@@ -69,9 +69,9 @@ ivec2 grid_pixel(ivec2 t) { return grid_pixel(grid_map(), t); }
 float fetch_depth(ivec2 t) { return input_depth(t); }
 
 // The grid pass stores view z (its plane texels' .r, grid.frag) and the AO
-// pass hands the blur and the upsample its view z beside the AO (RG32F), so a
-// later pass fetches one texel and rebuilds nothing through the inverse
-// projection. The sky (and a depth whose position is not finite) carries this
+// pass hands the blur and the upsample its view z beside the AO
+// (ao_texture.glsl), so a later pass fetches one texel and rebuilds nothing
+// through the inverse projection. The sky (and a depth whose position is not finite) carries this
 // marker instead.
 const float SKY_Z = 3.0e38;
 

@@ -252,19 +252,11 @@ bool pixel_to_texel(GridMap g, vec2 spf, out ivec2 texel) {
 bool pixel_to_texel(vec2 spf, out ivec2 texel) { return pixel_to_texel(grid_map(), spf, texel); }
 
 // Where the point with clip coordinates c lands: the grid texel whose block
-// holds it, or false when it is behind the eye or off the viewport; spf: its
-// viewport pixel coordinates (a pixel's centre is +0.5).
-bool clip_to_texel(vec4 c, out ivec2 texel, out vec2 spf) {
-    texel = ivec2(0);
-    spf = vec2(0.0);
-    if (!(c.w > 0.0)) return false;
-    spf = (c.xy / c.w * 0.5 + 0.5) * vec2(consts.viewport_size);
-    return pixel_to_texel(spf, texel);
-}
-
+// holds it, or false when it is behind the eye or off the viewport.
 bool clip_to_texel(vec4 c, out ivec2 texel) {
-    vec2 spf;
-    return clip_to_texel(c, texel, spf);
+    texel = ivec2(0);
+    if (!(c.w > 0.0)) return false;
+    return pixel_to_texel((c.xy / c.w * 0.5 + 0.5) * vec2(consts.viewport_size), texel);
 }
 
 // The same for view-space point s.

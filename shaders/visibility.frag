@@ -74,7 +74,8 @@ StepSetup step_setup(Surface sf) {
 // still linear in the step, so a step's pixel position is one division.
 vec4 step_clip(StepSetup st, vec4 c) { return vec4((c.xy + c.w) * (0.5 * st.g.size), c.zw); }
 
-// Where a step (step_clip's coordinates) lands, as clip_to_texel.
+// Where a step (step_clip's coordinates) lands, as clip_to_texel (sampling.glsl); spf: its
+// viewport pixel coordinates.
 bool step_to_texel(StepSetup st, vec4 c, out ivec2 texel, out vec2 spf) {
     texel = ivec2(0);
     spf = vec2(0.0);
