@@ -15,7 +15,10 @@
 
 namespace flags {
 
-void fail(const std::string& message) { throw Error{message}; }
+// Printable however the message was put together: a value echoed raw after
+// it parsed (strtod skips leading whitespace, a newline included) must not
+// break the one-line error.
+void fail(const std::string& message) { throw Error{printable(message)}; }
 
 std::string quoted(const std::string& s) {
     return "'" + printable(s) + "'";

@@ -126,6 +126,11 @@ for args in "--radius 1e-45" "--fov 1e-30" "--near 1e-40"; do
   set -- $args
   check "ssao-reference $args: exit 2, one line naming $1" expect_error 2 "$1 $2" "$reference" $args --out "$out"
 done
+# A value that parses after leading whitespace is echoed escaped: the error stays one line (found by fuzz_flags).
+check "ssao-host --fov NEWLINE.2e-28: exit 2, one line, the newline escaped" \
+  expect_error 2 "--fov \\x0a.2e-28 is too narrow" "$host" --fov $'\n.2e-28' --out "$out"
+check "ssao-reference --radius NEWLINE-1: exit 2, one line, the newline escaped" \
+  expect_error 2 "--radius \\x0a-1 must be greater than 0" "$reference" --radius $'\n-1' --out "$out"
 # llvmpipe allows 4 samples; a GL that allows 32 renders instead.
 if "$host" --msaa 32 --width 16 --height 16 --frames 1 --only ao --out "$work/msaa32" >/dev/null 2>&1; then
   echo "ok      ssao-host --msaa 32: this GL allows 32 samples (the limit is not exercised here)"
