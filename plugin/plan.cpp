@@ -100,18 +100,21 @@ void plan_sampling(Builder& b, const ssao_settings& s, const AnalysedInputs& in,
 
     // The visibility march reads one plane texel per step (grid.frag), which
     // is cheaper than the host's depth through the inverse projection and a
-    // normal, so it runs on the grid at full resolution too; the kernel reads
-    // the host's textures there.
-    const bool grid = reduced || in.multisample || in.normals_from_depth || estimator == PassKind::visibility;
+    // normal, so it runs on the grid at full resolution too. The kernel reads
+    // the host's textures there unless the depth-aware blur follows, which
+    // tests its taps against the grid's tangent planes (blur.frag).
+    const bool grid = reduced || in.multisample || in.normals_from_depth || estimator == PassKind::visibility ||
+                      s.blur == SSAO_BLUR_DEPTH_AWARE;
     const GridTextures grid_tex = grid ? add_grid_pass(b, in, scale, low) : GridTextures{};
 
     // Where the last pass on the grid writes: the output at full resolution,
     // else an intermediate for the upsample.
     const bool last_is_ao = !blur;
     const bool ao_to_output = !reduced && last_is_ao;
-    // Below full resolution the AO texture also carries the plane's screen
-    // gradient (ao_texture.glsl), which the upsample's depth test reads.
-    const TexFormat ao_format = reduced ? TexFormat::rgba32f : TexFormat::rg32f;
+    // Read from the grid, the AO texture also carries the plane's screen
+    // gradient (ao_texture.glsl), which the blur's and the upsample's depth
+    // tests read.
+    const TexFormat ao_format = grid ? TexFormat::rgba32f : TexFormat::rg32f;
     const TexRef ao_target =
         ao_to_output ? output : TexRef::of(Source::intermediate, b.intermediate(lw, lh, ao_format));
     Pass& ao = b.add(estimator, ao_target, ao_to_output ? final_rect : low);
@@ -131,6 +134,7 @@ void plan_sampling(Builder& b, const ssao_settings& s, const AnalysedInputs& in,
         bx.inputs[SSAO_UNIT_AO] = ao_target;
         bx.direction[0] = 1;
         bx.depth_aware = reduced;
+        bx.scale = scale;
         low_ao = x_target;
         if (separable) {
             // Below full resolution back into the estimator's texture: its
@@ -140,6 +144,7 @@ void plan_sampling(Builder& b, const ssao_settings& s, const AnalysedInputs& in,
             by.inputs[SSAO_UNIT_AO] = x_target;
             by.direction[1] = 1;
             by.depth_aware = reduced;
+            by.scale = scale;
             low_ao = y_target;
         }
     }

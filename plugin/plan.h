@@ -72,10 +72,11 @@ constexpr int kBits = 8;
 
 // Formats of the textures the plan renders into.
 enum class TexFormat : uint8_t {
-    rg32f,  // intermediate: (ao, view z) for the next pass at full resolution
+    rg32f,  // intermediate: (ao, view z) for the next pass, where the sampling pass reads no grid
     rgba32f,  // intermediate: the grid pass's plane texel (view z, SKY_Z for the sky; depth gradient;
-              // grazing cosine) and its view-space normal (xyz, 0) per block; below full resolution
-              // also the AO texture (ao, view z, the plane's gradient) for the upsample
+              // grazing cosine) and its view-space normal (xyz, 0) per block; where the sampling
+              // pass reads the grid also the AO texture (ao, view z, the plane's gradient) for the
+              // blur and the upsample
     r8,     // owned output, SSAO_OUTPUT_R8
     r16f,   // owned output, SSAO_OUTPUT_R16F
     rgba8,  // owned output of the normal debug views: n * 0.5 + 0.5 in RGB, alpha 1
@@ -120,7 +121,8 @@ struct Pass {
     // Viewport pixels per texel of the reduced grid (u_scale: 1, 2 or 4):
     // the grid the sampling pass reads (1: the host's textures, else the
     // grid pass's intermediate), the grid the grid pass writes, the grid
-    // the upsample reads. Blurs ignore it.
+    // the upsample reads, the grid a blur runs on (its taps' offsets in
+    // viewport pixels).
     int scale = 1;
     // Blurs: weigh taps by depth similarity whatever the blur kind
     // (u_depth_aware). Set below full resolution, where a blurred grid texel

@@ -1,8 +1,9 @@
 // Blur passes over the raw AO: the chapter's 4x4 box, or one direction of a
-// separable gaussian, optionally depth-aware (taps whose view depth differs
-// from the centre's by more than the tolerance get no weight, so occlusion is
-// not carried across silhouettes; sky taps never count). The view depth comes
-// with the AO from the previous pass; the depth texture is not read.
+// separable gaussian, optionally depth-aware (depth_weight below: a tap off
+// the surface at the centre gets no weight, so occlusion is not carried
+// across silhouettes; sky taps never count). The view depth and the tangent
+// plane come with the AO from the previous pass; the depth texture is not
+// read.
 //
 // Variant BLUR_WEIGHTS (debug view SSAO_DEBUG_VIEW_BLUR_WEIGHTS) writes, in
 // place of the blurred AO, the share of the pass's gaussian (box: uniform)
@@ -17,6 +18,20 @@ uniform ivec2 u_blur_dir;       // (1,0) or (0,1); unused by the box
 uniform ivec2 u_pass_size;      // the grid blurred: the viewport, or the reduced grid below full resolution
 uniform bool u_depth_aware;     // below full resolution: every kind weighs taps by depth similarity
 
+// The depth weight of a tap at view z tap_z, du viewport pixels from a centre
+// at view z z0 whose tangent plane has the screen gradient g0: 1 on the
+// centre's surface, falling linearly to 0 at the tolerance. With a plane
+// (ao_texture.glsl) the tap is compared with the view z the plane puts under
+// it, within kPlaneTolerance of the tolerance; without one (g0 = 0: a normal
+// along the view axis, or none usable) with z0 itself, within the tolerance
+// (consts.blur_depth_tolerance * |z0|).
+float depth_weight(float tap_z, vec2 du, float z0, vec2 g0, float tolerance) {
+    bool plane = any(notEqual(g0, vec2(0.0)));
+    float expected = plane ? plane_z(z0, g0, du, consts.orthographic != 0) : z0;
+    float within = plane ? max(kPlaneTolerance * tolerance, 1e-30) : tolerance;
+    return clamp(1.0 - abs(tap_z - expected) / within, 0.0, 1.0);
+}
+
 void main() {
     ivec2 vpx = ivec2(gl_FragCoord.xy) - u_target_origin;
     ivec2 size = u_pass_size;
@@ -28,6 +43,8 @@ void main() {
     // Floored: an orthographic camera whose near plane lies behind the eye
     // has surfaces at view z = 0, where 0/0 would be undefined.
     float tolerance = max(consts.blur_depth_tolerance * abs(z0), 1e-30);
+    GridMap grid = grid_map();
+    ivec2 u0 = grid_pixel(grid, vpx);  // tap offsets in viewport pixels: a grid texel spans several
     if (kind == SSAO_SHADER_BLUR_BOX) {
         // The chapter's blur: offsets -2..1 in x and y, clamped at the edges;
         // sky taps take no part in the average (the centre never is sky).
@@ -39,9 +56,10 @@ void main() {
 #endif
         for (int y = -2; y < 2; ++y)
             for (int x = -2; x < 2; ++x) {
-                vec2 tap = texelFetch(u_ao_tex, clamp(vpx + ivec2(x, y), ivec2(0), size - 1), 0).rg;
+                ivec2 t = clamp(vpx + ivec2(x, y), ivec2(0), size - 1);
+                vec2 tap = texelFetch(u_ao_tex, t, 0).rg;
                 if (tap.g == SKY_Z) continue;
-                float w = u_depth_aware ? clamp(1.0 - abs(tap.g - z0) / tolerance, 0.0, 1.0) : 1.0;
+                float w = u_depth_aware ? depth_weight(tap.g, vec2(grid_pixel(grid, t) - u0), z0, g0, tolerance) : 1.0;
                 sum += tap.r * w;
                 count += w;
 #ifdef SSAO_BLUR_WEIGHTS
@@ -71,7 +89,7 @@ void main() {
 #ifdef SSAO_BLUR_WEIGHTS
         gaussian += w;
 #endif
-        if (aware) w *= clamp(1.0 - abs(tap.g - z0) / tolerance, 0.0, 1.0);
+        if (aware) w *= depth_weight(tap.g, vec2(grid_pixel(grid, t) - u0), z0, g0, tolerance);
         sum += tap.r * w;
         weight += w;
     }

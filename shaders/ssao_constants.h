@@ -9,6 +9,9 @@
 #define SSAO_MAX_KERNEL 64          /* = SSAO_MAX_SAMPLES of the ABI */
 #define SSAO_NOISE_SIZE 4           /* the noise texture is 4x4 */
 #define SSAO_BLUR_MAX_TAPS 16       /* = SSAO_MAX_BLUR_RADIUS of the ABI */
+/* The depth tests against a tangent plane (the blur's, the upsample's) accept
+ * this share of the blur's relative depth tolerance (ao_texture.glsl). */
+#define SSAO_PLANE_TOLERANCE 0.2
 
 /* Texture units the passes sample from (the state guard saves exactly these). */
 #define SSAO_UNIT_DEPTH 0

@@ -15,13 +15,6 @@
 // takes the value of its own block's grid texel, no depth weights, so the
 // view shows what the grid holds.
 
-// A tap's plane puts the surface where it is for a plane, so the test can be
-// five times tighter than the blur's, which compares view z alone: tight
-// enough that the floor of a groove narrower than a block does not take the
-// AO of the ridges beside it (benchmark scene creases), where a view-z test
-// within the blur's tolerance let it.
-const float kPlaneTolerance = 0.2;
-
 // The depth-weighted bilinear AO of the 2x2 grid texels around pixel p at view z z0.
 float depth_weighted(ivec2 p, float z0) {
     // Floored as in the blur: an orthographic surface may sit at view z = 0.
@@ -41,12 +34,7 @@ float depth_weighted(ivec2 p, float z0) {
         ivec2 t = clamp(t0 + ivec2(k & 1, k >> 1), ivec2(0), last);
         vec4 tap = texelFetch(u_ao_tex, t, 0);
         vec2 u0 = vec2(grid_pixel(g, t)) + 0.5;
-        // The tap's tangent plane's view z under p (as the march reads it,
-        // visibility.frag step_surface); the tap's own where p's ray meets
-        // that plane behind the eye.
-        float gd = dot(tap.ba, u - u0);
-        float r = 1.0 + gd;
-        float zp = ortho ? tap.g + gd : (r > 0.0 ? tap.g / r : tap.g);
+        float zp = plane_z(tap.g, tap.ba, u - u0, ortho);  // the tap's tangent plane's view z under p
         // A sky tap (view z SKY_Z, AO 1) is never within the tolerance, and
         // the nearest in depth only when every tap is sky: then 1, open.
         float dz = abs(zp - z0);

@@ -1,5 +1,6 @@
 #include "hc_util.h"
 
+#include "uniforms.h"  // SSAO_PLANE_TOLERANCE (shaders/ssao_constants.h)
 #include "test_scenes.h"
 
 #include <doctest/doctest.h>
@@ -128,6 +129,35 @@ glm::dmat4 pixel_shift(const glm::dmat4& proj, double px, double py, int w, int 
     shift[3][0] = 2.0 * px / w;
     shift[3][1] = 2.0 * py / h;
     return shift * proj;
+}
+
+double tangent_plane_z(const analytic::GBuffer& g, const glm::dmat4& proj, int x0, int y0, int x, int y) {
+    const size_t c = static_cast<size_t>(y0) * g.width + x0;
+    const glm::dvec3 P0 = g.position[c];
+    const glm::dvec3 n = glm::dvec3(g.normal[c]);
+    // Two points of the pixel's ray: its NDC point on the near and the far
+    // clip planes, back through the projection (any convention, any camera).
+    const glm::dmat4 inv = glm::inverse(proj);
+    const double nx = (x + 0.5) / g.width * 2.0 - 1.0, ny = (y + 0.5) / g.height * 2.0 - 1.0;
+    auto unproject = [&](double nz) {
+        const glm::dvec4 h = inv * glm::dvec4(nx, ny, nz, 1.0);
+        return glm::dvec3(h) / h.w;
+    };
+    const glm::dvec3 A = unproject(-0.5), B = unproject(0.5);
+    const double along = glm::dot(n, B - A);
+    if (along == 0.0) return P0.z;
+    return (A + (B - A) * (glm::dot(n, P0 - A) / along)).z;
+}
+
+double blur_depth_weight(const analytic::GBuffer& g, const glm::dmat4& proj, double relative_tolerance, int x0, int y0,
+                         int x, int y) {
+    const size_t c = static_cast<size_t>(y0) * g.width + x0;
+    const double z0 = g.position[c].z;
+    const bool plane = g.normal[c].x != 0.0f || g.normal[c].y != 0.0f;
+    const double tolerance = std::max(relative_tolerance * std::abs(z0) * (plane ? SSAO_PLANE_TOLERANCE : 1.0), 1e-30);
+    const double expected = plane ? tangent_plane_z(g, proj, x0, y0, x, y) : z0;
+    const double dz = std::abs(g.position[static_cast<size_t>(y) * g.width + x].z - expected);
+    return std::clamp(1.0 - dz / tolerance, 0.0, 1.0);
 }
 
 double depth_at(const glm::dmat4& proj, ssao_clip_range clip, double t) {

@@ -79,6 +79,21 @@ glm::dmat4 frustum(double l, double r, double b, double t, double n, double f); 
 // Shifts the image by (px, py) whole or fractional pixels of a w x h viewport.
 glm::dmat4 pixel_shift(const glm::dmat4& proj, double px, double py, int w, int h);
 
+// The view z at which the ray through the centre of pixel (x, y) meets the
+// tangent plane of the surface at pixel (x0, y0) (its position and normal in
+// g), for a G-buffer rendered through proj: what the depth-aware blur expects
+// at a tap. The centre's own z when the ray runs parallel to the plane.
+double tangent_plane_z(const analytic::GBuffer& g, const glm::dmat4& proj, int x0, int y0, int x, int y);
+// The depth-aware blur's weight of the tap at pixel (x, y) for the centre
+// (x0, y0), from its definition (blur.frag depth_weight): 1 - |dz| / tolerance
+// clamped to [0, 1], the tolerance relative_tolerance |z0|. Where the centre's
+// tangent plane is not parallel to the image (its normal has an x or y), dz is
+// the tap's view z less the view z that plane puts under the tap and the
+// tolerance shrinks by SSAO_PLANE_TOLERANCE; else dz is the tap's view z less
+// the centre's.
+double blur_depth_weight(const analytic::GBuffer& g, const glm::dmat4& proj, double relative_tolerance, int x0, int y0,
+                         int x, int y);
+
 // The depth-buffer value of view distance t along -z.
 double depth_at(const glm::dmat4& proj, ssao_clip_range clip, double t);
 // Bits of a depth format (16, 24, 32 = float).

@@ -11,6 +11,8 @@
 #include "conventions.h"
 #include "hc_util.h"
 
+#include <glm/gtc/packing.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -313,20 +315,17 @@ namespace {
 
 // blur.frag's share of one pass at pixel (x, y) along (dx, dy), in double:
 // sum(g * depth weight) / sum(g) over the in-bounds non-sky taps, g the
-// gaussian of the resolved sigma, the depth weight 1 - |dz| / (tolerance |z|)
-// clamped to [0, 1]; the centre counts 1 in both sums.
-double pass_share(const GBuffer& g, const ssao_settings& s, int x, int y, int dx, int dy) {
-    const double z0 = g.position[hc::at(x, y, g.width)].z;
-    const double tolerance = std::max(double(s.blur_depth_tolerance) * std::abs(z0), 1e-30);
+// gaussian of the resolved sigma, the depth weight hc::blur_depth_weight; the
+// centre counts 1 in both sums.
+double pass_share(const GBuffer& g, const glm::dmat4& proj, const ssao_settings& s, int x, int y, int dx, int dy) {
     double kept = 1.0, all = 1.0;
     const int r = int(s.blur_radius);
     for (int k = -r; k <= r; ++k) {
         const int u = x + k * dx, v = y + k * dy;
         if (k == 0 || u < 0 || v < 0 || u >= g.width || v >= g.height || g.sky(u, v)) continue;
         const double w = std::exp(-double(k * k) * 0.5 / (double(s.blur_sigma) * double(s.blur_sigma)));
-        const double dz = std::abs(g.position[hc::at(u, v, g.width)].z - z0);
         all += w;
-        kept += w * std::clamp(1.0 - dz / tolerance, 0.0, 1.0);
+        kept += w * hc::blur_depth_weight(g, proj, s.blur_depth_tolerance, x, y, u, v);
     }
     return kept / all;
 }
@@ -343,6 +342,11 @@ TEST_CASE("debug views: BLUR_WEIGHTS of the depth-aware blur is the product of b
     // weights everywhere, a wall, boxes).
     for (const Scene& scene : {wall_and_box(true), hc::crease_scene()}) {
         const GBuffer g = analytic::render(scene, proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, W, H);
+        // The oracle's tangent planes come from the normals as the plugin
+        // reads them (the fixture uploads RGBA16F): the plane test's
+        // tolerance is tight enough for half-float rounding to show.
+        GBuffer read = g;
+        for (glm::vec3& n : read.normal) n = glm::unpackHalf4x16(glm::packHalf4x16(glm::vec4(n, 0.0f)));
         for (uint32_t radius : {2u, 5u}) {
             CAPTURE(radius);
             ssao_settings want = make(m, SSAO_BLUR_DEPTH_AWARE, SSAO_RESOLUTION_FULL, SSAO_DEBUG_VIEW_BLUR_WEIGHTS);
@@ -355,7 +359,7 @@ TEST_CASE("debug views: BLUR_WEIGHTS of the depth-aware blur is the product of b
             for (int y = 0; y < H; ++y)
                 for (int x = 0; x < W; ++x) {
                     const double oracle =
-                        g.sky(x, y) ? 1.0 : pass_share(g, s, x, y, 1, 0) * pass_share(g, s, x, y, 0, 1);
+                        g.sky(x, y) ? 1.0 : pass_share(read, proj, s, x, y, 1, 0) * pass_share(read, proj, s, x, y, 0, 1);
                     const double d = std::abs(oracle - double(r.ao[hc::at(x, y, W)]));
                     worst = std::max(worst, d);
                     off += d > 2e-3;  // R16F output (a step below 1 is 4.9e-4); measured worst 4.8e-4

@@ -215,7 +215,7 @@ TEST_CASE("silhouettes: the depth-aware blur keeps each side of a depth step wit
             const double z0 = zof(x, y);
             if (z0 < 5) raw_min_near = std::min(raw_min_near, raw.ao[hc::at(x, y, W)]);
             const Hull h = hull(raw.ao, W, H, x, y, static_cast<int>(blurred_settings.blur_radius), [&](int tx, int ty) {
-                return !g.sky(tx, ty) && std::abs(zof(tx, ty) - z0) <= blurred_settings.blur_depth_tolerance * z0;
+                return !g.sky(tx, ty) && hc::blur_depth_weight(g, proj, blurred_settings.blur_depth_tolerance, x, y, tx, ty) > 0.0;
             });
             const float v = blurred.ao[hc::at(x, y, W)];
             bool has_other_side = false;

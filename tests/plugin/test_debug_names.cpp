@@ -67,7 +67,7 @@ TEST_CASE("debug groups: each pass in its own group inside 'ssao', in the plan's
         std::vector<std::string> passes;
     };
     const Case cases[] = {
-        {"depth-aware", make(16, SSAO_BLUR_DEPTH_AWARE), {"ssao: kernel", "ssao: blur x", "ssao: blur y"}},
+        {"depth-aware", make(16, SSAO_BLUR_DEPTH_AWARE), {"ssao: grid", "ssao: kernel", "ssao: blur x", "ssao: blur y"}},
         {"gaussian", make(16, SSAO_BLUR_GAUSSIAN), {"ssao: kernel", "ssao: blur x", "ssao: blur y"}},
         {"box", make(16, SSAO_BLUR_BOX_4X4), {"ssao: kernel", "ssao: blur x"}},
         {"no blur", make(16, SSAO_BLUR_NONE), {"ssao: kernel"}},
@@ -177,7 +177,7 @@ TEST_CASE("debug groups: a host stack with no room for two more gets none, and n
         CAPTURE(events);
         // Two free slots hold "ssao" and one pass group; fewer get nothing.
         if (free_slots >= 2)
-            CHECK(log.events() == expected_groups({"ssao: kernel", "ssao: blur x", "ssao: blur y"}));
+            CHECK(log.events() == expected_groups({"ssao: grid", "ssao: kernel", "ssao: blur x", "ssao: blur y"}));
         else
             CHECK(log.events().empty());
         CHECK(fx.read_red(out.texture, scene.g.width, scene.g.height) == ao_reference);
@@ -209,10 +209,13 @@ TEST_CASE("object labels: every GL object the library made carries an 'ssao: ...
     };
     const Kind kinds[] = {
         {GL_TEXTURE, [](GladGLContext& g, GLuint n) { return g.IsTexture(n); },
-         {"ssao: intermediate 0", "ssao: intermediate 1", "ssao: noise", "ssao: output"}},
+         // The grid pass's two (the depth-aware blur reads its tangent planes), the AO, the blur's x pass.
+         {"ssao: intermediate 0", "ssao: intermediate 1", "ssao: intermediate 2", "ssao: intermediate 3", "ssao: noise",
+          "ssao: output"}},
         {GL_PROGRAM, [](GladGLContext& g, GLuint n) { return g.IsProgram(n); },
-         {"ssao: kernel program", "ssao: blur program", "ssao: visibility program", "ssao: grid program",
-          "ssao: upsample program"}},
+         // Those create_context compiles, and the kernel's variant that reads the grid.
+         {"ssao: kernel program", "ssao: kernel program", "ssao: blur program", "ssao: visibility program",
+          "ssao: grid program", "ssao: upsample program"}},
         {GL_BUFFER, [](GladGLContext& g, GLuint n) { return g.IsBuffer(n); },
          {"ssao: frame constants", "ssao: kernel"}},
         {GL_FRAMEBUFFER, [](GladGLContext& g, GLuint n) { return g.IsFramebuffer(n); }, {"ssao: framebuffer"}},
@@ -239,13 +242,13 @@ TEST_CASE("object labels: every GL object the library made carries an 'ssao: ...
         }
         CHECK(library == k.expected);
     }
-    // Timer queries: every one used so far (one per stamp: 4 a frame, 3 frames) is named.
+    // Timer queries: every one used so far (one per stamp: 5 a frame for four passes, 3 frames) is named.
     int timers = 0;
     for (GLuint name = 1; name < 512; ++name)
         if (gl.IsQuery(name)) {
             CHECK(testgl::object_label(gl, GL_QUERY, name) == "ssao: timer");
             ++timers;
         }
-    CHECK(timers == 3 * 4);
+    CHECK(timers == 3 * 5);
     CHECK(fx.gl_errors().empty());
 }

@@ -157,17 +157,27 @@ TEST_CASE("plan: the box blur is one blur pass, the separable blurs two") {
         CAPTURE(blur);
         const FramePlan p = plan_frame(resolved(blur), in);
         check_invariants(p, in);
-        CHECK(kinds(p) == std::vector<PassKind>{PassKind::kernel, PassKind::blur_x, PassKind::blur_y});
-        CHECK(p.intermediate_count == 2);
-        CHECK(p.passes[0].target == TexRef::of(Source::intermediate, 0));
-        CHECK(p.passes[1].inputs[SSAO_UNIT_AO] == TexRef::of(Source::intermediate, 0));
-        CHECK(p.passes[1].target == TexRef::of(Source::intermediate, 1));
-        CHECK(p.passes[2].inputs[SSAO_UNIT_AO] == TexRef::of(Source::intermediate, 1));
-        CHECK(p.passes[1].direction[0] == 1);
-        CHECK(p.passes[1].direction[1] == 0);
-        CHECK(p.passes[2].direction[0] == 0);
-        CHECK(p.passes[2].direction[1] == 1);
-        CHECK(p.passes_run() == uint32_t(SSAO_PASS_OCCLUSION | SSAO_PASS_BLUR_X | SSAO_PASS_BLUR_Y));
+        // The depth-aware blur tests its taps against the grid's tangent
+        // planes: the grid pass (two intermediates) runs first.
+        const bool grid = blur == SSAO_BLUR_DEPTH_AWARE;
+        const int first = grid ? 1 : 0, ao = grid ? 2 : 0;
+        std::vector<PassKind> want{PassKind::kernel, PassKind::blur_x, PassKind::blur_y};
+        if (grid) want.insert(want.begin(), PassKind::grid);
+        CHECK(kinds(p) == want);
+        CHECK(p.intermediate_count == ao + 2);
+        CHECK(p.passes[first].target == TexRef::of(Source::intermediate, ao));
+        CHECK(p.passes[first + 1].inputs[SSAO_UNIT_AO] == TexRef::of(Source::intermediate, ao));
+        CHECK(p.passes[first + 1].target == TexRef::of(Source::intermediate, ao + 1));
+        CHECK(p.passes[first + 2].inputs[SSAO_UNIT_AO] == TexRef::of(Source::intermediate, ao + 1));
+        CHECK(p.passes[first + 1].direction[0] == 1);
+        CHECK(p.passes[first + 1].direction[1] == 0);
+        CHECK(p.passes[first + 2].direction[0] == 0);
+        CHECK(p.passes[first + 2].direction[1] == 1);
+        // The AO and the x pass carry the plane's gradient exactly when there is one.
+        for (int i = ao; i < ao + 2; ++i)
+            CHECK(p.intermediates[i].format == (grid ? TexFormat::rgba32f : TexFormat::rg32f));
+        CHECK(p.passes_run() == uint32_t((grid ? SSAO_PASS_GRID : 0) | SSAO_PASS_OCCLUSION | SSAO_PASS_BLUR_X |
+                                         SSAO_PASS_BLUR_Y));
     }
 }
 
@@ -180,7 +190,7 @@ TEST_CASE("plan: intermediates are viewport-sized RG32F, odd sizes kept exactly,
         CAPTURE(v[3]);
         for (uint32_t host : {0u, 9u}) {
             const AnalysedInputs in = inputs(v[0], v[1], v[2], v[3], host);
-            const FramePlan p = plan_frame(resolved(SSAO_BLUR_DEPTH_AWARE), in);
+            const FramePlan p = plan_frame(resolved(SSAO_BLUR_GAUSSIAN), in);
             check_invariants(p, in);
             REQUIRE(p.intermediate_count == 2);
             for (int i = 0; i < p.intermediate_count; ++i) {
@@ -429,7 +439,7 @@ TEST_CASE("plan: full resolution plans no downsample or upsample; strength off s
     }
 }
 
-TEST_CASE("plan: multisampled inputs or normals from depth add the grid pass at full resolution too, with its variants") {
+TEST_CASE("plan: multisampled inputs, normals from depth or the depth-aware blur add the grid pass at full resolution too, with its variants") {
     for (bool ms : {false, true})
         for (bool from_depth : {false, true})
             for (ssao_resolution res : {SSAO_RESOLUTION_FULL, SSAO_RESOLUTION_HALF})
@@ -443,7 +453,8 @@ TEST_CASE("plan: multisampled inputs or normals from depth add the grid pass at 
                     in.normals_from_depth = from_depth;
                     const FramePlan p = plan_frame(at_resolution(blur, res), in);
                     check_invariants(p, in);
-                    const bool grid = ms || from_depth || res != SSAO_RESOLUTION_FULL;
+                    // The depth-aware blur tests its taps against the grid's tangent planes.
+                    const bool grid = ms || from_depth || res != SSAO_RESOLUTION_FULL || blur == SSAO_BLUR_DEPTH_AWARE;
                     const Pass& first = p.passes[0];
                     CHECK((first.kind == PassKind::grid) == grid);
                     for (int i = 0; i < p.pass_count; ++i) {
