@@ -86,6 +86,8 @@ std::vector<Config> sweep() {
     for (uint32_t d : {2u, 4u, 8u})
         for (uint32_t steps : {4u, 8u, 16u})
             for (ssao_blur b : blurs) c.push_back(visibility(d, steps, b));
+    // More directions at full resolution, blurred: the top of the accuracy range.
+    for (uint32_t steps : {4u, 8u}) c.push_back(visibility(16, steps, SSAO_BLUR_DEPTH_AWARE));
     // Below full resolution: a quarter (or a sixteenth) of the pixels sampled.
     for (uint32_t d : {2u, 4u, 8u, 16u})
         for (uint32_t steps : {4u, 8u, 16u})
