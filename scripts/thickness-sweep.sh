@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The thickness rule of the visibility estimator, measured: T = 0.5 to 1.5
 # x R for the march at 4, 8, 16 and 32 steps (8 directions, half
-# resolution, as DEFAULT) and for ULTRA's (4 x 8, full resolution, depth-aware
+# resolution, as DEFAULT) and for ULTRA's (full resolution, depth-aware
 # blur), on every benchmark scene (standard view, 320x180) at 0.5, 1 and 2 x
 # its radius: PSNR and bias against V_R (256 rays). The rule the plugin
 # derives (settings.h default_thickness) is read off it. Writes
