@@ -380,6 +380,7 @@ void write_plot(const Options& o, const std::vector<Summary>& sum) {
         const int f = s.kind == Row::Kind::textbook ? 4 : static_cast<int>(s.family);
         dat << s.ratio_textbook << " " << s.psnr << " " << s.psnr_vs_limit << " " << f << "\n";
     }
+    dat.close();  // complete on disk before gnuplot reads it below
     for (int which = 0; which < 2; ++which) {
         std::vector<Summary> f;
         for (const Summary& s : sum)
