@@ -175,7 +175,9 @@ TEST_CASE("depth conventions: a half-pixel jitter leaves the AO profile across t
     // within about one row, and a one-sided average over the rows next to it
     // moves with where the jitter puts them, by up to 0.04 (measured).
     const std::pair<ssao_blur, double> blurs[] = {{SSAO_BLUR_NONE, 0.03}, {SSAO_BLUR_DEPTH_AWARE, 0.05}};
-    for (const auto& [blur, bound] : blurs) {
+    for (const auto& blur_bound : blurs) {
+        const ssao_blur blur = blur_bound.first;
+        const double bound = blur_bound.second;
         CAPTURE(blur);
         fx.settings(hc::make(32, blur, SSAO_ROTATION_HASH, 1.5f, method));
         std::vector<std::vector<Row>> profiles;
