@@ -171,8 +171,8 @@ bool texel_surface(ivec2 t, out vec3 P, out float step) {
 #endif
 
 // The screen gradient of grid texel t's tangent plane (grid.frag
-// plane_texel), which a sampling pass hands the upsample beside its AO
-// (ao_texture.glsl); 0 where the pass reads no grid.
+// plane_texel), which a sampling pass hands the depth-aware blur and the
+// upsample beside its AO (ao_texture.glsl); 0 where the pass reads no grid.
 #ifdef SSAO_GRID_INPUT
 vec2 plane_gradient(ivec2 t) { return texelFetch(u_depth_tex, t, 0).yz; }
 #else

@@ -91,6 +91,7 @@ Run run_sequence(int seed, Barrier* start = nullptr) {
         const GLuint normal = fx.make_normals(GL_RGBA16F, kW, kH, g.normal);
         const ssao_inputs base = fx.inputs(depth, normal, proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE);
         const ssao_blur blurs[] = {SSAO_BLUR_NONE, SSAO_BLUR_DEPTH_AWARE, SSAO_BLUR_BOX_4X4, SSAO_BLUR_GAUSSIAN};
+        const bool overlap = concurrent_executes();
         for (int i = 0; i < kExecutes; ++i) {
             const int step = seed * 7919 + i;
             if (i % 10 == 0) {
@@ -123,7 +124,7 @@ Run run_sequence(int seed, Barrier* start = nullptr) {
             ssao_output out{};
             out.size = sizeof out;
             std::unique_lock<std::mutex> turn(g_execute_turn, std::defer_lock);
-            if (!concurrent_executes()) turn.lock();
+            if (!overlap) turn.lock();
             if (fx.api().execute(fx.ctx(), &in, &out) != SSAO_OK)
                 throw std::runtime_error(std::string("execute: ") + fx.api().last_error(fx.ctx()));
             fx.gl().Finish();  // the draws done before the other thread's turn
