@@ -5,6 +5,17 @@
 // plane come with the AO from the previous pass; the depth texture is not
 // read.
 //
+// The depth-aware gaussian fits a line, not a constant: where the depth test
+// leaves taps on one side only (a pixel on a crease line, beside a
+// silhouette, at the border), a weighted mean of a sloping AO profile is the
+// value some way into the surface, too light at a concave crease, where the
+// AO is darkest at the centre. A weighted least-squares line through the taps,
+// read at the centre, is exact for any linear profile and equals the weighted
+// mean wherever the accepted taps are balanced around the centre. Its slope is
+// damped (SSAO_BLUR_SLOPE_DAMPING is added to the taps' offset variance, in
+// squared pass texels) so that two noisy taps on one side do not swing the
+// result. The chapter's box, and the gaussian that ignores depth, stay means.
+//
 // Variant BLUR_WEIGHTS (debug view SSAO_DEBUG_VIEW_BLUR_WEIGHTS) writes, in
 // place of the blurred AO, the share of the pass's gaussian (box: uniform)
 // weight that the depth test let through: sum(w * depth weight) / sum(w) over
@@ -18,6 +29,8 @@ uniform ivec2 u_blur_dir;       // (1,0) or (0,1); unused by the box
 uniform ivec2 u_pass_size;      // the grid blurred: the viewport, or the reduced grid below full resolution
 uniform bool u_depth_aware;     // below full resolution: every kind weighs taps by depth similarity
 
+const float kSlopeDamping = SSAO_BLUR_SLOPE_DAMPING;
+
 // The depth weight of a tap at view z tap_z, du viewport pixels from a centre
 // at view z z0 whose tangent plane has the screen gradient g0: 1 on the
 // centre's surface, falling linearly to 0 at the tolerance. With a plane
@@ -30,6 +43,21 @@ float depth_weight(float tap_z, vec2 du, float z0, vec2 g0, float tolerance) {
     float expected = plane ? plane_z(z0, g0, du, consts.orthographic != 0) : z0;
     float within = plane ? max(kPlaneTolerance * tolerance, 1e-30) : tolerance;
     return clamp(1.0 - abs(tap_z - expected) / within, 0.0, 1.0);
+}
+
+// The weighted least-squares plane (a line, for one pass of the gaussian:
+// its y moments 0) through the taps, read at the centre (offset 0), from
+// the weighted means of the AO, of the offsets k, of k k (xx, xy, yy) and of
+// k times the AO. The damping added to the offsets' variance keeps the system
+// solvable when every tap lies on one line; where the taps are balanced
+// around the centre the mean offset is 0 and the result is the mean.
+float line_at_centre(float mean, vec2 k_mean, vec3 kk_mean, vec2 ka_mean) {
+    float cxx = kk_mean.x - k_mean.x * k_mean.x + kSlopeDamping;
+    float cxy = kk_mean.y - k_mean.x * k_mean.y;
+    float cyy = kk_mean.z - k_mean.y * k_mean.y + kSlopeDamping;
+    vec2 cka = ka_mean - k_mean * mean;
+    vec2 slope = vec2(cyy * cka.x - cxy * cka.y, cxx * cka.y - cxy * cka.x) / (cxx * cyy - cxy * cxy);
+    return clamp(mean - dot(k_mean, slope), 0.0, 1.0);
 }
 
 void main() {
@@ -51,6 +79,8 @@ void main() {
         // Depth-aware below full resolution: taps weighted as the
         // depth-aware gaussian weighs them (the centre always counts).
         float sum = 0.0, count = 0.0;
+        vec2 sum_k = vec2(0.0), sum_ka = vec2(0.0);
+        vec3 sum_kk = vec3(0.0);  // xx, xy, yy
 #ifdef SSAO_BLUR_WEIGHTS
         float taps = 0.0;
 #endif
@@ -62,6 +92,10 @@ void main() {
                 float w = u_depth_aware ? depth_weight(tap.g, vec2(grid_pixel(grid, t) - u0), z0, g0, tolerance) : 1.0;
                 sum += tap.r * w;
                 count += w;
+                vec2 k = vec2(x, y);
+                sum_k += w * k;
+                sum_kk += w * vec3(k.x * k.x, k.x * k.y, k.y * k.y);
+                sum_ka += w * k * tap.r;
 #ifdef SSAO_BLUR_WEIGHTS
                 taps += 1.0;
 #endif
@@ -69,13 +103,16 @@ void main() {
 #ifdef SSAO_BLUR_WEIGHTS
         o_ao = result(count / taps, z0, g0);
 #else
-        o_ao = result(sum / count, z0, g0);
+        float mean = sum / count;
+        float ao = u_depth_aware ? line_at_centre(mean, sum_k / count, sum_kk / count, sum_ka / count) : mean;
+        o_ao = result(ao, z0, g0);
 #endif
         return;
     }
     bool aware = kind == SSAO_SHADER_BLUR_DEPTH_AWARE || u_depth_aware;
     float inv2s2 = 0.5 / (consts.blur_sigma * consts.blur_sigma);
     float sum = centre, weight = 1.0;
+    float sum_k = 0.0, sum_kk = 0.0, sum_ka = 0.0;  // the line fit's moments (the centre's k is 0)
 #ifdef SSAO_BLUR_WEIGHTS
     float gaussian = 1.0;  // the centre's weight, never rejected
 #endif
@@ -92,12 +129,20 @@ void main() {
         if (aware) w *= depth_weight(tap.g, vec2(grid_pixel(grid, t) - u0), z0, g0, tolerance);
         sum += tap.r * w;
         weight += w;
+        float fk = float(k);
+        sum_k += w * fk;
+        sum_kk += w * fk * fk;
+        sum_ka += w * fk * tap.r;
     }
 #ifdef SSAO_BLUR_WEIGHTS
     // Same taps summed in the same order: exactly 1 when nothing was rejected.
     float before = u_blur_dir.y != 0 ? centre : 1.0;  // the horizontal pass's share
     o_ao = result(weight / gaussian * before, z0, g0);
 #else
-    o_ao = result(sum / weight, z0, g0);
+    float mean = sum / weight;
+    float ao = aware ? line_at_centre(mean, vec2(sum_k, 0.0) / weight, vec3(sum_kk, 0.0, 0.0) / weight,
+                                      vec2(sum_ka, 0.0) / weight)
+                     : mean;
+    o_ao = result(ao, z0, g0);
 #endif
 }

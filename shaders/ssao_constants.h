@@ -12,6 +12,9 @@
 /* The depth tests against a tangent plane (the blur's, the upsample's) accept
  * this share of the blur's relative depth tolerance (ao_texture.glsl). */
 #define SSAO_PLANE_TOLERANCE 0.2
+/* The depth-aware blur fits a line through its taps (blur.frag); this is
+ * added to the taps' offset variance (squared pass texels) to damp its slope. */
+#define SSAO_BLUR_SLOPE_DAMPING 0.25
 
 /* Texture units the passes sample from (the state guard saves exactly these). */
 #define SSAO_UNIT_DEPTH 0

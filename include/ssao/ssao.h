@@ -239,7 +239,8 @@ typedef enum ssao_rotation {
 /** The filter after the sampling pass (settings.blur). */
 typedef enum ssao_blur {
     SSAO_BLUR_DEFAULT = 0,      /**< = SSAO_BLUR_DEPTH_AWARE */
-    SSAO_BLUR_DEPTH_AWARE = 1,  /**< separable gaussian whose taps beyond blur_depth_tolerance are dropped */
+    SSAO_BLUR_DEPTH_AWARE = 1,  /**< separable gaussian whose taps beyond blur_depth_tolerance are dropped;
+                                     a line fitted through the rest, read at the centre */
     SSAO_BLUR_BOX_4X4 = 2,      /**< the chapter's 4x4 box (offsets -2..1), ignores depth */
     SSAO_BLUR_GAUSSIAN = 3,     /**< separable gaussian of blur_sigma over blur_radius, ignores depth */
     SSAO_BLUR_NONE = 4, /**< no blur pass runs */

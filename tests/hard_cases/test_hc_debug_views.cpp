@@ -10,6 +10,7 @@
 
 #include "conventions.h"
 #include "hc_util.h"
+#include "uniforms.h"  // SSAO_BLUR_SLOPE_DAMPING (shaders/ssao_constants.h)
 
 #include <glm/gtc/packing.hpp>
 
@@ -371,5 +372,89 @@ TEST_CASE("debug views: BLUR_WEIGHTS of the depth-aware blur is the product of b
             CHECK(fractional > 50);
         }
     }
+    CHECK(fx.gl_errors().empty());
+}
+
+namespace {
+
+// One pass of blur.frag's depth-aware gaussian over `ao` at pixel (x, y)
+// along (dx, dy), in double, from its definition: the weighted least-squares
+// line through the taps (gaussian times hc::blur_depth_weight; the centre at
+// offset 0 with weight 1), its slope damped by SSAO_BLUR_SLOPE_DAMPING, read
+// at the centre and clamped to [0, 1]; `fit` false: the weighted mean.
+double blur_pass(const GBuffer& g, const glm::dmat4& proj, const ssao_settings& s, const std::vector<double>& ao,
+                 int x, int y, int dx, int dy, bool fit) {
+    double w_sum = 1.0, a_sum = ao[hc::at(x, y, g.width)], k_sum = 0.0, kk_sum = 0.0, ka_sum = 0.0;
+    const int r = int(s.blur_radius);
+    for (int k = -r; k <= r; ++k) {
+        const int u = x + k * dx, v = y + k * dy;
+        if (k == 0 || u < 0 || v < 0 || u >= g.width || v >= g.height || g.sky(u, v)) continue;
+        const double w = std::exp(-double(k * k) * 0.5 / (double(s.blur_sigma) * double(s.blur_sigma))) *
+                         hc::blur_depth_weight(g, proj, s.blur_depth_tolerance, x, y, u, v);
+        const double a = ao[hc::at(u, v, g.width)];
+        w_sum += w;
+        a_sum += w * a;
+        k_sum += w * k;
+        kk_sum += w * k * k;
+        ka_sum += w * k * a;
+    }
+    const double mean = a_sum / w_sum, k_mean = k_sum / w_sum;
+    if (!fit) return mean;
+    const double slope = (ka_sum / w_sum - k_mean * mean) / (kk_sum / w_sum - k_mean * k_mean + SSAO_BLUR_SLOPE_DAMPING);
+    return std::clamp(mean - k_mean * slope, 0.0, 1.0);
+}
+
+// Both passes (horizontal, then vertical over its result) over the raw AO.
+std::vector<double> blur_oracle(const GBuffer& g, const glm::dmat4& proj, const ssao_settings& s,
+                                const std::vector<float>& raw, bool fit) {
+    std::vector<double> in(raw.begin(), raw.end()), across(in.size(), 1.0), out(in.size(), 1.0);
+    for (int y = 0; y < g.height; ++y)
+        for (int x = 0; x < g.width; ++x)
+            if (!g.sky(x, y)) across[hc::at(x, y, g.width)] = blur_pass(g, proj, s, in, x, y, 1, 0, fit);
+    for (int y = 0; y < g.height; ++y)
+        for (int x = 0; x < g.width; ++x)
+            if (!g.sky(x, y)) out[hc::at(x, y, g.width)] = blur_pass(g, proj, s, across, x, y, 0, 1, fit);
+    return out;
+}
+
+}  // namespace
+
+TEST_CASE("debug views: the depth-aware blur is a damped least-squares line through its taps, read at the centre (CPU oracle over RAW_AO)") {
+    HC_EACH_METHOD(m);
+    testgl::Fixture fx;
+    const int W = 64, H = 48;
+    const auto proj = analytic::perspective(hc::kFov, double(W) / H, 0.1, 100.0);
+    // The crease (floor meeting a wall: the AO is darkest on the crease line,
+    // where the depth test leaves the blur taps on one side) and the wall
+    // and box (silhouettes).
+    int sloped = 0;
+    for (const Scene& scene : {hc::crease_scene(), wall_and_box(true)}) {
+        const GBuffer g = analytic::render(scene, proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, W, H);
+        GBuffer read = g;  // the normals as the plugin reads them (BLUR_WEIGHTS oracle above)
+        for (glm::vec3& n : read.normal) n = glm::unpackHalf4x16(glm::packHalf4x16(glm::vec4(n, 0.0f)));
+        const ssao_settings s =
+            fx.settings(make(m, SSAO_BLUR_DEPTH_AWARE, SSAO_RESOLUTION_FULL, SSAO_DEBUG_VIEW_RAW_AO));
+        const auto raw = hc::run(fx, g, proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE);
+        fx.settings(make(m, SSAO_BLUR_DEPTH_AWARE, SSAO_RESOLUTION_FULL, SSAO_DEBUG_VIEW_NONE));
+        const auto blurred = hc::run(fx, g, proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE);
+        REQUIRE(raw.status == SSAO_OK);
+        REQUIRE(blurred.status == SSAO_OK);
+        const std::vector<double> line = blur_oracle(read, proj, s, raw.ao, true);
+        const std::vector<double> mean = blur_oracle(read, proj, s, raw.ao, false);
+        double worst = 0.0;
+        int off = 0;
+        for (size_t i = 0; i < line.size(); ++i) {
+            const double d = std::abs(line[i] - double(blurred.ao[i]));
+            worst = std::max(worst, d);
+            off += d > 3e-3;  // R16F raw AO in, R16F out (a step below 1 is 4.9e-4)
+            sloped += std::abs(line[i] - mean[i]) > 0.01;
+        }
+        MESSAGE("worst |GPU - oracle| " << worst << "; " << sloped
+                                         << " pixels so far where the line and the mean differ by > 0.01");
+        CHECK(off == 0);
+    }
+    // Where the line differs from the mean, a blur that took the mean fails
+    // the check above (the crease; the kernel sees the wall and box as open).
+    CHECK(sloped > 100);
     CHECK(fx.gl_errors().empty());
 }

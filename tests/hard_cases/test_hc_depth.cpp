@@ -172,9 +172,10 @@ TEST_CASE("depth conventions: a half-pixel jitter leaves the AO profile across t
     };
     // The sampling alone, and with the depth-aware blur, which keeps to the
     // floor's own side of the crease: there the profile falls by a third
-    // within about one row, and a one-sided average over the rows next to it
-    // moves with where the jitter puts them, by up to 0.04 (measured).
-    const std::pair<ssao_blur, double> blurs[] = {{SSAO_BLUR_NONE, 0.03}, {SSAO_BLUR_DEPTH_AWARE, 0.05}};
+    // within about one row, and a one-sided mean of the rows next to it would
+    // move with where the jitter puts them (by up to 0.042, measured); the
+    // blur's line fit reads the profile at the row itself (measured 0.028).
+    const std::pair<ssao_blur, double> blurs[] = {{SSAO_BLUR_NONE, 0.03}, {SSAO_BLUR_DEPTH_AWARE, 0.03}};
     for (const auto& blur_bound : blurs) {
         const ssao_blur blur = blur_bound.first;
         const double bound = blur_bound.second;
@@ -207,6 +208,7 @@ TEST_CASE("depth conventions: a half-pixel jitter leaves the AO profile across t
             profiles.push_back(rows);
         }
         const std::vector<Row>& ref = profiles[0];
+        double worst = 0.0;
         for (size_t j = 1; j < profiles.size(); ++j) {
             CAPTURE(j);
             int compared = 0;
@@ -217,11 +219,14 @@ TEST_CASE("depth conventions: a half-pixel jitter leaves the AO profile across t
                 const Row& lo = *(hi - 1);
                 const double t = (row.distance - lo.distance) / (hi->distance - lo.distance);
                 CAPTURE(row.distance);
-                CHECK(std::abs(row.ao - (lo.ao + t * (hi->ao - lo.ao))) < bound);
+                const double moved = std::abs(row.ao - (lo.ao + t * (hi->ao - lo.ao)));
+                CHECK(moved < bound);
+                worst = std::max(worst, moved);
                 ++compared;
             }
             CHECK(compared >= 4);
         }
+        MESSAGE("blur " << blur << ": rows moved by up to " << worst);
     }
     CHECK(fx.gl_errors().empty());
 }

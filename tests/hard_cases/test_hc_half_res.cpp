@@ -451,10 +451,14 @@ TEST_CASE("half resolution: at a silhouette no wall pixel takes AO from the obje
             // whatever the blur (below full resolution the box and the plain
             // gaussian are made depth-aware too, and the upsample is).
             CHECK(wall_worst <= 0.07);
-            // Object side: the mean within 0.05 (the rim is a few pixels
+            // Object side: the mean within 0.06 (the rim is a few pixels
             // wide; where no grid texel of its depth is near, the
-            // nearest-depth tap is taken, which is still the object's).
-            CHECK(object_mean <= 0.05);
+            // nearest-depth tap is taken, which is still the object's). The
+            // full-resolution blur's line fit (blur.frag) keeps the tray's
+            // inner crease darkest on its crease line, which a grid whose
+            // texels lie 2 px apart resolves less sharply: measured up to
+            // 0.052 (the half-resolution box), 0.041 against a mean blur.
+            CHECK(object_mean <= 0.06);
         }
     }
     CHECK(fx.gl_errors().empty());
