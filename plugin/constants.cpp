@@ -38,9 +38,6 @@ SsaoFrame make_frame_block(const ssao_settings& s, const AnalysedInputs& in) {
     c.blur_radius = static_cast<int32_t>(s.blur_radius);
     c.blur_kind = static_cast<int32_t>(s.blur);
     c.orthographic = proj.orthographic ? 1 : 0;
-    // Clip z with view x or y terms (an oblique near plane): view z is not a
-    // function of the depth alone, the upsample reads it through the inverse.
-    c.oblique_near_plane = proj.proj[0][2] != 0.0 || proj.proj[1][2] != 0.0 ? 1 : 0;
     c.ndc_per_depth = static_cast<float>(proj.ndc_per_depth);
     c.sky_depth = proj.sky_depth;
     const DepthFormat& fmt = in.depth;

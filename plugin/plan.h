@@ -67,7 +67,9 @@ constexpr uint32_t frame_noise = 1u << 5;         // FRAME_NOISE: rotation and j
 constexpr uint32_t blur_weights = 1u << 6;        // BLUR_WEIGHTS: the blur writes its accepted weight share
 constexpr uint32_t upsample_nearest = 1u << 7;    // UPSAMPLE_NEAREST: the upsample takes the pixel's own grid texel,
                                                   // no depth weights (debug views RAW_AO and BLUR_WEIGHTS)
-constexpr int kBits = 8;
+constexpr uint32_t unorm_depth = 1u << 8;         // UNORM_DEPTH: the host's depth is unorm (D16, D24): a depth-format
+                                                  // step is the format's fixed step, not a float's ulp
+constexpr int kBits = 9;
 }  // namespace variant
 
 // Formats of the textures the plan renders into.

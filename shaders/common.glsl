@@ -134,22 +134,25 @@ DepthSteps depth_steps() {
 
 float depth_step_z(DepthSteps k, float z) {
     float w = k.clip.x * z + k.clip.y;
-    if (k.unorm_k != 0.0) return w * w * k.unorm_k;
+#ifdef SSAO_UNORM_DEPTH
+    return w * w * k.unorm_k;
+#else
     float cz = k.clip.z * z + k.clip.w;
     // |d| w and, for the [-1,1] range, |ndc| w / 2: the larger ulp wins.
     float dw = k.half_range ? max(abs(cz + w), abs(cz)) * 0.5 : abs(cz);
     return max(dw * abs(w) * k.float_k, w * w * k.normal_k);
+#endif
 }
 float depth_step_z(float z) { return depth_step_z(depth_steps(), z); }
 
-// The view z of viewport pixel p holding depth d. Where clip z depends on view
-// z alone (every projection but an oblique near plane's) it inverts
-// ndc z = (z_z z + z_1) / (w_z z + w_1): a division, not the inverse
-// projection's matrix product.
+// The view z of viewport pixel p holding depth d: the inverse projection's z
+// and w rows only, one division. Valid for every projection, an oblique near
+// plane's too (clip z with view x or y terms), with no branch: a
+// branch on the projection's kind costs both its sides on a SIMD rasteriser
+// (llvmpipe runs each side for the whole batch).
 float view_z_of_depth(ivec2 p, float d) {
-    if (consts.oblique_near_plane != 0) return view_position_at(vec2(p) + 0.5, d).z;
-    float ndc = ndc_z_of(d);
-    return (consts.clip_z_1 - ndc * consts.clip_w_1) / (ndc * consts.clip_w_z - consts.clip_z_z);
+    vec4 v = consts.inv_proj * vec4(ndc_xy_of(vec2(p) + 0.5), ndc_z_of(d), 1.0);
+    return v.z / v.w;
 }
 
 // A surface texel the sampling passes read: its view position and the view-z

@@ -85,8 +85,7 @@ SSAO_BLOCK(SsaoFrame) {
     SSAO_INT blur_radius;        /* 232: gaussian taps either side of the centre */
     SSAO_INT blur_kind;          /* 236: SSAO_SHADER_BLUR_* */
     SSAO_INT orthographic;       /* 240: flag: an orthographic projection */
-    SSAO_INT oblique_near_plane; /* 244: flag: clip z has view x or y terms, so view z is not a function
-                                    of the depth alone (view_z_of_depth goes through inv_proj) */
+    SSAO_INT pad4;               /* 244 */
     SSAO_FLOAT ndc_per_depth;    /* 248: d(ndc z)/d(depth): 2 for the [-1,1] clip range, 1 for [0,1] */
     SSAO_FLOAT sky_depth;        /* 252: the depth value of the far plane (cleared depth) */
     SSAO_FLOAT unorm_depth_step; /* 256: one step of a unorm depth format; 0 for a float format */

@@ -111,3 +111,25 @@ TEST_CASE("frame noise offsets: frame 0 is no offset, frame n is fract(n / g, n 
         }
     }
 }
+
+TEST_CASE("plan: a unorm depth (D16, D24) makes UNORM_DEPTH a sampling-pass variant; a float depth never does") {
+    for (ssao_method method : {SSAO_METHOD_KERNEL, SSAO_METHOD_VISIBILITY})
+        for (ssao_resolution res : {SSAO_RESOLUTION_FULL, SSAO_RESOLUTION_HALF, SSAO_RESOLUTION_QUARTER}) {
+            CAPTURE(method);
+            CAPTURE(res);
+            const ssao_settings s = plan_test::resolve(plan_test::request(method, res, SSAO_BLUR_DEFAULT));
+            for (const int bits : {16, 24, 32}) {
+                const bool is_float = bits == 32;  // D16, D24 unorm; D32F
+                CAPTURE(bits);
+                const FramePlan p =
+                    plan_frame(s, plan_test::viewport_inputs(0, 0, 64, 48, 0, plan_test::depth_format(bits, is_float)));
+                int sampling = 0;
+                for (int i = 0; i < p.pass_count; ++i) {
+                    const bool ao = pass_info(p.passes[i].kind).bit == SSAO_PASS_OCCLUSION;
+                    sampling += ao;
+                    CHECK(((p.passes[i].variant & variant::unorm_depth) != 0) == (ao && !is_float));
+                }
+                CHECK(sampling == 1);
+            }
+        }
+}
