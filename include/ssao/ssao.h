@@ -380,10 +380,10 @@ typedef struct ssao_settings {
  * comments are tested against preset_settings (tests/host/test_presets_doc.cpp). */
 typedef enum ssao_preset {
     SSAO_PRESET_DEFAULT = 0,    /**< = SSAO_PRESET_MEDIUM, the recommended default */
-    SSAO_PRESET_LOW = 1,        /**< visibility, 2 directions x 4 steps, half resolution, no blur */
+    SSAO_PRESET_LOW = 1,        /**< visibility, 4 directions x 8 steps, quarter resolution, depth-aware blur */
     SSAO_PRESET_MEDIUM = 2,     /**< visibility, 8 directions x 4 steps, half resolution, no blur */
-    SSAO_PRESET_HIGH = 3,       /**< visibility, 4 directions x 8 steps, full resolution, depth-aware blur */
-    SSAO_PRESET_ULTRA = 4,      /**< visibility, 8 directions x 16 steps, full resolution, depth-aware blur */
+    SSAO_PRESET_HIGH = 3,       /**< visibility, 4 directions x 4 steps, full resolution, depth-aware blur */
+    SSAO_PRESET_ULTRA = 4,      /**< visibility, 8 directions x 8 steps, full resolution, depth-aware blur */
     SSAO_PRESET_CHAPTER = 5,    /**< kernel, 64 accelerating samples, full resolution, 4x4 box blur */
                                 /** (1.1) the LearnOpenGL chapter's configuration, the textbook
                                    baseline: not picked by the rule, kept one flag away */

@@ -3,18 +3,27 @@
 # frame with all of them off looks like: ssao-host's ao.exr for each case in
 # cases.txt must hold, bit for bit, the committed image (Mesa 22.3 llvmpipe on
 # this project's machine). They were the 1.1 library's output (commit
-# d421df5) until seven deliberate changes: a preset's thickness follows the
-# scene's radius (ultra-corner, high-reverse-z-teapot), the default pass below
-# full resolution reads view z and upsamples 2x2 (every half-resolution case),
-# the visibility thickness defaults to radius x (0.5 + 1.5 / steps) (every
-# visibility case), the upsample weighs taps by the depth their tangent
-# planes put under the pixel (every half-resolution case), and the depth-aware
-# blur weighs taps by the depth the centre's tangent plane puts under them
-# (ultra-*, kernel-depth-aware-corner, ortho-d16-gaussian-spot), and HIGH and
-# ULTRA were re-picked (high-reverse-z-teapot, ultra-*), and the depth-aware
-# blur fits a line through its taps instead of taking their mean
-# (high-reverse-z-teapot, ultra-*, kernel-depth-aware-corner,
-# ortho-d16-gaussian-spot); the chapter cases are still 1.1's. The header's other
+# d421df5) until these deliberate changes (the cases each changed):
+#  1. a preset's thickness follows the scene's radius (ultra-corner,
+#     high-reverse-z-teapot);
+#  2. the default pass below full resolution reads view z and upsamples 2x2
+#     (every half-resolution case);
+#  3. the visibility thickness defaults to radius x (0.5 + 1.5 / steps)
+#     (every visibility case);
+#  4. the upsample weighs taps by the depth their tangent planes put under
+#     the pixel (every half-resolution case);
+#  5. the depth-aware blur weighs taps by the depth the centre's tangent
+#     plane puts under them (ultra-*, kernel-depth-aware-corner,
+#     ortho-d16-gaussian-spot);
+#  6. HIGH and ULTRA were re-picked (high-reverse-z-teapot, ultra-*);
+#  7. the depth-aware blur fits a line through its taps instead of taking
+#     their mean (high-reverse-z-teapot, ultra-*, kernel-depth-aware-corner,
+#     ortho-d16-gaussian-spot);
+#  8. the upsample reads a pixel's view z through the inverse projection's z
+#     and w rows (default-corner: a few pixels move by one or two 8-bit steps);
+#  9. LOW, HIGH and ULTRA were re-picked by the rule (low-teapot,
+#     high-reverse-z-teapot, ultra-*).
+# The chapter cases are still 1.1's. The header's other
 # attributes (ssao-host records the scene and camera there) are not part of
 # the frame: SAME (exr_same_image) compares the image only.
 #   run.sh check HOST SAME  compare HOST's output with the committed files
