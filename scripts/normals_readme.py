@@ -20,9 +20,11 @@ PRESETS = [("LOW", "preset low"), ("DEFAULT (MEDIUM)", "preset medium (= default
 
 
 def load(path):
+    """The base size's rows of the standard view at each scene's radius, by (configuration, scene)."""
     rows = {}
     for r in csv.DictReader(open(path)):
-        rows[(r["config"], r["scene"])] = r
+        if r["view"] == "standard" and float(r["radius_scale"]) == 1.0 and (r["config"], r["scene"]) not in rows:
+            rows[(r["config"], r["scene"])] = r
     return rows
 
 
@@ -35,7 +37,8 @@ def main():
         if scene not in scenes:
             scenes.append(scene)
     first = next(iter(g.values()))
-    lines = ["Measured by `scripts/bench_normals.sh` (two `ssao-bench --quick` runs, %sx%s, llvmpipe on 2 cores): "
+    lines = ["Measured by `scripts/bench_normals.sh` (two `ssao-bench --quick` runs, %sx%s, standard view at each "
+             "scene's radius, llvmpipe on 2 cores): "
              "PSNR against V_R with the G-buffer's normals / with `normal_texture = 0`, difference in dB, "
              "and the execute's GPU time both ways." % (first["width"], first["height"]), "",
              "| preset | " + " | ".join(scenes) + " | GPU ms (mean over scenes) | within 1 dB on every scene |",
