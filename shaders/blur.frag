@@ -14,7 +14,8 @@
 // mean wherever the accepted taps are balanced around the centre. Its slope is
 // damped (SSAO_BLUR_SLOPE_DAMPING is added to the taps' offset variance, in
 // squared pass texels) so that two noisy taps on one side do not swing the
-// result. The chapter's box, and the gaussian that ignores depth, stay means.
+// result. The blurs that ignore depth (the box and the gaussian at full
+// resolution) stay means.
 //
 // Variant BLUR_WEIGHTS (debug view SSAO_DEBUG_VIEW_BLUR_WEIGHTS) writes, in
 // place of the blurred AO, the share of the pass's gaussian (box: uniform)
