@@ -155,7 +155,7 @@ constexpr double kPresetStepDb = 1.0;
 constexpr double kUltraCap = 2.0;
 struct Budget {
     const char* preset;
-    double ratio;     // the fallback budget, x textbook
+    double ratio;     // x textbook: MEDIUM's budget; for a step preset, the fallback budget
     bool step;        // picked as the fastest that gains kPresetStepDb
     double cap;       // the most it may cost, x textbook
 };

@@ -146,14 +146,11 @@ float depth_step_z(DepthSteps k, float z) {
 float depth_step_z(float z) { return depth_step_z(depth_steps(), z); }
 
 // The view z of viewport pixel p holding depth d: the inverse projection's z
-// and w rows only, one division. Valid for every projection, an oblique near
-// plane's too (clip z with view x or y terms), with no branch: a
-// branch on the projection's kind costs both its sides on a SIMD rasteriser
-// (llvmpipe runs each side for the whole batch).
-float view_z_of_depth(ivec2 p, float d) {
-    vec4 v = consts.inv_proj * vec4(ndc_xy_of(vec2(p) + 0.5), ndc_z_of(d), 1.0);
-    return v.z / v.w;
-}
+// and w rows (the compiler drops x and y), one division. Valid for every
+// projection, an oblique near plane's too (clip z with view x or y terms),
+// with no branch: a branch on the projection's kind costs both its sides on a
+// SIMD rasteriser (llvmpipe runs each side for the whole batch).
+float view_z_of_depth(ivec2 p, float d) { return view_position_at(vec2(p) + 0.5, d).z; }
 
 // A surface texel the sampling passes read: its view position and the view-z
 // change of one depth-format step there. False for the sky (and a depth whose

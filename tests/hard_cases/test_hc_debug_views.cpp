@@ -314,20 +314,30 @@ TEST_CASE("debug views: the same scene gives the same raw AO in every depth conv
 
 namespace {
 
-// blur.frag's share of one pass at pixel (x, y) along (dx, dy), in double:
-// sum(g * depth weight) / sum(g) over the in-bounds non-sky taps, g the
-// gaussian of the resolved sigma, the depth weight hc::blur_depth_weight; the
-// centre counts 1 in both sums.
-double pass_share(const GBuffer& g, const glm::dmat4& proj, const ssao_settings& s, int x, int y, int dx, int dy) {
-    double kept = 1.0, all = 1.0;
+// The taps of one pass of blur.frag's gaussian at pixel (x, y) along
+// (dx, dy), the centre excepted (it counts with weight 1): for each in-bounds
+// non-sky tap at offset k, tap(k, u, v, gaussian, depth weight), the gaussian
+// of the resolved sigma and the depth weight hc::blur_depth_weight.
+template <typename Tap>
+void for_each_tap(const GBuffer& g, const glm::dmat4& proj, const ssao_settings& s, int x, int y, int dx, int dy,
+                  Tap tap) {
     const int r = int(s.blur_radius);
     for (int k = -r; k <= r; ++k) {
         const int u = x + k * dx, v = y + k * dy;
         if (k == 0 || u < 0 || v < 0 || u >= g.width || v >= g.height || g.sky(u, v)) continue;
-        const double w = std::exp(-double(k * k) * 0.5 / (double(s.blur_sigma) * double(s.blur_sigma)));
-        all += w;
-        kept += w * hc::blur_depth_weight(g, proj, s.blur_depth_tolerance, x, y, u, v);
+        tap(k, u, v, std::exp(-double(k * k) * 0.5 / (double(s.blur_sigma) * double(s.blur_sigma))),
+            hc::blur_depth_weight(g, proj, s.blur_depth_tolerance, x, y, u, v));
     }
+}
+
+// blur.frag's share of one pass, in double: sum(gaussian * depth weight) /
+// sum(gaussian) over the taps; the centre counts 1 in both sums.
+double pass_share(const GBuffer& g, const glm::dmat4& proj, const ssao_settings& s, int x, int y, int dx, int dy) {
+    double kept = 1.0, all = 1.0;
+    for_each_tap(g, proj, s, x, y, dx, dy, [&](int, int, int, double gaussian, double depth) {
+        all += gaussian;
+        kept += gaussian * depth;
+    });
     return kept / all;
 }
 
@@ -379,25 +389,20 @@ namespace {
 
 // One pass of blur.frag's depth-aware gaussian over `ao` at pixel (x, y)
 // along (dx, dy), in double, from its definition: the weighted least-squares
-// line through the taps (gaussian times hc::blur_depth_weight; the centre at
+// line through the taps (weights gaussian times depth weight; the centre at
 // offset 0 with weight 1), its slope damped by SSAO_BLUR_SLOPE_DAMPING, read
 // at the centre and clamped to [0, 1]; `fit` false: the weighted mean.
 double blur_pass(const GBuffer& g, const glm::dmat4& proj, const ssao_settings& s, const std::vector<double>& ao,
                  int x, int y, int dx, int dy, bool fit) {
     double w_sum = 1.0, a_sum = ao[hc::at(x, y, g.width)], k_sum = 0.0, kk_sum = 0.0, ka_sum = 0.0;
-    const int r = int(s.blur_radius);
-    for (int k = -r; k <= r; ++k) {
-        const int u = x + k * dx, v = y + k * dy;
-        if (k == 0 || u < 0 || v < 0 || u >= g.width || v >= g.height || g.sky(u, v)) continue;
-        const double w = std::exp(-double(k * k) * 0.5 / (double(s.blur_sigma) * double(s.blur_sigma))) *
-                         hc::blur_depth_weight(g, proj, s.blur_depth_tolerance, x, y, u, v);
-        const double a = ao[hc::at(u, v, g.width)];
+    for_each_tap(g, proj, s, x, y, dx, dy, [&](int k, int u, int v, double gaussian, double depth) {
+        const double w = gaussian * depth, a = ao[hc::at(u, v, g.width)];
         w_sum += w;
         a_sum += w * a;
         k_sum += w * k;
         kk_sum += w * k * k;
         ka_sum += w * k * a;
-    }
+    });
     const double mean = a_sum / w_sum, k_mean = k_sum / w_sum;
     if (!fit) return mean;
     const double slope = (ka_sum / w_sum - k_mean * mean) / (kk_sum / w_sum - k_mean * k_mean + SSAO_BLUR_SLOPE_DAMPING);
