@@ -211,7 +211,7 @@ Timed plugin_pass(GladGLContext& gl, const ssao_api& api, ssao_context* ctx, con
     if (api.execute(ctx, &in, &out) != SSAO_OK) throw std::runtime_error(api.last_error(ctx));
     gl.Finish();
     Row row = case_row(k, c.name, Row::Kind::plugin);
-    row.thickness_variant = c.thickness_of_radius > 0;
+    row.variant = c.thickness_of_radius > 0 || c.s.rotation != SSAO_ROTATION_DEFAULT;
     row.family = c.family;
     row.s.size = sizeof row.s;
     api.get_settings(ctx, &row.s);

@@ -42,7 +42,7 @@ struct Row {
     metrics::Stats vs_limit;       // against the depth-only limit (all pixels)
     double cell_spread = 0;        // metrics::cell_spread of the error against V_R (the fixed pattern)
     double bias_occluded = 0;      // metrics::occluded_bias: where V_R < 0.5 (contact shadows, creases)
-    bool thickness_variant = false;  // a sweep configuration with its own thickness (not the library's default)
+    bool variant = false;  // a sweep configuration with a setting no preset carries: its own thickness or rotation
 };
 
 // Measures every view in o.views of one scene at o.width/height x scale and

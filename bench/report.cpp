@@ -64,7 +64,7 @@ struct Summary {
     double psnr = 0, psnr_vs_limit = 0, min_psnr = 1e9;  // dB, means (and worst) over cases
     std::map<std::string, double> scene_psnr, scene_psnr_vs_limit, scene_ratio;  // by scene (main case)
     bool front_vr = false, front_limit = false;
-    bool thickness_variant = false;
+    bool variant = false;
     int cases = 0, with_error = 0;
 };
 
@@ -91,7 +91,7 @@ std::vector<Summary> summarise(const std::vector<Row>& rows, int width, RowFilte
             s.family = r.family;
             s.kind = r.kind;
             s.s = r.s;
-            s.thickness_variant = r.thickness_variant;
+            s.variant = r.variant;
             out.push_back(s);
         }
         Summary& s = out[index[r.config]];
@@ -168,7 +168,7 @@ constexpr Budget kBudgets[] = {{"medium (= default)", 0.25, false, 0.0},
 // among sweep configurations a preset can express (no thickness or rotation
 // variants).
 bool in_sweep(const Summary& s) {
-    const bool expressible = s.s.rotation == SSAO_ROTATION_NOISE_4X4 && !s.thickness_variant;
+    const bool expressible = !s.variant;
     return (s.family == Family::kernel || s.family == Family::visibility) && s.kind == Row::Kind::plugin &&
            std::isfinite(s.psnr) && expressible;
 }

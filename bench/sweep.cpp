@@ -71,6 +71,7 @@ std::string describe(const ssao_settings& s) {
     if (s.resolution == SSAO_RESOLUTION_QUARTER) d += ", quarter res";
     d += std::string(", blur ") + blur_name(s.blur);
     if (s.rotation == SSAO_ROTATION_HASH) d += ", hash rotation";
+    if (s.rotation == SSAO_ROTATION_NOISE_4X4) d += ", 4x4 noise rotation";
     return d;
 }
 
@@ -110,10 +111,14 @@ std::vector<Config> sweep() {
         v.name += t > 1e29f ? ", thickness inf" : ", thickness " + std::to_string(t).substr(0, 4) + "R";
         c.push_back(v);
     }
-    Config hashed = visibility(4, 8, SSAO_BLUR_DEPTH_AWARE);
-    hashed.s.rotation = SSAO_ROTATION_HASH;
-    hashed.name = describe(hashed.s);
-    c.push_back(hashed);
+    // The other rotations against the default gradient noise, at full
+    // resolution (below it the 4x4 tile is gradient noise too).
+    for (ssao_rotation r : {SSAO_ROTATION_HASH, SSAO_ROTATION_NOISE_4X4}) {
+        Config turned = visibility(8, 8, SSAO_BLUR_DEPTH_AWARE);
+        turned.s.rotation = r;
+        turned.name = describe(turned.s);
+        c.push_back(turned);
+    }
 
     // The presets as interface 1.0 shipped them (plugin/settings.cpp before
     // the visibility estimator): the baseline "never worse than" compares to.

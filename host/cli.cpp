@@ -37,7 +37,10 @@ const std::vector<std::pair<const char*, ssao_kernel_shape>> kKernels = {
 const std::vector<std::pair<const char*, ssao_kernel_distribution>> kDistributions = {
     {"accelerating", SSAO_DISTRIBUTION_ACCELERATING}, {"uniform", SSAO_DISTRIBUTION_UNIFORM}};
 const std::vector<std::pair<const char*, ssao_rotation>> kRotations = {
-    {"noise", SSAO_ROTATION_NOISE_4X4}, {"hash", SSAO_ROTATION_HASH}, {"none", SSAO_ROTATION_NONE}};
+    {"gradient", SSAO_ROTATION_GRADIENT_NOISE},
+    {"noise", SSAO_ROTATION_NOISE_4X4},
+    {"hash", SSAO_ROTATION_HASH},
+    {"none", SSAO_ROTATION_NONE}};
 const std::vector<std::pair<const char*, ssao_blur>> kBlurs = {
     {"depth-aware", SSAO_BLUR_DEPTH_AWARE}, {"box", SSAO_BLUR_BOX_4X4}, {"gaussian", SSAO_BLUR_GAUSSIAN}, {"none", SSAO_BLUR_NONE}};
 const std::vector<std::pair<const char*, ssao_output_format>> kOutputs = {
@@ -320,7 +323,7 @@ std::string help_text(const ssao_settings* d, const std::string& default_scene, 
       << def([&](const ssao_settings& s) { return num(s.strength); }) << ")\n"
          "  --kernel hemisphere|sphere|separable (default " << def([](const ssao_settings& s) { return std::string(name(s.kernel_shape)); }) << ")\n"
          "  --distribution accelerating|uniform (default " << def([](const ssao_settings& s) { return std::string(name(s.distribution)); }) << ")\n"
-         "  --rotation noise|hash|none (default " << def([](const ssao_settings& s) { return std::string(name(s.rotation)); }) << ")\n"
+         "  --rotation gradient|noise|hash|none (default " << def([](const ssao_settings& s) { return std::string(name(s.rotation)); }) << ")\n"
          "  --seed N                seed of kernel, noise and hash, 0..4294967295; 0 = default (default "
       << def([](const ssao_settings& s) { return std::to_string(s.seed); }) << ")\n"
          "  --blur depth-aware|box|gaussian|none (default " << def([](const ssao_settings& s) { return std::string(name(s.blur)); }) << ")\n"

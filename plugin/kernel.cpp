@@ -87,7 +87,14 @@ float step_jitter(ssao_rotation rotation, uint32_t x, uint32_t y, uint32_t seed)
         return (static_cast<float>(kBayer[(y & 3u) * 4u + (x & 3u)]) + 0.5f) / 16.0f;
     }
     if (rotation == SSAO_ROTATION_HASH) return pixel_hash(y, x, seed ^ 0x5bd1e995u) * 0.9999f + 0.00005f;
+    if (rotation == SSAO_ROTATION_GRADIENT_NOISE)
+        return gradient_noise(static_cast<float>(x) + 47.0f, static_cast<float>(y) + 17.0f) * 0.9999f + 0.00005f;
     return 0.5f;
+}
+
+float gradient_noise(float x, float y) {
+    const auto fract = [](float v) { return v - std::floor(v); };
+    return fract(52.9829189f * fract(x * 0.06711056f + y * 0.00583715f));
 }
 
 std::vector<glm::vec2> make_noise(uint32_t seed) {

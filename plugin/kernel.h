@@ -39,11 +39,17 @@ std::vector<glm::vec3> make_directions(const ssao_settings& resolved);
 // Per-pixel step jitter in (0, 1) for the visibility method, for pixel (x, y)
 // of the viewport: a 4x4 ordered (Bayer) pattern for the 4x4 noise rotation
 // (so a 4x4 box averages 16 offsets), a second hash for the hash rotation,
-// 0.5 without rotation. shaders/sampling.glsl computes the same at full
+// gradient noise at (x + 47, y + 17) for the gradient-noise rotation, 0.5
+// without rotation. shaders/sampling.glsl computes the same at full
 // resolution; below it the 4x4 noise rotation takes its angle and jitter
-// from interleaved gradient noise on the grid instead (grid_noise() there:
-// a 4x4 tile on a half-resolution grid would repeat every 8 pixels).
+// from the gradient noise on the grid instead (gradient_noise() there: a 4x4
+// tile on a half-resolution grid would repeat every 8 pixels).
 float step_jitter(ssao_rotation rotation, uint32_t x, uint32_t y, uint32_t seed);
+
+// Interleaved gradient noise (Jimenez 2014) at (x, y), in [0, 1), in the
+// shader's float arithmetic: the gradient-noise rotation turns pixel (x, y)
+// by this many turns.
+float gradient_noise(float x, float y);
 
 // The 4x4 rotation noise: unit vectors (cos a, sin a) by row, y-major (index y*4+x).
 std::vector<glm::vec2> make_noise(uint32_t seed);

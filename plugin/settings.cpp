@@ -56,9 +56,14 @@ ssao_status resolve_kernel(ssao_settings& r, const PresetRow& defaults, std::str
         return fail(why, SSAO_ERROR_INVALID_ENUM, "distribution is not an ssao_kernel_distribution");
     if (r.distribution == SSAO_DISTRIBUTION_DEFAULT) r.distribution = defaults.distribution;
 
-    if (!raw_enum_at_most(r.rotation, SSAO_ROTATION_NONE))
+    if (!raw_enum_at_most(r.rotation, SSAO_ROTATION_GRADIENT_NOISE))
         return fail(why, SSAO_ERROR_INVALID_ENUM, "rotation is not an ssao_rotation");
-    if (r.rotation == SSAO_ROTATION_DEFAULT) r.rotation = SSAO_ROTATION_NOISE_4X4;
+    // The chapter's kernel keeps its 4x4 tile, which its 4x4 box blur averages
+    // out exactly; the march's directions turn by gradient noise, which the
+    // depth-aware blur and the upsample average better than the tile's 16
+    // random angles (docs/api.md, "Rotation").
+    if (r.rotation == SSAO_ROTATION_DEFAULT)
+        r.rotation = r.method == SSAO_METHOD_KERNEL ? SSAO_ROTATION_NOISE_4X4 : SSAO_ROTATION_GRADIENT_NOISE;
 
     if (r.seed == 0) r.seed = kDefaultSeed;
     return SSAO_OK;

@@ -142,7 +142,7 @@ extern "C" {
  * own minor; the table's `version` field says which one it got. */
 #define SSAO_MAKE_VERSION(major, minor) ((uint32_t)(((major) << 16) | (minor)))
 /** The interface this header declares: pass it to ssao_get_api. */
-#define SSAO_API_VERSION SSAO_MAKE_VERSION(1, 2)
+#define SSAO_API_VERSION SSAO_MAKE_VERSION(1, 3)
 /** The major part of an interface version. */
 #define SSAO_VERSION_MAJOR(v) ((uint32_t)(v) >> 16)
 /** The minor part of an interface version. */
@@ -229,10 +229,15 @@ typedef enum ssao_kernel_distribution {
 
 /** How the kernel or the directions turn from pixel to pixel (settings.rotation). */
 typedef enum ssao_rotation {
-    SSAO_ROTATION_DEFAULT = 0,  /**< = SSAO_ROTATION_NOISE_4X4 */
-    SSAO_ROTATION_NOISE_4X4 = 1,/**< 4x4 tiled noise texture, tiled per viewport pixel */
+    SSAO_ROTATION_DEFAULT = 0,  /**< the method's: GRADIENT_NOISE for VISIBILITY, NOISE_4X4 for KERNEL */
+    SSAO_ROTATION_NOISE_4X4 = 1,/**< 4x4 tiled noise texture, tiled per viewport pixel (the chapter's, which
+                                     its 4x4 box blur averages out); below full resolution GRADIENT_NOISE,
+                                     since a tile there would repeat every 4 grid texels */
     SSAO_ROTATION_HASH = 2,     /**< per-pixel hash of the pixel position and seed */
     SSAO_ROTATION_NONE = 3, /**< no rotation: every pixel uses the same kernel (banding) */
+    SSAO_ROTATION_GRADIENT_NOISE = 4, /**< (1.3) interleaved gradient noise on the sampling grid: no period,
+                                     and each small neighbourhood spreads its angles and step offsets
+                                     evenly, which a blur or the upsample then averages */
     SSAO_ROTATION_MAX_ENUM = 0x7fffffff  /**< not a value: keeps the enum 32 bits wide */
 } ssao_rotation;
 
@@ -334,7 +339,8 @@ typedef struct ssao_settings {
                                     SSAO_STRENGTH_OFF: strength 0, output is 1 and no pass samples. */
     ssao_kernel_shape kernel_shape;             /**< default hemisphere */
     ssao_kernel_distribution distribution;      /**< kernel only; default: see sample_count */
-    ssao_rotation rotation;                     /**< default 4x4 noise */
+    ssao_rotation rotation;                     /**< default: the method's (visibility: gradient noise,
+                                                     kernel: 4x4 noise) */
     uint32_t seed;               /**< seed of kernel, noise and hash; 0 = default seed 1 (deterministic) */
     ssao_blur blur;                             /**< default: see sample_count */
     uint32_t blur_radius;        /**< taps either side, pixels, 1..16; default 2 (box 4x4 ignores it) */

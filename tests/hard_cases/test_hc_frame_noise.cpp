@@ -62,7 +62,7 @@ TEST_CASE("frame noise: a fixed frame index gives bit-identical AO twice, index 
     HC_EACH_METHOD(method);
     testgl::Fixture fx;
     Frames fr(fx, 64, 48);
-    for (ssao_rotation rot : {SSAO_ROTATION_NOISE_4X4, SSAO_ROTATION_HASH, SSAO_ROTATION_NONE}) {
+    for (ssao_rotation rot : {SSAO_ROTATION_GRADIENT_NOISE, SSAO_ROTATION_NOISE_4X4, SSAO_ROTATION_HASH, SSAO_ROTATION_NONE}) {
         CAPTURE(rot);
         fx.settings(hc::make(8, SSAO_BLUR_NONE, rot, 1.0f, method));
         // A 1.1-sized inputs struct has no frame_index: the output every

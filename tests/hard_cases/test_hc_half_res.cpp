@@ -230,7 +230,7 @@ TEST_CASE("half resolution: a viewport inside larger textures gives exactly the 
     const GBuffer g = analytic::render(hc::crease_scene(), proj, SSAO_CLIP_ZERO_TO_ONE, W, H);
     for (ssao_method method : kMethods)
         for (ssao_resolution res : {SSAO_RESOLUTION_HALF, SSAO_RESOLUTION_QUARTER})
-            for (ssao_rotation rot : {SSAO_ROTATION_NOISE_4X4, SSAO_ROTATION_HASH}) {
+            for (ssao_rotation rot : {SSAO_ROTATION_GRADIENT_NOISE, SSAO_ROTATION_NOISE_4X4, SSAO_ROTATION_HASH}) {
                 CAPTURE(method);
                 CAPTURE(res);
                 CAPTURE(rot);

@@ -304,7 +304,7 @@ TEST_CASE("screen borders: a viewport inside larger textures gives exactly the A
     const int W = 45, H = 31;
     const auto proj = analytic::perspective(hc::kFov, double(W) / H, 0.1, 100.0);
     const GBuffer g = hc::crease_gbuffer(proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, W, H);
-    for (ssao_rotation rot : {SSAO_ROTATION_NOISE_4X4, SSAO_ROTATION_HASH, SSAO_ROTATION_NONE})
+    for (ssao_rotation rot : {SSAO_ROTATION_GRADIENT_NOISE, SSAO_ROTATION_NOISE_4X4, SSAO_ROTATION_HASH, SSAO_ROTATION_NONE})
         for (ssao_blur blur : {SSAO_BLUR_NONE, SSAO_BLUR_DEPTH_AWARE, SSAO_BLUR_BOX_4X4}) {
             CAPTURE(rot);
             CAPTURE(blur);

@@ -113,7 +113,7 @@ TEST_CASE("the GPU output matches a CPU implementation of the same formula") {
     analytic::to_floats(proj, in.projection);
     in.clip = SSAO_CLIP_NEGATIVE_ONE_TO_ONE;
     for (ssao_method method : {SSAO_METHOD_KERNEL, SSAO_METHOD_VISIBILITY})
-    for (ssao_rotation rotation : {SSAO_ROTATION_NOISE_4X4, SSAO_ROTATION_HASH, SSAO_ROTATION_NONE}) {
+    for (ssao_rotation rotation : {SSAO_ROTATION_GRADIENT_NOISE, SSAO_ROTATION_NOISE_4X4, SSAO_ROTATION_HASH, SSAO_ROTATION_NONE}) {
         CAPTURE(method);
         CAPTURE(rotation);
         ssao_settings s = make(16, SSAO_BLUR_NONE, rotation);

@@ -77,6 +77,9 @@ float ao(const Input& in, const ssao_settings& s, int x, int y) {
     } else if (s.rotation == SSAO_ROTATION_HASH) {
         const double angle = ssao_impl::pixel_hash(static_cast<uint32_t>(x), static_cast<uint32_t>(y), s.seed) * 6.28318530718;
         r = glm::dvec2(std::cos(angle), std::sin(angle));
+    } else if (s.rotation == SSAO_ROTATION_GRADIENT_NOISE) {
+        const double angle = ssao_impl::gradient_noise(static_cast<float>(x), static_cast<float>(y)) * 6.28318530718;
+        r = glm::dvec2(std::cos(angle), std::sin(angle));
     }
     const glm::dvec3 T = r.x * b1 + r.y * b2, B = glm::cross(n, T);
 

@@ -54,7 +54,7 @@ TEST_CASE("abi: ssao_get_api rejects NULL and a too-small table and other versio
         CHECK(same_bytes(table, before));
     }
     const uint32_t refused[] = {SSAO_MAKE_VERSION(0, 0), SSAO_MAKE_VERSION(0, 9), SSAO_MAKE_VERSION(2, 0),
-                                SSAO_MAKE_VERSION(2, 5), SSAO_MAKE_VERSION(1, 3), SSAO_MAKE_VERSION(1, 0xffff),
+                                SSAO_MAKE_VERSION(2, 5), SSAO_MAKE_VERSION(1, 4), SSAO_MAKE_VERSION(1, 0xffff),
                                 0xffffffffu};
     for (uint32_t version : refused) {
         CAPTURE(version);
@@ -63,12 +63,12 @@ TEST_CASE("abi: ssao_get_api rejects NULL and a too-small table and other versio
         CHECK(get_api(version, &table) == SSAO_ERROR_VERSION_MISMATCH);
         CHECK(same_bytes(table, before));
     }
-    // 1.0, 1.1 and 1.2 hosts are all served by this 1.2 library.
-    for (uint32_t version : {SSAO_MAKE_VERSION(1, 2), SSAO_MAKE_VERSION(1, 1), SSAO_MAKE_VERSION(1, 0)}) {
+    // 1.0 to 1.3 hosts are all served by this 1.3 library.
+    for (uint32_t version : {SSAO_MAKE_VERSION(1, 3), SSAO_MAKE_VERSION(1, 2), SSAO_MAKE_VERSION(1, 1), SSAO_MAKE_VERSION(1, 0)}) {
         CAPTURE(version);
         ssao_api t = sentinel<ssao_api>();
         REQUIRE(get_api(version, &t) == SSAO_OK);
-        CHECK(t.version == SSAO_MAKE_VERSION(1, 2));
+        CHECK(t.version == SSAO_MAKE_VERSION(1, 3));
     }
     ssao_api table = sentinel<ssao_api>();
     REQUIRE(get_api(SSAO_MAKE_VERSION(1, 0), &table) == SSAO_OK);

@@ -83,7 +83,7 @@ TEST_CASE("settings: a zeroed struct resolves to the documented defaults: the DE
     CHECK(r.power == 1.0f);
     CHECK(r.strength == 1.0f);
     CHECK(r.kernel_shape == SSAO_KERNEL_HEMISPHERE);
-    CHECK(r.rotation == SSAO_ROTATION_NOISE_4X4);
+    CHECK(r.rotation == (def.method == SSAO_METHOD_KERNEL ? SSAO_ROTATION_NOISE_4X4 : SSAO_ROTATION_GRADIENT_NOISE));
     CHECK(r.seed == 1u);
     CHECK(r.blur_radius == 2u);
     CHECK(r.blur_sigma == 2.0f);
@@ -122,6 +122,7 @@ TEST_CASE("settings: setting only the kernel method gives the chapter's configur
         CHECK(r.blur == SSAO_BLUR_BOX_4X4);
     }
     CHECK(r.kernel_shape == SSAO_KERNEL_HEMISPHERE);
+    CHECK(r.rotation == SSAO_ROTATION_NOISE_4X4);  // the chapter's tile, which its 4x4 box averages out
     CHECK(r.bias == doctest::Approx(0.025 * 0.5));
 }
 
@@ -222,7 +223,7 @@ TEST_CASE("settings: resolve is idempotent") {
         in.strength = pick(0, 4) == 0 ? SSAO_STRENGTH_OFF : real(0.0f, 8.0f);
         set_raw(in.kernel_shape, pick(0, 3));
         set_raw(in.distribution, pick(0, 2));
-        set_raw(in.rotation, pick(0, 3));
+        set_raw(in.rotation, pick(0, 4));
         in.seed = static_cast<uint32_t>(pick(0, 1 << 30));
         set_raw(in.blur, pick(0, 4));
         in.blur_radius = static_cast<uint32_t>(pick(0, 16));
@@ -282,7 +283,7 @@ TEST_CASE("settings: every invalid field gives its documented status and leaves 
         {"kernel_shape -1", [](ssao_settings& s) { set_raw(s.kernel_shape, -1); }, SSAO_ERROR_INVALID_ENUM},
         {"distribution 3", [](ssao_settings& s) { set_raw(s.distribution, 3); }, SSAO_ERROR_INVALID_ENUM},
         {"distribution -1", [](ssao_settings& s) { set_raw(s.distribution, -1); }, SSAO_ERROR_INVALID_ENUM},
-        {"rotation 4", [](ssao_settings& s) { set_raw(s.rotation, 4); }, SSAO_ERROR_INVALID_ENUM},
+        {"rotation 5", [](ssao_settings& s) { set_raw(s.rotation, 5); }, SSAO_ERROR_INVALID_ENUM},
         {"rotation -1", [](ssao_settings& s) { set_raw(s.rotation, -1); }, SSAO_ERROR_INVALID_ENUM},
         {"blur 5", [](ssao_settings& s) { set_raw(s.blur, 5); }, SSAO_ERROR_INVALID_ENUM},
         {"blur -1", [](ssao_settings& s) { set_raw(s.blur, -1); }, SSAO_ERROR_INVALID_ENUM},

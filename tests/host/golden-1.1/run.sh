@@ -22,7 +22,9 @@
 #  8. the upsample reads a pixel's view z through the inverse projection's z
 #     and w rows (default-corner: a few pixels move by one or two 8-bit steps);
 #  9. LOW, HIGH and ULTRA were re-picked by the rule (low-teapot,
-#     high-reverse-z-teapot, ultra-*).
+#     high-reverse-z-teapot, ultra-*);
+# 10. the visibility method's default rotation is gradient noise at full
+#     resolution too (high-reverse-z-teapot, ultra-*).
 # The chapter cases are still 1.1's. The header's other
 # attributes (ssao-host records the scene and camera there) are not part of
 # the frame: SAME (exr_same_image) compares the image only.
