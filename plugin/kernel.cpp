@@ -88,7 +88,7 @@ float step_jitter(ssao_rotation rotation, uint32_t x, uint32_t y, uint32_t seed)
     }
     if (rotation == SSAO_ROTATION_HASH) return pixel_hash(y, x, seed ^ 0x5bd1e995u) * 0.9999f + 0.00005f;
     if (rotation == SSAO_ROTATION_GRADIENT_NOISE)
-        return gradient_noise(static_cast<float>(x) + 47.0f, static_cast<float>(y) + 17.0f) * 0.9999f + 0.00005f;
+        return gradient_noise(static_cast<float>(y), static_cast<float>(x)) * 0.9999f + 0.00005f;
     return 0.5f;
 }
 

@@ -39,7 +39,8 @@ std::vector<glm::vec3> make_directions(const ssao_settings& resolved);
 // Per-pixel step jitter in (0, 1) for the visibility method, for pixel (x, y)
 // of the viewport: a 4x4 ordered (Bayer) pattern for the 4x4 noise rotation
 // (so a 4x4 box averages 16 offsets), a second hash for the hash rotation,
-// gradient noise at (x + 47, y + 17) for the gradient-noise rotation, 0.5
+// gradient noise at (y, x) for the gradient-noise rotation (shaders/sampling.glsl
+// says why swapped), 0.5
 // without rotation. shaders/sampling.glsl computes the same at full
 // resolution; below it the 4x4 noise rotation takes its angle and jitter
 // from the gradient noise on the grid instead (gradient_noise() there: a 4x4

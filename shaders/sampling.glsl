@@ -94,11 +94,13 @@ float pixel_hash(uvec2 p, uint seed) {
 // period on the screen, and each 3x3 neighbourhood spreads its values evenly.
 float interleaved_gradient_noise(vec2 p) { return fract(52.9829189 * fract(dot(p, vec2(0.06711056, 0.00583715)))); }
 
-// The rotation GRADIENT_NOISE takes its angle and its step jitter from
-// interleaved gradient noise on the grid (two positions of it apart, so the
-// two are not correlated): no period, and the texels of a 2x2 or 3x3
-// neighbourhood (what the upsample and the blur average) get angles and
-// offsets spread evenly, where the 4x4 tile's 16 random angles may bunch.
+// The rotation GRADIENT_NOISE takes its angle from interleaved gradient
+// noise on the grid and its step jitter from the same noise with x and y
+// swapped: no period, and the texels of a 2x2 or 3x3 neighbourhood (what the
+// upsample and the blur average) get angles and offsets spread evenly, where
+// the 4x4 tile's 16 random angles may bunch. The swap keeps the two apart: a
+// shifted copy of the noise would move with the angle, the same offset from
+// it at every texel of a neighbourhood.
 // Below full resolution a grid texel spans u_scale viewport pixels, so the
 // 4x4 tile would repeat every 4 u_scale pixels: a stipple fixed on the
 // screen that the upsample cannot hide. There NOISE_4X4 takes the gradient
@@ -141,7 +143,7 @@ vec2 rotation(ivec2 vpx) {
 // resolution. The 4x4 noise gets an ordered (Bayer) pattern, so the 4x4 box
 // blur averages 16 offsets; below full resolution see gradient_noise().
 float fixed_step_jitter(ivec2 vpx) {
-    if (gradient_noise()) return interleaved_gradient_noise(vec2(vpx) + vec2(47.0, 17.0)) * 0.9999 + 0.00005;
+    if (gradient_noise()) return interleaved_gradient_noise(vec2(vpx.yx)) * 0.9999 + 0.00005;
     if (consts.rotation == SSAO_SHADER_ROTATION_NOISE) {
         const int bayer[16] = int[16](0, 8, 2, 10, 12, 4, 14, 6, 3, 11, 1, 9, 15, 7, 13, 5);
         ivec2 t = vpx & 3;

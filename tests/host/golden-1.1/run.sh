@@ -24,7 +24,10 @@
 #  9. LOW, HIGH and ULTRA were re-picked by the rule (low-teapot,
 #     high-reverse-z-teapot, ultra-*);
 # 10. the visibility method's default rotation is gradient noise at full
-#     resolution too (high-reverse-z-teapot, ultra-*).
+#     resolution too (high-reverse-z-teapot, ultra-*);
+# 11. the gradient noise's step jitter is the noise with x and y swapped, no
+#     longer a shifted copy tied to the angle (default-*, low-teapot,
+#     high-reverse-z-teapot, ultra-*, world-rgba8-teapot).
 # The chapter cases are still 1.1's. The header's other
 # attributes (ssao-host records the scene and camera there) are not part of
 # the frame: SAME (exr_same_image) compares the image only.
