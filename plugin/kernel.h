@@ -39,12 +39,12 @@ std::vector<glm::vec3> make_directions(const ssao_settings& resolved);
 // Per-pixel step jitter in (0, 1) for the visibility method, for pixel (x, y)
 // of the viewport: a 4x4 ordered (Bayer) pattern for the 4x4 noise rotation
 // (so a 4x4 box averages 16 offsets), a second hash for the hash rotation,
-// gradient noise at (y, x) for the gradient-noise rotation (shaders/sampling.glsl
-// says why swapped), 0.5
-// without rotation. shaders/sampling.glsl computes the same at full
-// resolution; below it the 4x4 noise rotation takes its angle and jitter
-// from the gradient noise on the grid instead (gradient_noise() there: a 4x4
-// tile on a half-resolution grid would repeat every 8 pixels).
+// the gradient noise at (y, x) for the gradient-noise rotation (swapped so
+// that it is not tied to the angle: shaders/sampling.glsl), 0.5 without
+// rotation. shaders/sampling.glsl computes the same at full resolution;
+// below it the 4x4 noise rotation takes its angle and jitter from the
+// gradient noise on the grid instead (gradient_noise() there: a 4x4 tile on
+// a half-resolution grid would repeat every 8 pixels).
 float step_jitter(ssao_rotation rotation, uint32_t x, uint32_t y, uint32_t seed);
 
 // Interleaved gradient noise (Jimenez 2014) at (x, y), in [0, 1), in the
