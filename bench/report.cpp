@@ -79,6 +79,12 @@ const char* kind_name(Row::Kind k) {
     return "?";
 }
 
+// A configuration of the sweep (the kernel or the visibility family, run by
+// the plugin): not a preset's row, an anchor or the limit.
+bool sweep_configuration(const Summary& s) {
+    return (s.family == Family::kernel || s.family == Family::visibility) && s.kind == Row::Kind::plugin;
+}
+
 std::vector<Summary> summarise(const std::vector<Row>& rows, int width, RowFilter keep) {
     const Anchors anchors(rows);
     std::vector<Summary> out;
@@ -127,9 +133,7 @@ std::vector<Summary> summarise(const std::vector<Row>& rows, int width, RowFilte
     // its own timing must not knock that configuration off the front.
     for (double Summary::*acc : {&Summary::psnr, &Summary::psnr_vs_limit}) {
         std::vector<FrontPoint> points;
-        for (const Summary& s : out)
-            points.push_back({s.ratio_textbook, s.*acc,
-                              s.kind == Row::Kind::plugin && (s.family == Family::kernel || s.family == Family::visibility)});
+        for (const Summary& s : out) points.push_back({s.ratio_textbook, s.*acc, sweep_configuration(s)});
         for (size_t i = 0; i < out.size(); ++i) {
             Summary& a = out[i];
             if (a.kind != Row::Kind::plugin || !std::isfinite(a.psnr)) continue;
@@ -168,11 +172,7 @@ constexpr Budget kBudgets[] = {{"medium (= default)", 0.25, false, 0.0},
 // resolution and keeps every other field at its default: the rule picks only
 // among sweep configurations a preset can express (no thickness or rotation
 // variants).
-bool in_sweep(const Summary& s) {
-    const bool expressible = !s.variant;
-    return (s.family == Family::kernel || s.family == Family::visibility) && s.kind == Row::Kind::plugin &&
-           std::isfinite(s.psnr) && expressible;
-}
+bool in_sweep(const Summary& s) { return sweep_configuration(s) && std::isfinite(s.psnr) && !s.variant; }
 
 const Summary* best_within(const std::vector<Summary>& sum, double ratio) {
     const Summary* best = nullptr;
