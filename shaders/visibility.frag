@@ -7,6 +7,17 @@
 // it), and a direction is blocked by its first blocked step. Sky, off-screen
 // and behind-the-eye steps are open. AO = visible fraction, then strength and
 // power as in the kernel pass.
+//
+// A coarse step can land more than the thickness behind a surface that the
+// segment from the previous point (P, or the previous step) crossed: a wall
+// or slab seen at a grazing angle, where a short move along the segment is a
+// long way in view depth. An exact march (the depth-only limit) finds the
+// point just behind that surface and blocks. So a step beyond the thickness
+// still blocks when the previous point lies in front of the same tangent
+// plane (the crossing test): the segment went through the surface the step's
+// texel shows. It costs no fetch, only the plane's depth under the previous
+// point. The plane's extension can stand where the surface does not (beside
+// a convex object's flank, at large radii), where it darkens a little.
 
 // How far (view z) the depth layer lies in front of step point s, read
 // through the fetched texel's tangent plane: the surface there is taken as
@@ -94,14 +105,20 @@ bool step_to_texel(StepSetup st, vec4 c, out ivec2 texel, out vec2 spf) {
 // step's plane s.n = sn met by the texel's ray, perspective at view z
 // z sn / n.Q, orthographic (sn - n.xy Q.xy) / n.z. False for the sky;
 // q_step: the view-z change of one depth-format step at the texel.
-bool step_surface(vec3 s, float sn, vec2 spf, ivec2 spx, Surface sf, StepSetup st, out float in_front,
-                  out float q_step) {
+// prev_in_front: the same plane's view z under the previous point (viewport
+// position prev_spf, view z prev_z) minus prev_z, for the crossing test; a
+// huge value where the plane is grazing or unusable there (no crossing).
+bool step_surface(vec3 s, float sn, vec2 spf, ivec2 spx, Surface sf, StepSetup st, vec2 prev_spf, float prev_z,
+                  out float in_front, out float q_step, out float prev_in_front) {
     vec4 plane = texelFetch(u_depth_tex, spx, 0);
     float z = plane.x;
     vec2 u0 = vec2(grid_pixel(st.g, spx)) + 0.5;
     float g_du = dot(plane.yz, spf - u0);
     float r = sf.ortho ? 1.0 : 1.0 + g_du;
     in_front = (sf.ortho ? z + g_du : z / r) - s.z;  // the tangent plane's view z under s
+    float g_prev = dot(plane.yz, prev_spf - u0);
+    float r_prev = sf.ortho ? 1.0 : 1.0 + g_prev;
+    prev_in_front = plane.w * abs(r_prev) > 1e-3 ? (sf.ortho ? z + g_prev : z / r_prev) - prev_z : 1e30;
     // Grazing or unusable: the snap. Rare, so a branch (a SIMD batch or
     // warp where no texel needs it skips it).
     if (!(plane.w * abs(r) > 1e-3)) {
@@ -110,6 +127,7 @@ bool step_surface(vec3 s, float sn, vec2 spf, ivec2 spx, Surface sf, StepSetup s
         bool snap = sf.ortho ? st.ortho_snap : abs(qn) > st.grazing * abs(z);
         float q = (sf.ortho ? sn - qn : z * sn) / (sf.ortho ? st.nz : qn);  // the snapped step's view z
         in_front = z - (snap ? q : s.z);
+        prev_in_front = 1e30;
     }
     q_step = depth_step_z(st.ds, z);  // read only for a surface
     return z != SKY_Z;
@@ -142,6 +160,8 @@ void main() {
         vec4 clip_dir = step_clip(st, proj * vec4(dir, 0.0));
         float dn = dot(dir, sf.n);
         bool blocked = false;
+        vec2 prev_spf = clip_p.xy / clip_p.w;  // the previous point: P, then each step
+        float prev_z = sf.P.z;
         for (int j = 0; j < steps && !blocked; ++j) {
             float t = (float(j) + jitter) * step_length;
             vec3 s = sf.P + dir * t;
@@ -151,10 +171,14 @@ void main() {
             ivec2 spx;
             vec2 spf;
             bool on_screen = step_to_texel(st, clip_p + clip_dir * t, spx, spf);
-            float in_front, q_step;  // in_front > 0: the surface hides the step
-            bool surface = step_surface(s, st.pn + dn * t, spf, spx, sf, st, in_front, q_step);
+            float in_front, q_step, prev_in_front;  // in_front > 0: the surface hides the step
+            bool surface = step_surface(s, st.pn + dn * t, spf, spx, sf, st, prev_spf, prev_z, in_front, q_step,
+                                        prev_in_front);
             float bias = bias_p + step_bias * q_step;
-            blocked = on_screen && surface && in_front >= bias && in_front <= thickness;
+            bool crossed = prev_in_front < bias;  // the previous point lay in front of this step's surface
+            blocked = on_screen && surface && in_front >= bias && (in_front <= thickness || crossed);
+            prev_spf = spf;
+            prev_z = s.z;
         }
         open += blocked ? 0.0 : 1.0;
     }

@@ -261,7 +261,8 @@ typedef enum ssao_method {
     SSAO_METHOD_VISIBILITY = 2,   /**< ray-marched visibility: sample_count cosine-weighted directions,
                                      each marched to radius in step_count jittered steps; a step is
                                      blocked when it lies behind the depth buffer by less than
-                                     thickness. Converges to the cosine-weighted open fraction of the
+                                     thickness, or further behind a surface that the segment from the
+                                     previous step crossed. Converges to the cosine-weighted open fraction of the
                                      hemisphere that one depth layer can show (docs/benchmark.md, "Estimators") */
     SSAO_METHOD_MAX_ENUM = 0x7fffffff  /**< not a value: keeps the enum 32 bits wide */
 } ssao_method;

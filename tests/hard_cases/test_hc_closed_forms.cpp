@@ -328,3 +328,35 @@ TEST_CASE("closed forms: the wedge - the GPU lands on the estimator's converged 
     CHECK(fx.gl_errors().empty());
 }
 
+
+TEST_CASE("closed forms: a coarse march blocks where its segment crosses the wall, however far behind the step lands") {
+    // Four steps and a thickness of R/10 against the wall seen 45 degrees
+    // down: most steps that pass the wall land further behind it (in view
+    // depth) than the thickness, so a point test alone would call them open.
+    // The crossing test blocks them, so every direction whose segment meets
+    // the wall before the last step is blocked: with no rotation the last
+    // step stands at (4 - 0.5) / 4 R for every pixel, and the GPU must land
+    // on V within that distance (exact ray casts), as the converged march
+    // lands on V_R above.
+    testgl::Fixture fx;
+    const double R = 1.5, last = 3.5 / 4.0 * R;
+    ssao_settings s = hc::make(64, SSAO_BLUR_NONE, SSAO_ROTATION_NONE, static_cast<float>(R), SSAO_METHOD_VISIBILITY);
+    s.step_count = 4;
+    s.thickness = static_cast<float>(0.1 * R);
+    std::vector<Bin> bins;
+    for (double c : {0.05, 0.2, 0.4, 0.6}) bins.push_back({c * R - 0.04 * R, c * R + 0.04 * R, {}});
+    const Reference within_last = [last](const Scene& scene, const glm::dvec3& P, const glm::dvec3& n, size_t i) {
+        return exact_visibility(scene, P, n, last, 4000, 7000 + i);
+    };
+    const auto m = measure(fx, 90.0, bins, [last](double d) { return wall_closed_form(d, last); }, s, within_last,
+                           camera_for(SSAO_METHOD_VISIBILITY));
+    for (size_t b = 0; b < m.size(); ++b) {
+        CAPTURE(b);
+        const double d = 0.5 * (bins[b].lo + bins[b].hi) / R;
+        MESSAGE("wall, 4 steps, thickness R/10, d/R " << d << " (" << m[b].pixels << " px): GPU " << m[b].gpu << " +- "
+                                                      << m[b].gpu_se << ", V within the last step " << m[b].limit
+                                                      << "; GPU - V " << m[b].gpu - m[b].limit);
+        CHECK(std::abs(m[b].gpu - m[b].limit) <= 4 * m[b].gpu_se + 0.01);
+    }
+    CHECK(fx.gl_errors().empty());
+}

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace cpu {
 
@@ -106,15 +107,31 @@ float ao(const Input& in, const ssao_settings& s, int x, int y) {
 
     if (s.method == SSAO_METHOD_VISIBILITY) {
         // shaders/visibility.frag: a direction is blocked by its first step
-        // that lies behind the depth buffer by [bias, thickness].
+        // that lies behind the depth buffer by [bias, thickness], or further
+        // behind a surface that the segment from the previous point crossed.
         const auto dirs = ssao_impl::make_directions(s);
         const double jitter = ssao_impl::step_jitter(s.rotation, static_cast<uint32_t>(x), static_cast<uint32_t>(y), s.seed);
+        // How far the plane through Q with normal nq lies in front of point sp
+        // along sp's eye ray (orthographic: the view axis), in view z; nullopt
+        // where that ray runs within 1e-3 of the plane.
+        auto plane_in_front = [&](const glm::dvec3& sp, const glm::dvec3& Q, const glm::dvec3& nq) -> std::optional<double> {
+            const double plane = glm::dot(Q, nq);
+            if (p.orthographic) {
+                if (std::abs(nq.z) > 1e-3) return (plane - nq.x * sp.x - nq.y * sp.y) / nq.z - sp.z;
+            } else if (std::abs(glm::dot(sp, nq)) > 1e-3 * glm::length(sp)) {
+                return sp.z * (plane / glm::dot(sp, nq)) - sp.z;
+            }
+            return std::nullopt;
+        };
         double open = 0.0;
         for (const glm::vec3& k : dirs) {
             const glm::dvec3 dir = T * double(k.x) + B * double(k.y) + n * double(k.z);
             bool blocked = false;
+            glm::dvec3 prev = P;
             for (uint32_t j = 0; j < s.step_count && !blocked; ++j) {
                 const glm::dvec3 sp = P + dir * (radius * (j + jitter) / s.step_count);
+                const glm::dvec3 before = prev;
+                prev = sp;
                 int sx = 0, sy = 0;
                 if (!project(sp, sx, sy)) continue;
                 const double sd = depth(sx, sy);
@@ -126,16 +143,13 @@ float ao(const Input& in, const ssao_settings& s, int x, int y) {
                 glm::dvec3 nq;
                 const glm::dvec3 to_eye_q = p.orthographic ? glm::dvec3(0, 0, 1) : glm::normalize(-Q);
                 const bool trusted = decode_normal(sx, sy, nq) && glm::dot(nq, to_eye_q) > 0.0;
-                const double plane = glm::dot(Q, nq);
-                double in_front = Q.z - snap(sp, Q).z;
-                if (!trusted) {
-                } else if (p.orthographic) {
-                    if (std::abs(nq.z) > 1e-3) in_front = (plane - nq.x * sp.x - nq.y * sp.y) / nq.z - sp.z;
-                } else if (std::abs(glm::dot(sp, nq)) > 1e-3 * glm::length(sp)) {
-                    in_front = sp.z * (plane / glm::dot(sp, nq)) - sp.z;
-                }
+                const std::optional<double> through_plane = trusted ? plane_in_front(sp, Q, nq) : std::nullopt;
+                const double in_front = through_plane ? *through_plane : Q.z - snap(sp, Q).z;
                 const double bias = s.bias + s.depth_step_bias * (step_p + step(sx, sy, sd));
-                blocked = in_front >= bias && in_front <= s.thickness;
+                // The crossing: the previous point lay in front of the same plane.
+                const std::optional<double> before_in_front = through_plane ? plane_in_front(before, Q, nq) : std::nullopt;
+                const bool crossed = before_in_front && *before_in_front < bias;
+                blocked = in_front >= bias && (in_front <= s.thickness || crossed);
             }
             if (!blocked) open += 1.0;
         }

@@ -28,6 +28,9 @@
 # 11. the gradient noise's step jitter is the noise with x and y swapped, no
 #     longer a shifted copy tied to the angle (default-*, low-teapot,
 #     high-reverse-z-teapot, ultra-*, world-rgba8-teapot).
+# 12. the visibility march's crossing test: a step beyond the thickness
+#     still blocks where the previous point lay in front of its texel's
+#     tangent plane (default-corner, ultra-corner).
 # The chapter cases are still 1.1's. The header's other
 # attributes (ssao-host records the scene and camera there) are not part of
 # the frame: SAME (exr_same_image) compares the image only.
