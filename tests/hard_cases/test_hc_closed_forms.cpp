@@ -328,7 +328,6 @@ TEST_CASE("closed forms: the wedge - the GPU lands on the estimator's converged 
     CHECK(fx.gl_errors().empty());
 }
 
-
 TEST_CASE("closed forms: a coarse march blocks where its segment crosses the wall, however far behind the step lands") {
     // Four steps and a thickness of R/10 against the wall seen 45 degrees
     // down: most steps that pass the wall land further behind it (in view
