@@ -350,8 +350,9 @@ typedef struct ssao_settings {
                                     tolerance * |z_centre| (relative view depth), (0, 1]; default 0.05.
                                     Where the centre has a tangent plane (its normal not along the view
                                     axis) the blur uses 0.2 * tolerance against the depth that plane puts
-                                    under the tap, and the upsample below full resolution 0.2 * tolerance
-                                    against the depth a tap's plane puts under the pixel */
+                                    under the tap (at full resolution plus the miss of the tap's own plane
+                                    under the centre), and the upsample below full resolution
+                                    0.2 * tolerance against the depth a tap's plane puts under the pixel */
     ssao_output_format output_format;           /**< plugin-owned output format; default R8 */
     /* ---- appended in interface 1.1 (a 1.0-sized struct reads them as zero = default) */
     ssao_method method;          /**< estimator; default: the DEFAULT preset's (visibility) */

@@ -156,7 +156,10 @@ double blur_depth_weight(const analytic::GBuffer& g, const glm::dmat4& proj, dou
     const bool plane = g.normal[c].x != 0.0f || g.normal[c].y != 0.0f;
     const double tolerance = std::max(relative_tolerance * std::abs(z0) * (plane ? SSAO_PLANE_TOLERANCE : 1.0), 1e-30);
     const double expected = plane ? tangent_plane_z(g, proj, x0, y0, x, y) : z0;
-    const double dz = std::abs(g.position[static_cast<size_t>(y) * g.width + x].z - expected);
+    const size_t t = static_cast<size_t>(y) * g.width + x;
+    double dz = std::abs(g.position[t].z - expected);
+    const bool tap_plane = g.normal[t].x != 0.0f || g.normal[t].y != 0.0f;
+    if (plane && tap_plane) dz += std::abs(tangent_plane_z(g, proj, x, y, x0, y0) - z0);  // both ways
     return std::clamp(1.0 - dz / tolerance, 0.0, 1.0);
 }
 

@@ -90,7 +90,9 @@ double tangent_plane_z(const analytic::GBuffer& g, const glm::dmat4& proj, int x
 // tangent plane is not parallel to the image (its normal has an x or y), dz is
 // the tap's view z less the view z that plane puts under the tap and the
 // tolerance shrinks by SSAO_PLANE_TOLERANCE; else dz is the tap's view z less
-// the centre's.
+// the centre's. With both planes known, the miss of the tap's own plane under
+// the centre is added to dz (the two-way test of the full-resolution blur,
+// the only one this oracle models).
 double blur_depth_weight(const analytic::GBuffer& g, const glm::dmat4& proj, double relative_tolerance, int x0, int y0,
                          int x, int y);
 

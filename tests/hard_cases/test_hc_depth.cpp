@@ -173,9 +173,15 @@ TEST_CASE("depth conventions: a half-pixel jitter leaves the AO profile across t
     // The sampling alone, and with the depth-aware blur, which keeps to the
     // floor's own side of the crease: there the profile falls by a third
     // within about one row, and a one-sided mean of the rows next to it would
-    // move with where the jitter puts them (by up to 0.042, measured); the
-    // blur's line fit reads the profile at the row itself (measured 0.028).
-    const std::pair<ssao_blur, double> blurs[] = {{SSAO_BLUR_NONE, 0.03}, {SSAO_BLUR_DEPTH_AWARE, 0.03}};
+    // move with where the jitter puts them; the blur's line fit reads the
+    // profile at the row itself. Measured: visibility 0.025, the kernel
+    // 0.051. The blur's two-way plane test (blur.frag depth_weight) keeps
+    // every wall tap out of the floor's row at the crease, so the kernel's
+    // steeper profile there is fitted from one side (0.028 when the wall's
+    // taps next to the crease still counted, at the price of stripes along
+    // folds and steps).
+    const double aware_bound = method == SSAO_METHOD_KERNEL ? 0.06 : 0.03;
+    const std::pair<ssao_blur, double> blurs[] = {{SSAO_BLUR_NONE, 0.03}, {SSAO_BLUR_DEPTH_AWARE, aware_bound}};
     for (const auto& blur_bound : blurs) {
         const ssao_blur blur = blur_bound.first;
         const double bound = blur_bound.second;

@@ -31,6 +31,9 @@
 # 12. the visibility march's crossing test: a step beyond the thickness
 #     still blocks where the previous point lay in front of its texel's
 #     tangent plane (default-corner, ultra-corner).
+# 13. the full-resolution depth-aware blur reads each tap's own tangent plane
+#     under the centre too (two ways: ultra-*, high-reverse-z-teapot,
+#     kernel-depth-aware-corner).
 # The chapter cases are still 1.1's. The header's other
 # attributes (ssao-host records the scene and camera there) are not part of
 # the frame: SAME (exr_same_image) compares the image only.
