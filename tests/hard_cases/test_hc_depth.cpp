@@ -177,9 +177,9 @@ TEST_CASE("depth conventions: a half-pixel jitter leaves the AO profile across t
     // profile at the row itself. Measured: visibility 0.025, the kernel
     // 0.051. The blur's two-way plane test (blur.frag depth_weight) keeps
     // every wall tap out of the floor's row at the crease, so the kernel's
-    // steeper profile there is fitted from one side (0.028 when the wall's
-    // taps next to the crease still counted, at the price of stripes along
-    // folds and steps).
+    // steeper profile there is fitted from one side (a one-way test, which
+    // lets the wall's taps next to the crease count, reads 0.028 here but
+    // blurs folds and steps into stripes).
     const double aware_bound = method == SSAO_METHOD_KERNEL ? 0.06 : 0.03;
     const std::pair<ssao_blur, double> blurs[] = {{SSAO_BLUR_NONE, 0.03}, {SSAO_BLUR_DEPTH_AWARE, aware_bound}};
     for (const auto& blur_bound : blurs) {
