@@ -151,15 +151,16 @@ double tangent_plane_z(const analytic::GBuffer& g, const glm::dmat4& proj, int x
 
 double blur_depth_weight(const analytic::GBuffer& g, const glm::dmat4& proj, double relative_tolerance, int x0, int y0,
                          int x, int y) {
+    // A pixel has a tangent plane for the blur where its normal is not along the view axis.
+    auto has_plane = [&g](size_t i) { return g.normal[i].x != 0.0f || g.normal[i].y != 0.0f; };
     const size_t c = static_cast<size_t>(y0) * g.width + x0;
+    const size_t t = static_cast<size_t>(y) * g.width + x;
     const double z0 = g.position[c].z;
-    const bool plane = g.normal[c].x != 0.0f || g.normal[c].y != 0.0f;
+    const bool plane = has_plane(c);
     const double tolerance = std::max(relative_tolerance * std::abs(z0) * (plane ? SSAO_PLANE_TOLERANCE : 1.0), 1e-30);
     const double expected = plane ? tangent_plane_z(g, proj, x0, y0, x, y) : z0;
-    const size_t t = static_cast<size_t>(y) * g.width + x;
     double dz = std::abs(g.position[t].z - expected);
-    const bool tap_plane = g.normal[t].x != 0.0f || g.normal[t].y != 0.0f;
-    if (plane && tap_plane) dz += std::abs(tangent_plane_z(g, proj, x, y, x0, y0) - z0);  // both ways
+    if (plane && has_plane(t)) dz += std::abs(tangent_plane_z(g, proj, x, y, x0, y0) - z0);  // both ways
     return std::clamp(1.0 - dz / tolerance, 0.0, 1.0);
 }
 
