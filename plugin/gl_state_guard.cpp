@@ -10,6 +10,9 @@ const GLenum kUnpackParams[8] = {GL_UNPACK_SWAP_BYTES, GL_UNPACK_LSB_FIRST, GL_U
                                  GL_UNPACK_IMAGE_HEIGHT, GL_UNPACK_SKIP_ROWS, GL_UNPACK_SKIP_PIXELS,
                                  GL_UNPACK_SKIP_IMAGES, GL_UNPACK_ALIGNMENT};
 
+// No polygon mode has this value: marks a slot glGetIntegerv left alone.
+constexpr GLint kUnwrittenPolygonMode = -1;
+
 void set_enabled(const GladGLContext& gl, GLenum cap, GLboolean on) {
     if (on) gl.Enable(cap); else gl.Disable(cap);
 }
@@ -92,7 +95,12 @@ GlStateGuard::GlStateGuard(const GladGLContext& gl, const GlCaps& caps, GLuint u
     }
     for (int i = 0; i < std::min(caps.max_clip_distances, 8); ++i)
         clip_distance_[i] = gl.IsEnabled(GL_CLIP_DISTANCE0 + static_cast<GLenum>(i));
+    // A core profile's state table holds one polygon mode, and a driver may
+    // write one value (NVIDIA's does); a compatibility profile writes front
+    // and back. An unwritten back slot reads as the front mode.
+    polygon_mode_[1] = kUnwrittenPolygonMode;
     gl.GetIntegerv(GL_POLYGON_MODE, polygon_mode_);
+    if (polygon_mode_[1] == kUnwrittenPolygonMode) polygon_mode_[1] = polygon_mode_[0];
     gl.GetBooleanv(GL_DEPTH_WRITEMASK, &depth_mask_);
     gl.GetIntegerv(GL_STENCIL_WRITEMASK, &stencil_mask_front_);
     gl.GetIntegerv(GL_STENCIL_BACK_WRITEMASK, &stencil_mask_back_);
@@ -189,8 +197,8 @@ GlStateGuard::~GlStateGuard() {
     }
     for (int i = 0; i < std::min(caps_.max_clip_distances, 8); ++i)
         set_enabled(gl, GL_CLIP_DISTANCE0 + static_cast<GLenum>(i), clip_distance_[i]);
-    // Core profile: front and back are always equal and only GL_FRONT_AND_BACK
-    // is accepted; a compatibility profile may hold two different modes.
+    // A core profile accepts only GL_FRONT_AND_BACK (NVIDIA's refuses GL_FRONT
+    // with GL_INVALID_ENUM); only a compatibility profile holds two modes.
     if (polygon_mode_[0] == polygon_mode_[1]) {
         gl.PolygonMode(GL_FRONT_AND_BACK, static_cast<GLenum>(polygon_mode_[0]));
     } else {
