@@ -15,6 +15,11 @@ uniform bool u_pack_depth;  // this pass writes the AO texture: (ao, view z)
 
 layout(location = 0) out vec4 o_ao;
 
+// A weighted mean of AO values, held in [0,1]: a GPU's division need not be
+// correctly rounded (NVIDIA's is not), and taps that are all 1 then give
+// 1 + 1 ulp.
+float weighted_mean(float sum, float weight) { return clamp(sum / weight, 0.0, 1.0); }
+
 vec4 result(float ao, float z, vec2 g) { return u_pack_depth ? vec4(ao, z, g) : vec4(ao, ao, ao, 1.0); }
 vec4 result(float ao, float z) { return result(ao, z, vec2(0.0)); }
 

@@ -121,7 +121,7 @@ void main() {
 #ifdef SSAO_BLUR_WEIGHTS
         o_ao = result(count / taps, z0, g0);
 #else
-        float mean = sum / count;
+        float mean = weighted_mean(sum, count);
         float ao = u_depth_aware ? line_at_centre(mean, sum_k / count, sum_kk / count, sum_ka / count) : mean;
         o_ao = result(ao, z0, g0);
 #endif
@@ -157,7 +157,7 @@ void main() {
     float before = u_blur_dir.y != 0 ? centre : 1.0;  // the horizontal pass's share
     o_ao = result(weight / gaussian * before, z0, g0);
 #else
-    float mean = sum / weight;
+    float mean = weighted_mean(sum, weight);
     float ao = aware ? line_at_centre(mean, vec2(sum_k, 0.0) / weight, vec3(sum_kk, 0.0, 0.0) / weight,
                                       vec2(sum_ka, 0.0) / weight)
                      : mean;

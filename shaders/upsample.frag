@@ -46,7 +46,7 @@ float depth_weighted(ivec2 p, float z0) {
         sum += tap.r * w;
         weight += w;
     }
-    return weight > 0.0 ? sum / weight : nearest;
+    return weight > 0.0 ? weighted_mean(sum, weight) : nearest;
 }
 
 void main() {
