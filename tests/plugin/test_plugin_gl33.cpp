@@ -126,15 +126,22 @@ int ao_mismatches(testgl::Fixture& fx) {
 }
 
 // Child process: a 3.3 context without KHR_debug. Exit codes: 0 the library
-// ran correctly; 2 the override did not remove KHR_debug; 3 execute failed
+// ran correctly; 2 the override did not remove KHR_debug on Mesa (kNotMesa:
+// not Mesa's driver, which has no such override); 3 execute failed
 // or its AO is wrong; 4 a GL error; 5 the debug stack or labels changed;
 // 6 execute on another context (told apart by the vertex array's name alone,
 // without labels) was not refused with WRONG_CONTEXT, or raised a GL error there.
+constexpr int kNotMesa = 77;
+
 int child_without_khr_debug() {
     setenv("MESA_EXTENSION_OVERRIDE", "-GL_KHR_debug", 1);
     testgl::Gl33Fixture fx;
     auto& gl = fx.gl();
-    if (has_extension(gl, "GL_KHR_debug") || gl.KHR_debug || gl.PushDebugGroup || gl.ObjectLabel) return 2;
+    if (has_extension(gl, "GL_KHR_debug") || gl.KHR_debug || gl.PushDebugGroup || gl.ObjectLabel) {
+        // The override is Mesa's: another driver keeps the extension.
+        const char* vendor = reinterpret_cast<const char*>(gl.GetString(GL_VENDOR));
+        return vendor && std::strstr(vendor, "Mesa") ? 2 : kNotMesa;
+    }
     const int off = ao_mismatches(fx);
     if (off < 0 || off > 32 * 32 / 50) return 3;
     for (int i = 0; i < 3; ++i)
@@ -179,6 +186,10 @@ TEST_CASE("without KHR_debug (3.3, extension removed) execute runs as before and
     CAPTURE(child.crashed);
     CAPTURE(child.code);
     CHECK_FALSE(child.crashed);
+    if (child.code == kNotMesa) {
+        MESSAGE("not Mesa's driver: GL_KHR_debug cannot be removed here, nothing to observe");
+        return;
+    }
     CHECK(child.code == 0);
 }
 

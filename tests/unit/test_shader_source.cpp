@@ -203,9 +203,9 @@ TEST_CASE("shader source: the driver's log names the source string and the line 
         const int line = line_of(text, text.find(c.line));
         const std::string log = compile_log(egl->gl(), GL_FRAGMENT_SHADER, source);
         CAPTURE(log);
-        // Mesa writes "N:LINE(COLUMN): error: ...".
-        const std::string where = std::to_string(index_of(files, c.file)) + ":" + std::to_string(line) + "(";
-        CHECK(log.find(where) != std::string::npos);
+        // Mesa writes "N:LINE(COLUMN): error: ...", NVIDIA "N(LINE) : error C0000: ...".
+        const std::string n = std::to_string(index_of(files, c.file)), l = std::to_string(line);
+        CHECK((log.find(n + ":" + l + "(") != std::string::npos || log.find(n + "(" + l + ")") != std::string::npos));
         CHECK(log.find("error") != std::string::npos);
     }
 }
