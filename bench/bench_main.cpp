@@ -41,7 +41,7 @@ int run(bench::Options& o) {
     for (const std::string& scene : o.scenes)
         for (int scale : o.scales) {
             std::fprintf(stderr, "scene %s at %dx%d\n", scene.c_str(), o.width * scale, o.height * scale);
-            bench::measure_scene(scene, o, scale, lib.api(), sweep, presets, scale == 1, rows);
+            bench::measure_scene(scene, o, scale, lib.api(), sweep, presets, scale == 1 && !o.time_only, rows);
         }
     bench::write_report(o, rows);
     return 0;

@@ -33,6 +33,9 @@ std::string help_text() {
            "  --extra-directions N   limit directions on the other views and radii (default 128)\n"
            "  --out DIR              where results go (default bench-out)\n"
            "  --quick                one timed frame a round, fewer rays and directions, base size only\n"
+           "  --time-only            the timing part alone: presets, textbook pass and floor at every size\n"
+           "                         and view (1x radius), no ground truth, no limit, no errors; GPU-timer\n"
+           "                         ratios beside the CPU ones (for a real GPU)\n"
            "  --plugin PATH          libssao.so to load (default: as ssao-host finds it)\n"
            "  --normals gbuffer|depth  the plugin's normals: the G-buffer's, or depth: normal_texture = 0, the\n"
            "                         plugin rebuilds them from depth (default gbuffer)\n"
@@ -148,6 +151,10 @@ Parse parse(int argc, char** argv, Options& o, std::string& error) {
     };
     const flags::Switches switches = {
         {"--allow-outside-files", [&] { o.allow_outside_files = true; }},
+        {"--time-only", [&] {
+             o.time_only = true;
+             o.full_sweep = false;
+         }},
         {"--quick", [&] {
              o.frames = 1;
              o.warmup = 1;

@@ -24,6 +24,10 @@ struct Options {
     std::vector<View> views = all_views();
     std::vector<float> radius_scales = bench::radius_scales();
     bool full_sweep = true;                  // false (--sweep presets): presets, textbook, floor and limit only
+    // --time-only: the presets, the textbook pass and the floor timed at every
+    // size and view (1x radius), nothing traced and no errors: the timing part
+    // alone, for a real GPU where the tracing on the CPU would dominate the run.
+    bool time_only = false;
     std::string out = "bench-out";
     std::string plugin;                      // empty: plugin::Library::search_order()
     bool normals_from_depth = false;         // --normals depth: every configuration gets normal_texture = 0

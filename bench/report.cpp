@@ -319,12 +319,15 @@ std::string cases_table(const std::vector<Row>& rows, int width) {
     return md.str();
 }
 
-// DEFAULT / textbook and DEFAULT / floor by CPU time, per size over every
-// scene, view and radius measured there: the median case and the worst.
-std::string default_ratios(const Options& o, const std::vector<Row>& rows) {
+// DEFAULT / textbook and DEFAULT / floor by one clock (`ms`: CPU time, or
+// the GPU timers' median, named `clock`), per size over every scene, view and
+// radius measured there: the median case and the worst.
+std::string default_ratios(const Options& o, const std::vector<Row>& rows, double Row::*ms = &Row::cpu_ms,
+                           const char* clock = "CPU") {
     const Anchors anchors(rows);
     std::ostringstream md;
-    md << "| size | cases | DEFAULT / textbook (CPU): median, worst (case) | DEFAULT / floor (CPU): median, worst (case) |\n"
+    md << "| size | cases | DEFAULT / textbook (" << clock << "): median, worst (case) | DEFAULT / floor (" << clock
+       << "): median, worst (case) |\n"
        << "|---|---:|---:|---:|\n";
     for (int scale : o.scales) {
         const int w = o.width * scale, h = o.height * scale;
@@ -333,7 +336,7 @@ std::string default_ratios(const Options& o, const std::vector<Row>& rows) {
         std::string at_tb, at_fl;
         for (const Row& r : rows) {
             if (r.width != w || r.kind != Row::Kind::plugin || r.config != "preset medium (= default)") continue;
-            const double a = anchors.ratio(r, &Row::cpu_ms), b = anchors.ratio(r, &Row::cpu_ms, true);
+            const double a = anchors.ratio(r, ms), b = anchors.ratio(r, ms, true);
             const std::string where = r.scene + " " + view_name(r.view) + " " + radius_text(r.radius_scale);
             tb.push_back(a);
             fl.push_back(b);
@@ -424,11 +427,34 @@ void write_plot(const Options& o, const std::vector<Summary>& sum) {
         std::printf("plot: gnuplot not found; %s/plot.gp draws it (apt-get install gnuplot-nox)\n", o.out.c_str());
 }
 
+// --time-only: no errors, so no sweep, front or preset rule; DEFAULT's ratios
+// by both clocks (on a real GPU its timers are the figure: the CPU waits in
+// glFinish) and the scaling table.
+void write_timing_report(const Options& o, const std::vector<Row>& rows) {
+    std::ostringstream md;
+    md << "Timing only (no ground truth, no errors). Presets, the textbook pass and the floor on every scene and "
+       << "view at each scene's radius, interleaved over " << o.rounds << " rounds of " << o.warmup << " untimed and "
+       << o.frames << " timed frames (1/k of each at k x the base size " << o.width << "x" << o.height
+       << "). CPU: this process's CPU time per frame (submission to glFinish; LP_NUM_THREADS=" << o.lp_num_threads
+       << "), median over rounds. GPU: the passes' own timer queries, median over frames.\n\n"
+       << "DEFAULT against the anchors by GPU timer:\n\n"
+       << default_ratios(o, rows, &Row::median_ms, "GPU") << "\nThe same by CPU time:\n\n"
+       << default_ratios(o, rows) << "\nTime against pixels (means over scenes and views):\n\n"
+       << scaling_table(o, rows);
+    std::ofstream(o.out + "/bench.md") << md.str();
+    std::printf("%s", md.str().c_str());
+    std::printf("results: %s/bench.csv, %s/bench.md\n", o.out.c_str(), o.out.c_str());
+}
+
 }  // namespace
 
 void write_report(const Options& o, const std::vector<Row>& rows) {
     std::filesystem::create_directories(o.out);
     write_csv(o, rows);
+    if (o.time_only) {
+        write_timing_report(o, rows);
+        return;
+    }
     const std::vector<Summary> sum = summarise(rows, o.width, main_case);
     std::vector<std::string> scenes;
     for (const Row& r : rows)

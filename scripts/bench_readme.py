@@ -68,6 +68,33 @@ def case_name(r):
     return "%s/%s/%gR" % (r["scene"], r["view"], r["radius_scale"])
 
 
+def gpu_table(d):
+    """ssao-bench --time-only on a GPU (DIR/bench.csv, DIR/machine.txt): per size, each pass's GPU-timer ms
+    (mean over the cases: every scene and view at 1x radius) and DEFAULT over the anchors by GPU timer."""
+    rows = load(d + "/bench.csv")
+    machine = open(d + "/machine.txt").read().strip() if os.path.exists(d + "/machine.txt") else "?"
+    passes = [("LOW", "preset low"), ("DEFAULT", "preset medium (= default)"), ("HIGH", "preset high"),
+              ("ULTRA", "preset ultra")]
+    lines = ["Machine: %s. GPU timer ms per frame, mean over %d cases (every scene and view at 1x radius)." % (
+                 machine, len({case_name(r) for r in rows})), "",
+             "| size | %s | textbook pass | floor | DEFAULT / textbook: median, worst | DEFAULT / floor: median, worst |"
+             % " | ".join(p for p, _ in passes), "|---|" + "---:|" * (len(passes) + 4)]
+    for w in sorted({r["width"] for r in rows}):
+        at = [r for r in rows if r["width"] == w]
+        h = at[0]["height"]
+        ms = lambda pick: mean(r["median_ms"] for r in at if pick(r))
+        anchor = lambda kind: {case_name(r): r["median_ms"] for r in at if r["kind"] == kind}
+        tb, fl = anchor("textbook"), anchor("floor")
+        dflt = [r for r in at if r["config"] == passes[1][1]]
+        to_tb = [r["median_ms"] / tb[case_name(r)] for r in dflt]
+        to_fl = [r["median_ms"] / fl[case_name(r)] for r in dflt]
+        lines.append("| %dx%d | %s | %s | %s | %s, %s | %s, %s |" % (
+            w, h, " | ".join(f(ms(lambda r, n=n: r["config"] == n)) for _, n in passes),
+            f(ms(lambda r: r["kind"] == "textbook")), f(ms(lambda r: r["kind"] == "floor")),
+            f(median(to_tb), 3), f(max(to_tb), 3), f(median(to_fl), 1), f(max(to_fl), 1)))
+    return "\n".join(lines)
+
+
 def main():
     d = sys.argv[1] if len(sys.argv) > 1 else "docs/bench"
     docs = sys.argv[2:] or DEFAULT_DOCS
@@ -120,6 +147,8 @@ def main():
     blocks["resolution"] = resolution_table(standard, scenes)
     if os.path.exists(d + "/thickness.csv"):
         blocks["thickness"] = thickness_table(d + "/thickness.csv")
+    if os.path.exists(d + "/gpu/bench.csv"):
+        blocks["gpu"] = gpu_table(d + "/gpu")
     write_blocks(blocks, docs, "bench_readme")
     print("bench_readme: %d blocks written from %s" % (len(blocks), d))
 

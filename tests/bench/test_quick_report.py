@@ -87,6 +87,27 @@ with tempfile.TemporaryDirectory() as tmp:
     check(all(r["view"] == "close-up" and float(r["radius_scale"]) == 2.0 for r in rows), "only close-up at 2R")
     check("LP_NUM_THREADS=2" in md, "bench.md states the user's LP_NUM_THREADS=2")
 
+    # --time-only: presets and anchors at every size and view, 1x radius, no limit and no errors; the
+    # GPU-timer ratio of DEFAULT to the textbook pass is its GPU ms over the textbook's, case by case.
+    rows, md = run(os.path.join(tmp, "time"), "--time-only", "--scales", "1,2")
+    timed = [c for c in CONFIGS if not c.startswith("depth-only")]
+    check(len(rows) == 2 * 3 * len(timed), "--time-only: 2 sizes x 3 views x 6 passes, got %d rows" % len(rows))
+    check({(int(r["width"]), r["view"], r["config"]) for r in rows} ==
+          {(w, v, c) for w in (64, 128) for v in ("standard", "high", "close-up") for c in timed},
+          "--time-only: a row for every size, view and timed pass")
+    check(all(float(r["radius_scale"]) == 1.0 for r in rows), "--time-only: 1x radius only")
+    check(all(math.isnan(num(r, "psnr")) and num(r, "cpu_ms") > 0 for r in rows), "--time-only: timed, no errors")
+    cases = {}
+    for r in rows:
+        cases.setdefault((r["width"], r["view"]), {})[r["kind"] if r["kind"] != "plugin" else r["config"]] = r
+    gpu = sorted(num(c["preset medium (= default)"], "median_ms") / num(c["textbook"], "median_ms")
+                 for (w, v), c in cases.items() if w == "64")
+    line = [l for l in md.splitlines() if l.startswith("| 64x36 |")][0]
+    check("DEFAULT / textbook (GPU)" in md and "DEFAULT / textbook (CPU)" in md, "--time-only: both clocks' ratios")
+    check(line.split("|")[3].strip().startswith("%.3f, %.3f" % (gpu[1], gpu[2])),
+          "--time-only: GPU ratio median and worst over the views %s, got %r" % (gpu, line))
+    check(not os.path.exists(os.path.join(tmp, "time", "presets.txt")), "--time-only: no preset rule without errors")
+
     # A view it does not know: one line, exit 2.
     p = subprocess.run([bench, "--views", "sideways", scene], capture_output=True, text=True)
     check(p.returncode == 2, "--views sideways exits 2, got %d" % p.returncode)
