@@ -34,7 +34,8 @@
 # 13. the full-resolution depth-aware blur reads each tap's own tangent plane
 #     under the centre too (two ways: ultra-*, high-reverse-z-teapot,
 #     kernel-depth-aware-corner).
-# The chapter cases are still 1.1's. The header's other
+# The chapter cases are still 1.1's. On a renderer other than llvmpipe the
+# check is skipped (exit 77) and make refuses. The header's other
 # attributes (ssao-host records the scene and camera there) are not part of
 # the frame: SAME (exr_same_image) compares the image only.
 #   run.sh check HOST SAME  compare HOST's output with the committed files
@@ -53,6 +54,12 @@ while IFS='|' read -r name scene flags; do
   # shellcheck disable=SC2086
   "$host" "$root/$scene" --width 64 --height 48 --only ao --out "$work/$name" $flags > "$work/$name.log" 2>&1 || {
     echo "golden-1.1: $name: ssao-host failed:"; cat "$work/$name.log"; exit 1; }
+  # The files are llvmpipe's frames bit for bit: another renderer's rounding
+  # differs (an NVIDIA GPU's division, for one), so there is nothing to compare.
+  if ! grep -q "^  render: .* on llvmpipe " "$work/$name.log"; then
+    echo "golden-1.1: skipped: the files are llvmpipe's output; this renderer: $(grep -m1 '^  render: ' "$work/$name.log")"
+    [ "$mode" = make ] && exit 1 || exit 77
+  fi
   if [ "$mode" = make ]; then
     cp "$work/$name/ao.exr" "$here/$name.exr"
   elif "$same" "$work/$name/ao.exr" "$here/$name.exr"; then
