@@ -125,14 +125,15 @@ int ao_mismatches(testgl::Fixture& fx) {
     return off;
 }
 
+// The child's exit code where the driver is not Mesa's.
+constexpr int kNotMesa = 77;
+
 // Child process: a 3.3 context without KHR_debug. Exit codes: 0 the library
 // ran correctly; 2 the override did not remove KHR_debug on Mesa (kNotMesa:
 // not Mesa's driver, which has no such override); 3 execute failed
 // or its AO is wrong; 4 a GL error; 5 the debug stack or labels changed;
 // 6 execute on another context (told apart by the vertex array's name alone,
 // without labels) was not refused with WRONG_CONTEXT, or raised a GL error there.
-constexpr int kNotMesa = 77;
-
 int child_without_khr_debug() {
     setenv("MESA_EXTENSION_OVERRIDE", "-GL_KHR_debug", 1);
     testgl::Gl33Fixture fx;
