@@ -151,10 +151,7 @@ Parse parse(int argc, char** argv, Options& o, std::string& error) {
     };
     const flags::Switches switches = {
         {"--allow-outside-files", [&] { o.allow_outside_files = true; }},
-        {"--time-only", [&] {
-             o.time_only = true;
-             o.full_sweep = false;
-         }},
+        {"--time-only", [&] { o.time_only = true; }},
         {"--quick", [&] {
              o.frames = 1;
              o.warmup = 1;
