@@ -53,6 +53,7 @@ SsaoFrame make_frame_block(const ssao_settings& s, const AnalysedInputs& in) {
     c.fade_start = s.fade_start;
     c.fade_end = s.fade_end;
     c.radius_pixels = s.radius_pixels;
+    c.max_step_texels = s.max_step_texels;
     if (in.frame_index != 0) {
         const glm::dvec2 off = frame_noise_offsets(in.frame_index);
         const double turn = off.x * 6.283185307179586;

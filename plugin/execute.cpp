@@ -14,6 +14,7 @@
 
 static_assert(SSAO_MAX_KERNEL == SSAO_MAX_SAMPLES, "shader and ABI sample limits differ");
 static_assert(SSAO_BLUR_MAX_TAPS == SSAO_MAX_BLUR_RADIUS, "shader and ABI blur limits differ");
+static_assert(SSAO_MARCH_MAX_STEPS == SSAO_MAX_STEPS, "shader and ABI step limits differ");
 static_assert(SSAO_UNITS_USED == SSAO_TEXTURE_UNITS_USED, "shader and ABI texture units differ");
 static_assert(SSAO_SHADER_KERNEL_SEPARABLE == SSAO_KERNEL_SEPARABLE && SSAO_SHADER_KERNEL_SPHERE == SSAO_KERNEL_SPHERE,
               "kernel enums differ");

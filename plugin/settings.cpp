@@ -114,6 +114,9 @@ ssao_status resolve_march(ssao_settings& r, const PresetRow& defaults, std::stri
                     "step_count " + std::to_string(r.step_count) + " is outside 1..32");
     if (r.thickness == 0.0f)
         r.thickness = std::max(default_thickness(r.radius, r.step_count), std::numeric_limits<float>::min());
+    if (!finite(r.max_step_texels) || r.max_step_texels < 0.0f || r.max_step_texels > kMaxStepTexelsLimit)
+        return fail(why, SSAO_ERROR_INVALID_VALUE, "max_step_texels must be finite and in [0, 1e6] (0 = default 4)");
+    if (r.max_step_texels == 0.0f) r.max_step_texels = kDefaultMaxStepTexels;
 
     if (!raw_enum_at_most(r.resolution, SSAO_RESOLUTION_QUARTER))
         return fail(why, SSAO_ERROR_INVALID_ENUM, "resolution is not an ssao_resolution");
@@ -145,8 +148,9 @@ ssao_status resolve_settings(const ssao_settings& caller, ssao_settings& out, st
     if (!is_known_size<ssao_settings>(caller.size))
         return fail(why, SSAO_ERROR_STRUCT_SIZE,
                     "ssao_settings.size is " + std::to_string(caller.size) + ", expected " +
-                        std::to_string(sizeof(ssao_settings)) + " (or " + std::to_string(SSAO_SETTINGS_SIZE_1_1) +
-                        " for interface 1.1, " + std::to_string(SSAO_SETTINGS_SIZE_1_0) + " for 1.0)");
+                        std::to_string(sizeof(ssao_settings)) + " (or " + std::to_string(SSAO_SETTINGS_SIZE_1_2) +
+                        " for interfaces 1.2 and 1.3, " + std::to_string(SSAO_SETTINGS_SIZE_1_1) + " for 1.1, " +
+                        std::to_string(SSAO_SETTINGS_SIZE_1_0) + " for 1.0)");
     ssao_settings r = read_prefix(caller);
 
     // The method first: the defaults of the fields a preset sets depend on it.

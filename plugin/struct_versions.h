@@ -38,12 +38,13 @@ struct KnownSizes<ssao_timings> {
 };
 
 // ssao_settings: 1.0 ended at output_format; 1.1 appended method .. resolution;
-// 1.2 fade_start .. debug_view.
+// 1.2 fade_start .. debug_view (1.3 added none); 1.4 max_step_texels.
 static_assert(offsetof(ssao_settings, method) == SSAO_SETTINGS_SIZE_1_0, "ssao_settings 1.0 prefix moved");
 static_assert(offsetof(ssao_settings, fade_start) == SSAO_SETTINGS_SIZE_1_1, "ssao_settings 1.1 prefix moved");
+static_assert(offsetof(ssao_settings, max_step_texels) == SSAO_SETTINGS_SIZE_1_2, "ssao_settings 1.2 prefix moved");
 template <>
 struct KnownSizes<ssao_settings> {
-    static constexpr uint32_t sizes[] = {SSAO_SETTINGS_SIZE_1_0, SSAO_SETTINGS_SIZE_1_1,
+    static constexpr uint32_t sizes[] = {SSAO_SETTINGS_SIZE_1_0, SSAO_SETTINGS_SIZE_1_1, SSAO_SETTINGS_SIZE_1_2,
                                          static_cast<uint32_t>(sizeof(ssao_settings))};
 };
 

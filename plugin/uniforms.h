@@ -50,7 +50,7 @@ SSAO_AT(SsaoFrame, fade_end, 296);
 SSAO_AT(SsaoFrame, radius_pixels, 300);
 SSAO_AT(SsaoFrame, frame_rotation, 304);
 SSAO_AT(SsaoFrame, frame_step_offset, 312);
-SSAO_AT(SsaoFrame, pad0, 316);
+SSAO_AT(SsaoFrame, max_step_texels, 316);
 SSAO_AT(SsaoFrame, view_mul_z, 320);
 SSAO_AT(SsaoFrame, view_mul_1, 336);
 SSAO_AT(SsaoFrame, view_add_z, 352);

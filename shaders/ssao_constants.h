@@ -9,6 +9,7 @@
 #define SSAO_MAX_KERNEL 64          /* = SSAO_MAX_SAMPLES of the ABI */
 #define SSAO_NOISE_SIZE 4           /* the noise texture is 4x4 */
 #define SSAO_BLUR_MAX_TAPS 16       /* = SSAO_MAX_BLUR_RADIUS of the ABI */
+#define SSAO_MARCH_MAX_STEPS 32     /* = SSAO_MAX_STEPS of the ABI */
 /* The depth tests against a tangent plane (the blur's, the upsample's) accept
  * this share of the blur's relative depth tolerance (ao_texture.glsl). */
 #define SSAO_PLANE_TOLERANCE 0.2
@@ -103,7 +104,7 @@ SSAO_BLOCK(SsaoFrame) {
     SSAO_FLOAT radius_pixels;    /* 300: variant RADIUS_PIXELS: the radius in viewport pixels */
     SSAO_VEC2 frame_rotation;    /* 304: variant FRAME_NOISE: cos, sin of the frame's rotation offset */
     SSAO_FLOAT frame_step_offset;/* 312: variant FRAME_NOISE: the frame's step-jitter offset in [0,1) */
-    SSAO_FLOAT pad0;             /* 316 */
+    SSAO_FLOAT max_step_texels;  /* 316: visibility: the longest step on screen, sampling-grid texels */
     /* View xy from view z (plugin/projection.h ViewFromZ):
      * xy = (mul_z px + add_z) z + (mul_1 px + add_1) for viewport pixel coordinates px. */
     SSAO_VEC4 view_mul_z;        /* 320: mat2 mul_z, column-major */

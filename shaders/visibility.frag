@@ -1,7 +1,8 @@
 // The visibility pass: the cosine-weighted open fraction of the hemisphere
 // within the radius, as far as one depth layer can show it. Each of
 // consts.sample_count directions (cosine-distributed, in the kernel block) is marched
-// from P to the radius in consts.step_count steps, offset per pixel; a step is
+// from P to the radius in consts.step_count steps or more (direction_steps),
+// offset per pixel; a step is
 // blocked when the depth layer (read through the texel's tangent plane) lies
 // in front of it by at least the bias and at most the thickness (a thin object does not shadow what lies far behind
 // it), and a direction is blocked by its first blocked step. Sky, off-screen
@@ -133,6 +134,22 @@ bool step_surface(vec3 s, float sn, vec2 spf, ivec2 spx, Surface sf, StepSetup s
     return z != SKY_Z;
 }
 
+// Steps along one direction: consts.step_count, or more where the march spans
+// more than that many consts.max_step_texels on screen: as many as keep each
+// step within it, up to SSAO_MARCH_MAX_STEPS. Steps many texels apart pass over
+// thin occluders (a crease's rim, an edge seen close up) that a continuous
+// march meets, which left close-ups and large radii too light. The span is
+// the projected segment from P to the radius, at most the viewport's
+// diagonal (also where the segment's end lies behind the eye), so that a
+// huge max_step_texels keeps step_count.
+int direction_steps(StepSetup st, vec4 clip_p, vec4 clip_dir, float radius) {
+    vec4 clip_end = clip_p + clip_dir * radius;
+    float diagonal = length(st.g.size);
+    float span = clip_end.w > 0.0 ? min(length(clip_end.xy / clip_end.w - clip_p.xy / clip_p.w), diagonal) : diagonal;
+    float wanted = ceil(span * st.g.inv_scale / consts.max_step_texels);
+    return int(clamp(wanted, float(consts.step_count), float(SSAO_MARCH_MAX_STEPS)));
+}
+
 void main() {
     Surface sf;
     if (!load_surface(sf)) { o_ao = result(1.0, SKY_Z); return; }
@@ -142,8 +159,6 @@ void main() {
 
     float radius = sf.radius;  // the step length scales with the per-pixel radius (RADIUS_PIXELS)
     float thickness = consts.thickness * sf.radius_scale;
-    int steps = consts.step_count;
-    float step_length = radius / float(steps);
     float jitter = step_jitter(sf.vpx);
     int count = consts.sample_count;
     float open = 0.0;
@@ -159,6 +174,8 @@ void main() {
         vec3 dir = sf.TBN * kernel.vectors[i].xyz;
         vec4 clip_dir = step_clip(st, proj * vec4(dir, 0.0));
         float dn = dot(dir, sf.n);
+        int steps = direction_steps(st, clip_p, clip_dir, radius);
+        float step_length = radius / float(steps);
         bool blocked = false;
         vec2 prev_spf = clip_p.xy / clip_p.w;  // the previous point: P, then each step
         float prev_z = sf.P.z;

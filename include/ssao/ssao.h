@@ -142,7 +142,7 @@ extern "C" {
  * own minor; the table's `version` field says which one it got. */
 #define SSAO_MAKE_VERSION(major, minor) ((uint32_t)(((major) << 16) | (minor)))
 /** The interface this header declares: pass it to ssao_get_api. */
-#define SSAO_API_VERSION SSAO_MAKE_VERSION(1, 3)
+#define SSAO_API_VERSION SSAO_MAKE_VERSION(1, 4)
 /** The major part of an interface version. */
 #define SSAO_VERSION_MAJOR(v) ((uint32_t)(v) >> 16)
 /** The minor part of an interface version. */
@@ -259,7 +259,8 @@ typedef enum ssao_method {
                                      the depth buffer (a volume estimate, range-checked); uses
                                      kernel_shape and distribution */
     SSAO_METHOD_VISIBILITY = 2,   /**< ray-marched visibility: sample_count cosine-weighted directions,
-                                     each marched to radius in step_count jittered steps; a step is
+                                     each marched to radius in step_count jittered steps (more where
+                                     a step would exceed max_step_texels on screen); a step is
                                      blocked when it lies behind the depth buffer by less than
                                      thickness, or further behind a surface that the segment from the
                                      previous step crossed. Converges to the cosine-weighted open fraction of the
@@ -373,11 +374,21 @@ typedef struct ssao_settings {
                                     most `radius` view units, (0, 16384]; 0 = off (default): radius is
                                     view units. thickness and bias scale with the per-pixel radius */
     ssao_debug_view debug_view;  /**< what to write instead of the AO; default none */
+    /* ---- appended in interface 1.4 (older structs read it as zero = default) */
+    float max_step_texels;       /**< visibility: the longest a march step may be on screen, in texels of
+                                    the sampling grid (viewport pixels at full resolution, 2x2 blocks
+                                    at half). A direction whose march spans more than step_count such
+                                    steps takes as many as keep each within it, up to SSAO_MAX_STEPS,
+                                    so that a radius covering many pixels (close-ups, large radii)
+                                    does not step over thin occluders; the cost then grows with the
+                                    radius on screen, at most SSAO_MAX_STEPS / step_count times.
+                                    (0, 1e6]; default 4; 1e6 keeps step_count fixed */
 } ssao_settings;
 
-/** sizeof(ssao_settings) as interfaces 1.0 and 1.1 defined it; the library accepts them. */
+/** sizeof(ssao_settings) as interfaces 1.0 to 1.3 defined it; the library accepts them. */
 #define SSAO_SETTINGS_SIZE_1_0 64u  /**< interface 1.0's ssao_settings */
 #define SSAO_SETTINGS_SIZE_1_1 80u  /**< interface 1.1's ssao_settings */
+#define SSAO_SETTINGS_SIZE_1_2 96u  /**< interfaces 1.2 and 1.3's ssao_settings */
 
 /** Named quality presets, picked from the front of error against GPU time
  * that ssao-bench measures, by the rule stated in the README ("Presets").

@@ -87,13 +87,14 @@ def SSAO_MAKE_VERSION(major, minor):
     return ((major << 16) | minor) & 0xFFFFFFFF
 
 
-SSAO_API_VERSION = SSAO_MAKE_VERSION(1, 3)
+SSAO_API_VERSION = SSAO_MAKE_VERSION(1, 4)
 SSAO_MAX_SAMPLES = 64
 SSAO_MAX_BLUR_RADIUS = 16
 SSAO_MAX_STEPS = 32
 SSAO_MAX_PASSES = 8
 SSAO_SETTINGS_SIZE_1_0 = 64
 SSAO_SETTINGS_SIZE_1_1 = 80
+SSAO_SETTINGS_SIZE_1_2 = 96
 SSAO_INPUTS_SIZE_1_1 = 172
 SSAO_MAX_DIMENSION = 16384
 SSAO_TEXTURE_UNITS_USED = 4
@@ -304,6 +305,8 @@ class ssao_settings(_Sized):
         ("fade_end", ctypes.c_float),
         ("radius_pixels", ctypes.c_float),
         ("debug_view", _enum),
+        # 1.4
+        ("max_step_texels", ctypes.c_float),
     ]
 
 

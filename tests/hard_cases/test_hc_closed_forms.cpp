@@ -90,12 +90,12 @@ struct Measured {
 };
 
 // Floor y = 0 and a second plane through the line z = -6, y = 0 at interior
-// angle alpha from the floor (90 degrees = the wall).
-Scene wedge_world(double alpha_deg) {
+// angle alpha from the floor (90 degrees = the wall) and `height` high.
+Scene wedge_world(double alpha_deg, double height = 60.0) {
     const double a = alpha_deg * kPi / 180.0;
     Scene s;
     s.add_quad({-50, 0, 50}, {100, 0, 0}, {0, 0, -56});
-    s.add_quad({-50, 0, -6}, {100, 0, 0}, glm::dvec3(0, std::sin(a), std::cos(a)) * 60.0);
+    s.add_quad({-50, 0, -6}, {100, 0, 0}, glm::dvec3(0, std::sin(a), std::cos(a)) * height);
     return s;
 }
 
@@ -129,7 +129,7 @@ Reference kernel_limit(double R, double bias) {
     };
 }
 
-std::vector<Measured> measure(testgl::Fixture& fx, double alpha_deg, std::vector<Bin> bins,
+std::vector<Measured> measure(testgl::Fixture& fx, const Scene& world, std::vector<Bin> bins,
                               const std::function<double(double)>& closed_form, const ssao_settings& base,
                               const Reference& reference, double camera_distance = 2.5) {
     const int W = 128, H = 96;
@@ -140,7 +140,7 @@ std::vector<Measured> measure(testgl::Fixture& fx, double alpha_deg, std::vector
     rot[1][1] = std::cos(pitch); rot[1][2] = std::sin(pitch); rot[2][1] = -std::sin(pitch); rot[2][2] = std::cos(pitch);
     tr[3] = glm::dvec4(0.0, -camera_distance, 6.0 - camera_distance, 1.0);
     const glm::dmat4 view = rot * tr;
-    const Scene view_scene = hc::to_view(wedge_world(alpha_deg), view);
+    const Scene view_scene = hc::to_view(world, view);
     const auto proj = analytic::reverse_z(hc::kFov, double(W) / H, 0.1, 200.0);
     const GBuffer g = analytic::render(view_scene, proj, SSAO_CLIP_ZERO_TO_ONE, W, H);
     const glm::dmat4 inv_view = glm::inverse(view);
@@ -253,7 +253,7 @@ TEST_CASE("closed forms: the visibility estimator converges to V_R on the wall a
         const Reference exact = [R](const Scene& scene, const glm::dvec3& P, const glm::dvec3& n, size_t i) {
             return exact_visibility(scene, P, n, R, 4000, 7000 + i);
         };
-        const auto m = measure(fx, alpha, bins, [R](double d) { return wall_closed_form(d, R); },
+        const auto m = measure(fx, wedge_world(alpha), bins, [R](double d) { return wall_closed_form(d, R); },
                                visibility_settings(R), exact, 4.0);
         double worst = 0.0;
         for (size_t b = 0; b < m.size(); ++b) {
@@ -273,7 +273,7 @@ TEST_CASE("closed forms: the visibility estimator converges to V_R on the wall a
         // The kernel estimator, in the same bins, misses V_R by far more
         // than 0.01 (its bias, measured in the cases below): this test's
         // tolerance separates the two.
-        const auto k = measure(fx, alpha, bins, [R](double d) { return wall_closed_form(d, R); },
+        const auto k = measure(fx, wedge_world(alpha), bins, [R](double d) { return wall_closed_form(d, R); },
                                kernel_settings(R), exact, 4.0);
         double kernel_worst = 0.0;
         for (const Measured& km : k) kernel_worst = std::max(kernel_worst, std::abs(km.gpu - km.limit));
@@ -290,7 +290,7 @@ TEST_CASE("closed forms: the wall - the GPU lands on the estimator's converged l
     std::vector<Bin> bins;
     for (double c : {0.05, 0.2, 0.4, 0.6, 0.8, 0.95}) bins.push_back({c * R - 0.04 * R, c * R + 0.04 * R, {}});
     auto wall = [R](double d) { return wall_closed_form(d, R); };
-    const auto m = measure(fx, 90.0, bins, wall, settings_for(method, R), limit_for(method, R), camera_for(method));
+    const auto m = measure(fx, wedge_world(90.0), bins, wall, settings_for(method, R), limit_for(method, R), camera_for(method));
     for (size_t b = 0; b < m.size(); ++b) {
         CAPTURE(b);
         const double d = 0.5 * (bins[b].lo + bins[b].hi) / R;
@@ -314,7 +314,7 @@ TEST_CASE("closed forms: the wedge - the GPU lands on the estimator's converged 
         std::vector<Bin> bins;
         for (double c : {0.05, 0.15, 0.3}) bins.push_back({c * R - 0.04 * R, c * R + 0.04 * R, {}});
         const double v_inf = (1.0 - std::cos(alpha * kPi / 180.0)) / 2.0;
-        const auto m = measure(fx, alpha, bins, [v_inf](double) { return v_inf; }, settings_for(method, R),
+        const auto m = measure(fx, wedge_world(alpha), bins, [v_inf](double) { return v_inf; }, settings_for(method, R),
                                limit_for(method, R), camera_for(method));
         for (size_t b = 0; b < m.size(); ++b) {
             CAPTURE(b);
@@ -341,13 +341,14 @@ TEST_CASE("closed forms: a coarse march blocks where its segment crosses the wal
     const double R = 1.5, last = 3.5 / 4.0 * R;
     ssao_settings s = hc::make(64, SSAO_BLUR_NONE, SSAO_ROTATION_NONE, static_cast<float>(R), SSAO_METHOD_VISIBILITY);
     s.step_count = 4;
+    s.max_step_texels = 1e6f;  // four steps, however many texels the radius spans
     s.thickness = static_cast<float>(0.1 * R);
     std::vector<Bin> bins;
     for (double c : {0.05, 0.2, 0.4, 0.6}) bins.push_back({c * R - 0.04 * R, c * R + 0.04 * R, {}});
     const Reference within_last = [last](const Scene& scene, const glm::dvec3& P, const glm::dvec3& n, size_t i) {
         return exact_visibility(scene, P, n, last, 4000, 7000 + i);
     };
-    const auto m = measure(fx, 90.0, bins, [last](double d) { return wall_closed_form(d, last); }, s, within_last,
+    const auto m = measure(fx, wedge_world(90.0), bins, [last](double d) { return wall_closed_form(d, last); }, s, within_last,
                            camera_for(SSAO_METHOD_VISIBILITY));
     for (size_t b = 0; b < m.size(); ++b) {
         CAPTURE(b);
@@ -356,6 +357,48 @@ TEST_CASE("closed forms: a coarse march blocks where its segment crosses the wal
                                                       << m[b].gpu_se << ", V within the last step " << m[b].limit
                                                       << "; GPU - V " << m[b].gpu - m[b].limit);
         CHECK(std::abs(m[b].gpu - m[b].limit) <= 4 * m[b].gpu_se + 0.01);
+    }
+    CHECK(fx.gl_errors().empty());
+}
+
+TEST_CASE("closed forms: a low wall that four steps pass over blocks once a step may span only a few texels") {
+    // A wall R/10 high: a floor point's direction toward it is blocked where
+    // it meets the wall below its top, and the march only sees that from a
+    // step that lands inside the wall's shadow from the camera, at most R/10
+    // behind it (the camera looks 45 degrees down). Four steps R/4 apart
+    // mostly land beyond it, where the camera sees the floor under the step,
+    // and call the direction open. With max_step_texels a step spans at most
+    // that many pixels: the ~22 px that R spans here give ~22 steps R/22
+    // apart, which land in the shadow. Where the depth buffer sees every
+    // occluder the converged march is V_R (exact ray casts, as above).
+    testgl::Fixture fx;
+    const double R = 1.5, height = 0.1 * R;
+    std::vector<Bin> bins;
+    for (double c : {0.1, 0.25, 0.4}) bins.push_back({c * R - 0.04 * R, c * R + 0.04 * R, {}});
+    const Reference exact = [R](const Scene& scene, const glm::dvec3& P, const glm::dvec3& n, size_t i) {
+        return exact_visibility(scene, P, n, R, 4000, 7000 + i);
+    };
+    auto run = [&](float max_step_texels) {
+        ssao_settings s = hc::make(64, SSAO_BLUR_NONE, SSAO_ROTATION_HASH, static_cast<float>(R), SSAO_METHOD_VISIBILITY);
+        s.step_count = 4;
+        s.thickness = static_cast<float>(0.5 * R);
+        s.max_step_texels = max_step_texels;
+        return measure(fx, wedge_world(90.0, height), bins, [](double) { return 0.0; }, s, exact,
+                       camera_for(SSAO_METHOD_VISIBILITY));
+    };
+    const auto fixed = run(1e6f), adaptive = run(1.0f), by_default = run(0.0f);
+    for (size_t b = 0; b < bins.size(); ++b) {
+        CAPTURE(b);
+        const double d = 0.5 * (bins[b].lo + bins[b].hi) / R;
+        MESSAGE("low wall R/10, d/R " << d << " (" << fixed[b].pixels << " px): V_R " << fixed[b].limit
+                                      << "; GPU - V_R: 4 steps fixed " << fixed[b].gpu - fixed[b].limit
+                                      << ", max_step_texels 1 " << adaptive[b].gpu - adaptive[b].limit
+                                      << ", default (4) " << by_default[b].gpu - by_default[b].limit);
+        CHECK(std::abs(adaptive[b].gpu - adaptive[b].limit) <= 4 * adaptive[b].gpu_se + 0.01);
+        // Four fixed steps under-occlude (measured: by 0.116, 0.027 and
+        // 0.012 from the nearest bin out); the default lies between.
+        CHECK(fixed[b].gpu - fixed[b].limit > 3 * std::abs(adaptive[b].gpu - adaptive[b].limit) + 0.005);
+        CHECK(by_default[b].gpu - by_default[b].limit < fixed[b].gpu - fixed[b].limit);
     }
     CHECK(fx.gl_errors().empty());
 }

@@ -30,7 +30,7 @@ def main():
     import ssao
 
     lib = ssao.Library(plugin)
-    check(lib.version == (ssao.SSAO_API_VERSION >> 16, ssao.SSAO_API_VERSION & 0xFFFF) == (1, 3), "interface version 1.3 (got %s)" % (lib.version,))
+    check(lib.version == (ssao.SSAO_API_VERSION >> 16, ssao.SSAO_API_VERSION & 0xFFFF) == (1, 4), "interface version 1.4 (got %s)" % (lib.version,))
     check(lib.status_string(ssao.SSAO_OK) != "" and lib.status_string(12345) != "",
           "status_string answers every status: %r" % lib.status_string(ssao.SSAO_ERROR_INVALID_VALUE))
 

@@ -123,13 +123,29 @@ float ao(const Input& in, const ssao_settings& s, int x, int y) {
             }
             return std::nullopt;
         };
+        // Steps along a direction: step_count, or as many as keep each
+        // within max_step_texels of the grid on screen, up to SSAO_MAX_STEPS;
+        // the span is at most the viewport's diagonal (also where the end
+        // lies behind the eye).
+        const double grid_scale = s.resolution == SSAO_RESOLUTION_QUARTER ? 4.0 : s.resolution == SSAO_RESOLUTION_HALF ? 2.0 : 1.0;
+        const double diagonal = std::hypot(double(g.width), double(g.height));
+        auto pixel_of = [&](const glm::dvec4& c) {
+            return glm::dvec2((c.x / c.w * 0.5 + 0.5) * g.width, (c.y / c.w * 0.5 + 0.5) * g.height);
+        };
+        auto steps_along = [&](const glm::dvec3& dir) {
+            const glm::dvec4 c0 = p.proj * glm::dvec4(P, 1.0), c1 = p.proj * glm::dvec4(P + dir * radius, 1.0);
+            const double span = c1.w > 0.0 ? std::min(glm::length(pixel_of(c1) - pixel_of(c0)), diagonal) : diagonal;
+            const double wanted = std::ceil(span / grid_scale / s.max_step_texels);
+            return static_cast<uint32_t>(std::clamp(wanted, double(s.step_count), double(SSAO_MAX_STEPS)));
+        };
         double open = 0.0;
         for (const glm::vec3& k : dirs) {
             const glm::dvec3 dir = T * double(k.x) + B * double(k.y) + n * double(k.z);
+            const uint32_t steps = steps_along(dir);
             bool blocked = false;
             glm::dvec3 prev = P;
-            for (uint32_t j = 0; j < s.step_count && !blocked; ++j) {
-                const glm::dvec3 sp = P + dir * (radius * (j + jitter) / s.step_count);
+            for (uint32_t j = 0; j < steps && !blocked; ++j) {
+                const glm::dvec3 sp = P + dir * (radius * (j + jitter) / steps);
                 const glm::dvec3 before = prev;
                 prev = sp;
                 int sx = 0, sy = 0;

@@ -71,7 +71,7 @@ int unit_c_use_types(void) {
     (void)t;
     (void)fi;
     return get_api(SSAO_API_VERSION, &api) == SSAO_OK && desc.settings->seed == 7u &&
-           SSAO_VERSION_MAJOR(SSAO_API_VERSION) == 1u && SSAO_VERSION_MINOR(SSAO_API_VERSION) == 3u &&
+           SSAO_VERSION_MAJOR(SSAO_API_VERSION) == 1u && SSAO_VERSION_MINOR(SSAO_API_VERSION) == 4u &&
            in.viewport[2] == 16384 && (int)SSAO_ERROR_INTERNAL == 15;
 }
 

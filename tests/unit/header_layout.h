@@ -42,7 +42,9 @@ typedef struct unit_layout {
     UNIT_FIELD(ssao_settings, blur) UNIT_FIELD(ssao_settings, blur_radius) UNIT_FIELD(ssao_settings, blur_sigma) \
     UNIT_FIELD(ssao_settings, blur_depth_tolerance) UNIT_FIELD(ssao_settings, output_format) \
     UNIT_FIELD(ssao_settings, method) UNIT_FIELD(ssao_settings, thickness) UNIT_FIELD(ssao_settings, step_count) \
-    UNIT_FIELD(ssao_settings, resolution) \
+    UNIT_FIELD(ssao_settings, resolution) UNIT_FIELD(ssao_settings, fade_start) UNIT_FIELD(ssao_settings, fade_end) \
+    UNIT_FIELD(ssao_settings, radius_pixels) UNIT_FIELD(ssao_settings, debug_view) \
+    UNIT_FIELD(ssao_settings, max_step_texels) \
     UNIT_FIELD(ssao_inputs, size) UNIT_FIELD(ssao_inputs, depth_texture) UNIT_FIELD(ssao_inputs, normal_texture) \
     UNIT_FIELD(ssao_inputs, normal_space) UNIT_FIELD(ssao_inputs, normal_packing) \
     UNIT_FIELD(ssao_inputs, projection) UNIT_FIELD(ssao_inputs, view_matrix) UNIT_FIELD(ssao_inputs, clip_range) \

@@ -54,7 +54,7 @@ TEST_CASE("abi: ssao_get_api rejects NULL and a too-small table and other versio
         CHECK(same_bytes(table, before));
     }
     const uint32_t refused[] = {SSAO_MAKE_VERSION(0, 0), SSAO_MAKE_VERSION(0, 9), SSAO_MAKE_VERSION(2, 0),
-                                SSAO_MAKE_VERSION(2, 5), SSAO_MAKE_VERSION(1, 4), SSAO_MAKE_VERSION(1, 0xffff),
+                                SSAO_MAKE_VERSION(2, 5), SSAO_MAKE_VERSION(1, 5), SSAO_MAKE_VERSION(1, 0xffff),
                                 0xffffffffu};
     for (uint32_t version : refused) {
         CAPTURE(version);
@@ -63,12 +63,13 @@ TEST_CASE("abi: ssao_get_api rejects NULL and a too-small table and other versio
         CHECK(get_api(version, &table) == SSAO_ERROR_VERSION_MISMATCH);
         CHECK(same_bytes(table, before));
     }
-    // 1.0 to 1.3 hosts are all served by this 1.3 library.
-    for (uint32_t version : {SSAO_MAKE_VERSION(1, 3), SSAO_MAKE_VERSION(1, 2), SSAO_MAKE_VERSION(1, 1), SSAO_MAKE_VERSION(1, 0)}) {
+    // 1.0 to 1.4 hosts are all served by this 1.4 library.
+    for (uint32_t version : {SSAO_MAKE_VERSION(1, 4), SSAO_MAKE_VERSION(1, 3), SSAO_MAKE_VERSION(1, 2),
+                             SSAO_MAKE_VERSION(1, 1), SSAO_MAKE_VERSION(1, 0)}) {
         CAPTURE(version);
         ssao_api t = sentinel<ssao_api>();
         REQUIRE(get_api(version, &t) == SSAO_OK);
-        CHECK(t.version == SSAO_MAKE_VERSION(1, 3));
+        CHECK(t.version == SSAO_MAKE_VERSION(1, 4));
     }
     ssao_api table = sentinel<ssao_api>();
     REQUIRE(get_api(SSAO_MAKE_VERSION(1, 0), &table) == SSAO_OK);
@@ -110,7 +111,7 @@ TEST_CASE("abi: resolve_settings and preset_settings check pointers and sizes") 
     CHECK(a.resolve_settings(nullptr, nullptr) == SSAO_ERROR_NULL_POINTER);
     CHECK(a.preset_settings(SSAO_PRESET_HIGH, nullptr) == SSAO_ERROR_NULL_POINTER);
 
-    for (uint32_t size : {0u, static_cast<uint32_t>(sizeof(ssao_settings) - 4), static_cast<uint32_t>(sizeof(ssao_settings) + 4)}) {
+    for (uint32_t size : {0u, static_cast<uint32_t>(sizeof(ssao_settings) - 2), static_cast<uint32_t>(sizeof(ssao_settings) + 4)}) {
         CAPTURE(size);
         // Wrong size of the input...
         ssao_settings bad_in = sized<ssao_settings>();
@@ -192,11 +193,57 @@ TEST_CASE("abi: a 1.1-sized ssao_settings reads the 1.2 fields as off and is wri
     CHECK(full.fade_end == 0.0f);
     CHECK(full.radius_pixels == 0.0f);
     CHECK(full.debug_view == SSAO_DEBUG_VIEW_NONE);
+    CHECK(full.max_step_texels == 4.0f);  // 1.4's field: its default
     // Sizes between the versions are refused.
-    for (uint32_t size : {SSAO_SETTINGS_SIZE_1_1 - 4, SSAO_SETTINGS_SIZE_1_1 + 4, uint32_t(sizeof(ssao_settings)) + 4}) {
+    for (uint32_t size : {SSAO_SETTINGS_SIZE_1_1 - 4, SSAO_SETTINGS_SIZE_1_1 + 4, SSAO_SETTINGS_SIZE_1_2 - 4,
+                          uint32_t(sizeof(ssao_settings)) + 4}) {
         CAPTURE(size);
         in.s.size = size;
         CHECK(a.resolve_settings(&in.s, &full) == SSAO_ERROR_STRUCT_SIZE);
+    }
+}
+
+TEST_CASE("abi: a 1.2-sized ssao_settings keeps its fields, reads max_step_texels as the default, is written up to its size") {
+    const ssao_api& a = api();
+    struct Padded {
+        ssao_settings s;
+        unsigned char guard[64];
+    };
+    Padded in{}, out{};
+    std::memset(&out, 0xcd, sizeof out);
+    in.s.size = SSAO_SETTINGS_SIZE_1_2;
+    in.s.radius_pixels = 40.0f;
+    in.s.max_step_texels = 9.0f;  // beyond the 1.2 struct: must not be read
+    out.s.size = SSAO_SETTINGS_SIZE_1_2;
+    REQUIRE(a.resolve_settings(&in.s, &out.s) == SSAO_OK);
+    CHECK(out.s.size == SSAO_SETTINGS_SIZE_1_2);
+    CHECK(out.s.radius_pixels == 40.0f);
+    const unsigned char* tail = reinterpret_cast<const unsigned char*>(&out.s) + SSAO_SETTINGS_SIZE_1_2;
+    for (size_t i = 0; i < sizeof(ssao_settings) - SSAO_SETTINGS_SIZE_1_2; ++i) CHECK(tail[i] == 0xcd);
+    ssao_settings full = sized<ssao_settings>();
+    REQUIRE(a.resolve_settings(&in.s, &full) == SSAO_OK);
+    CHECK(full.max_step_texels == 4.0f);
+}
+
+TEST_CASE("abi: max_step_texels is validated and kept") {
+    const ssao_api& a = api();
+    auto resolved = [&](float texels, ssao_status& st) {
+        ssao_settings in = sized<ssao_settings>(), out = sized<ssao_settings>();
+        in.max_step_texels = texels;
+        st = a.resolve_settings(&in, &out);
+        return out.max_step_texels;
+    };
+    ssao_status st{};
+    CHECK(resolved(0.0f, st) == 4.0f);
+    CHECK(st == SSAO_OK);
+    CHECK(resolved(0.5f, st) == 0.5f);
+    CHECK(st == SSAO_OK);
+    CHECK(resolved(1e6f, st) == 1e6f);
+    CHECK(st == SSAO_OK);
+    for (float bad : {-1.0f, 2e6f, NAN, INFINITY}) {
+        CAPTURE(bad);
+        resolved(bad, st);
+        CHECK(st == SSAO_ERROR_INVALID_VALUE);
     }
 }
 

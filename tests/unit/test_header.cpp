@@ -25,7 +25,7 @@ static_assert(std::is_same<decltype(ssao_context_desc::log), ssao_log_fn>::value
 static_assert(std::is_standard_layout<ssao_settings>::value && std::is_trivially_copyable<ssao_settings>::value, "");
 static_assert(std::is_standard_layout<ssao_inputs>::value && std::is_trivially_copyable<ssao_inputs>::value, "");
 static_assert(std::is_standard_layout<ssao_api>::value && std::is_trivially_copyable<ssao_api>::value, "");
-static_assert(SSAO_API_VERSION == 0x00010003u, "");  // 1.3: the gradient-noise rotation
+static_assert(SSAO_API_VERSION == 0x00010004u, "");  // 1.4: max_step_texels
 static_assert(SSAO_MAKE_VERSION(3, 7) == 0x00030007u, "");
 static_assert(SSAO_VERSION_MAJOR(SSAO_MAKE_VERSION(3, 7)) == 3u && SSAO_VERSION_MINOR(SSAO_MAKE_VERSION(3, 7)) == 7u, "");
 

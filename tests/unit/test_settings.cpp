@@ -91,6 +91,7 @@ TEST_CASE("settings: a zeroed struct resolves to the documented defaults: the DE
     CHECK(r.output_format == SSAO_OUTPUT_R8);
     CHECK(r.resolution == def.resolution);
     CHECK(r.resolution != SSAO_RESOLUTION_DEFAULT);  // resolved, never the zero that means default
+    CHECK(r.max_step_texels == 4.0f);
 }
 
 TEST_CASE("settings: resolution keeps each named value and maps it to its grid scale") {
@@ -159,6 +160,7 @@ TEST_CASE("settings: derived defaults follow the fields they derive from") {
     in.thickness = 3.0f;
     in.step_count = SSAO_MAX_STEPS;
     in.resolution = SSAO_RESOLUTION_QUARTER;
+    in.max_step_texels = 1e6f;
     CHECK(same(resolve_ok(in), in));
 
     // The smallest accepted values.
@@ -230,6 +232,7 @@ TEST_CASE("settings: resolve is idempotent") {
         in.blur_sigma = real(1e-3f, 64.0f);
         in.blur_depth_tolerance = real(1e-3f, 1.0f);
         set_raw(in.output_format, pick(0, 2));
+        in.max_step_texels = real(0.25f, 1e6f);
         CAPTURE(trial);
         const ssao_settings once = resolve_ok(in);
         const ssao_settings twice = resolve_ok(once);
@@ -250,6 +253,7 @@ TEST_CASE("settings: resolve is idempotent") {
         CHECK(once.blur_sigma > 0.0f);
         CHECK(once.blur_depth_tolerance > 0.0f);
         CHECK(once.output_format != SSAO_OUTPUT_DEFAULT);
+        CHECK(once.max_step_texels > 0.0f);
     }
     const ssao_settings z = resolve_ok(zeroed());
     CHECK(same(resolve_ok(z), z));
@@ -311,12 +315,16 @@ TEST_CASE("settings: every invalid field gives its documented status and leaves 
         {"thickness inf", [](ssao_settings& s) { s.thickness = kInf; }, SSAO_ERROR_INVALID_VALUE},
         {"step_count 33", [](ssao_settings& s) { s.step_count = 33; }, SSAO_ERROR_INVALID_VALUE},
         {"step_count max", [](ssao_settings& s) { s.step_count = 0xffffffffu; }, SSAO_ERROR_INVALID_VALUE},
+        {"max_step_texels -1", [](ssao_settings& s) { s.max_step_texels = -1.0f; }, SSAO_ERROR_INVALID_VALUE},
+        {"max_step_texels 1e7", [](ssao_settings& s) { s.max_step_texels = 1e7f; }, SSAO_ERROR_INVALID_VALUE},
+        {"max_step_texels NaN", [](ssao_settings& s) { s.max_step_texels = kNaN; }, SSAO_ERROR_INVALID_VALUE},
+        {"max_step_texels inf", [](ssao_settings& s) { s.max_step_texels = kInf; }, SSAO_ERROR_INVALID_VALUE},
         {"resolution 4", [](ssao_settings& s) { set_raw(s.resolution, 4); }, SSAO_ERROR_INVALID_ENUM},
         {"resolution -1", [](ssao_settings& s) { set_raw(s.resolution, -1); }, SSAO_ERROR_INVALID_ENUM},
         {"resolution max enum", [](ssao_settings& s) { set_raw(s.resolution, 0x7fffffff); },
          SSAO_ERROR_INVALID_ENUM},
         {"size 0", [](ssao_settings& s) { s.size = 0; }, SSAO_ERROR_STRUCT_SIZE},
-        {"size - 4", [](ssao_settings& s) { s.size = sizeof(ssao_settings) - 4; }, SSAO_ERROR_STRUCT_SIZE},
+        {"size - 2", [](ssao_settings& s) { s.size = sizeof(ssao_settings) - 2; }, SSAO_ERROR_STRUCT_SIZE},
         {"size + 4", [](ssao_settings& s) { s.size = sizeof(ssao_settings) + 4; }, SSAO_ERROR_STRUCT_SIZE},
     };
     for (const BadCase& c : cases) {
@@ -348,6 +356,11 @@ TEST_CASE("settings: the message of a rejected field names the field") {
     why.clear();
     REQUIRE(resolve_settings(in, out, why) == SSAO_ERROR_INVALID_ENUM);
     CHECK(why.find("blur") != std::string::npos);
+    in = zeroed();
+    in.max_step_texels = kNaN;
+    why.clear();
+    REQUIRE(resolve_settings(in, out, why) == SSAO_ERROR_INVALID_VALUE);
+    CHECK(why.find("max_step_texels") != std::string::npos);
 }
 
 TEST_CASE("settings: resolving in place works") {

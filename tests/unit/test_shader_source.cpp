@@ -188,7 +188,7 @@ TEST_CASE("shader source: the driver's log names the source string and the line 
         const char* file;
         const char* line;    // a line of that file...
         const char* broken;  // ...and what it becomes
-    } cases[] = {{"visibility.frag", "    int steps = consts.step_count;\n", "    int steps = consts.step_count; @\n"},
+    } cases[] = {{"visibility.frag", "        float step_length = radius / float(steps);\n", "        float step_length = radius / float(steps); @\n"},
                  {"common.glsl", "bool is_sky(float d) { return d == consts.sky_depth; }\n",
                   "bool is_sky(float d) { return d == consts.sky_depth; @ }\n"},
                  {"sampling.glsl", "    sf.radius = consts.radius;\n", "    sf.radius = consts.radius; @\n"},
@@ -274,7 +274,7 @@ TEST_CASE("shader source: every SsaoFrame and SsaoKernel member sits at the same
         MEMBER(SsaoFrame, strength), MEMBER(SsaoFrame, power), MEMBER(SsaoFrame, thickness),
         MEMBER(SsaoFrame, blur_sigma), MEMBER(SsaoFrame, blur_depth_tolerance), MEMBER(SsaoFrame, fade_start),
         MEMBER(SsaoFrame, fade_end), MEMBER(SsaoFrame, radius_pixels), MEMBER(SsaoFrame, frame_rotation),
-        MEMBER(SsaoFrame, frame_step_offset), MEMBER(SsaoFrame, pad0), MEMBER(SsaoFrame, view_mul_z),
+        MEMBER(SsaoFrame, frame_step_offset), MEMBER(SsaoFrame, max_step_texels), MEMBER(SsaoFrame, view_mul_z),
         MEMBER(SsaoFrame, view_mul_1), MEMBER(SsaoFrame, view_add_z), MEMBER(SsaoFrame, view_add_1),
         MEMBER(SsaoFrame, clip_w_z), MEMBER(SsaoFrame, clip_w_1), MEMBER(SsaoFrame, clip_z_z),
         MEMBER(SsaoFrame, clip_z_1), MEMBER(SsaoFrame, inv_det), MEMBER(SsaoFrame, pad1), MEMBER(SsaoFrame, pad2),
