@@ -153,8 +153,9 @@ void set_timing(Row& row, const Timed& t) {
     row.rounds = cpu.rounds;
 }
 
-// The settings a configuration runs with on a scene of radius `radius`.
-ssao_settings settings_for(const Config& c, const ssao_api& api, float radius) {
+// The settings a configuration runs with on a scene of radius `radius`
+// (max_step_texels: --max-step-texels, 0 = the plugin's default).
+ssao_settings settings_for(const Config& c, const ssao_api& api, float radius, float max_step_texels) {
     ssao_settings s = c.s;
     if (c.family == Family::preset) {
         s = ssao_settings{};
@@ -164,6 +165,7 @@ ssao_settings settings_for(const Config& c, const ssao_api& api, float radius) {
     s.radius = s.radius < 0 ? -s.radius * radius : radius;
     if (c.thickness_of_radius > 0) s.thickness = c.thickness_of_radius * s.radius;
     s.bias = 0;  // the method's default, relative to this radius
+    s.max_step_texels = max_step_texels;
     return s;
 }
 
@@ -205,8 +207,8 @@ ssao_inputs plugin_inputs(const gbuffer::GBuffer& gbuf, const glm::mat4& proj, b
 // The plugin's configuration c: its row (settings and errors from one frame)
 // and how to time it (the context, inputs and output must outlive the timing).
 Timed plugin_pass(GladGLContext& gl, const ssao_api& api, ssao_context* ctx, const ssao_inputs& in, ssao_output& out,
-                  const Config& c, const Case& k, const Truth* truth, std::vector<Row>& rows) {
-    const ssao_settings s = settings_for(c, api, k.radius);
+                  const Config& c, const Case& k, const Truth* truth, float max_step_texels, std::vector<Row>& rows) {
+    const ssao_settings s = settings_for(c, api, k.radius, max_step_texels);
     if (api.set_settings(ctx, &s) != SSAO_OK) throw std::runtime_error(c.name + ": " + api.last_error(ctx));
     if (api.execute(ctx, &in, &out) != SSAO_OK) throw std::runtime_error(api.last_error(ctx));
     gl.Finish();
@@ -272,7 +274,7 @@ void measure_case(GladGLContext& gl, const ssao_api& api, const Options& o, int 
 
     const size_t first = rows.size();
     std::vector<Timed> passes;
-    for (const Config& c : configs) passes.push_back(plugin_pass(gl, api, ctx, vs.in, out, c, k, truth, rows));
+    for (const Config& c : configs) passes.push_back(plugin_pass(gl, api, ctx, vs.in, out, c, k, truth, o.max_step_texels, rows));
     // The chapter's pass, same process, same G-buffer normals, same clocks.
     tb.run(vs.gbuf.normal_texture(), vs.proj);
     gl.Finish();
