@@ -154,7 +154,7 @@ void set_timing(Row& row, const Timed& t) {
 }
 
 // The settings a configuration runs with on a scene of radius `radius`
-// (max_step_texels: --max-step-texels, 0 = the plugin's default).
+// (max_step_texels: --max-step-texels, 0 = off).
 ssao_settings settings_for(const Config& c, const ssao_api& api, float radius, float max_step_texels) {
     ssao_settings s = c.s;
     if (c.family == Family::preset) {

@@ -37,8 +37,8 @@ std::string help_text() {
            "                         and view (1x radius), no ground truth, no limit, no errors; GPU-timer\n"
            "                         ratios beside the CPU ones (for a real GPU)\n"
            "  --plugin PATH          libssao.so to load (default: as ssao-host finds it)\n"
-           "  --max-step-texels X    every visibility configuration's max_step_texels, (0, 1e6] (default: the\n"
-           "                         plugin's; 1e6 keeps each configuration's step count fixed)\n"
+           "  --max-step-texels X    every visibility configuration's max_step_texels, (0, 1e6] (default: off,\n"
+           "                         each configuration's step count fixed)\n"
            "  --normals gbuffer|depth  the plugin's normals: the G-buffer's, or depth: normal_texture = 0, the\n"
            "                         plugin rebuilds them from depth (default gbuffer)\n"
            "  --allow-outside-files  let the scenes' buffer URIs name files outside their folders\n"
@@ -149,6 +149,7 @@ Parse parse(int argc, char** argv, Options& o, std::string& error) {
         {"--max-step-texels", [&](const std::string& f, const std::string& v) {
              const double x = flags::number(f, v);
              if (!(x > 0.0 && x <= 1e6)) flags::fail(f + " must be in (0, 1e6], got " + flags::quoted(v));
+             flags::check_normal_float(f, v, x);
              o.max_step_texels = static_cast<float>(x);
          }},
         {"--normals", [&](const std::string& f, const std::string& v) {

@@ -31,7 +31,7 @@ struct Options {
     std::string out = "bench-out";
     std::string plugin;                      // empty: plugin::Library::search_order()
     bool normals_from_depth = false;         // --normals depth: every configuration gets normal_texture = 0
-    float max_step_texels = 0.0f;            // --max-step-texels: every configuration's; 0 = the plugin's default
+    float max_step_texels = 0.0f;            // --max-step-texels: every configuration's; 0 = off
     bool allow_outside_files = false;        // scenes' buffer URIs may leave their folders (host/scene_limits.h)
     std::string lp_num_threads;              // LP_NUM_THREADS the run had (set by main unless the user set it)
 };

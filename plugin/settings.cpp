@@ -114,9 +114,11 @@ ssao_status resolve_march(ssao_settings& r, const PresetRow& defaults, std::stri
                     "step_count " + std::to_string(r.step_count) + " is outside 1..32");
     if (r.thickness == 0.0f)
         r.thickness = std::max(default_thickness(r.radius, r.step_count), std::numeric_limits<float>::min());
-    if (!finite(r.max_step_texels) || r.max_step_texels < 0.0f || r.max_step_texels > kMaxStepTexelsLimit)
-        return fail(why, SSAO_ERROR_INVALID_VALUE, "max_step_texels must be finite and in [0, 1e6] (0 = default 4)");
-    if (r.max_step_texels == 0.0f) r.max_step_texels = kDefaultMaxStepTexels;
+    // A denormal would reach the shader as 0 (flushed), which reads as off.
+    if (!finite(r.max_step_texels) || r.max_step_texels < 0.0f || r.max_step_texels > kMaxStepTexelsLimit ||
+        (r.max_step_texels != 0.0f && r.max_step_texels < std::numeric_limits<float>::min()))
+        return fail(why, SSAO_ERROR_INVALID_VALUE,
+                    "max_step_texels must be 0 (off) or in [1.2e-38, 1e6] (a normal float)");
 
     if (!raw_enum_at_most(r.resolution, SSAO_RESOLUTION_QUARTER))
         return fail(why, SSAO_ERROR_INVALID_ENUM, "resolution is not an ssao_resolution");

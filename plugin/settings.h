@@ -35,13 +35,10 @@ constexpr float kThicknessStepsOfRadius = 1.5f;
 inline float default_thickness(float radius, uint32_t step_count) {
     return radius * (kThicknessBaseOfRadius + kThicknessStepsOfRadius / static_cast<float>(step_count));
 }
-// The longest a march step may be on screen, in sampling-grid texels, when
-// max_step_texels is not set. Steps further apart than a few texels step over
-// thin occluders (a crease's rim, a table's edge seen close) that the limit's
-// continuous march meets: on ssao-bench's views at 0.5-2x radius, 4 gained
-// 0.2-0.6 dB per preset over a fixed count and halved the worst positive bias
-// in close-ups, 8 gained half as much (docs/benchmark.md, "Step length").
-constexpr float kDefaultMaxStepTexels = 4.0f;
+// max_step_texels is off unless set: a bound in texels adds steps with the
+// radius on screen and so with the resolution, which on ssao-bench's
+// standard views cost DEFAULT 13% for 0.01 dB (docs/benchmark.md, "Step
+// length").
 constexpr float kMaxStepTexelsLimit = 1e6f;
 constexpr float kMaxStrength = 8.0f;
 constexpr float kMaxPower = 16.0f;

@@ -6,8 +6,10 @@ and rewrites the blocks (scripts/doc_blocks.py) between <!-- bench:NAME --> and
 <!-- /bench:NAME --> markers: the preset table rows, the summary per scene,
 the targets (met or missed, as measured over every scene, view and radius),
 every case, the time-against-pixels table, the half/quarter-resolution
-ratios and, from thickness.csv (scripts/thickness-sweep.sh), the thickness
-table. Time is process CPU time (ssao-bench, LP_NUM_THREADS=1). Every number in those blocks comes from the run; nothing is
+ratios, from thickness.csv (scripts/thickness-sweep.sh) the thickness
+table and, from step_length/ (two ssao-bench --quick --sweep presets runs,
+fixed.csv without --max-step-texels and texels4.csv with 4, and a full run with
+4, full_texels4.csv, beside DIR's), the step-length tables. Time is process CPU time (ssao-bench, LP_NUM_THREADS=1). Every number in those blocks comes from the run; nothing is
 typed by hand.
 
 usage: scripts/bench_readme.py [DIR] [DOC...]   (default: README.md docs/*.md)
@@ -147,6 +149,9 @@ def main():
     blocks["resolution"] = resolution_table(standard, scenes)
     if os.path.exists(d + "/thickness.csv"):
         blocks["thickness"] = thickness_table(d + "/thickness.csv")
+    if os.path.exists(d + "/step_length/fixed.csv"):
+        blocks["step_length"] = step_length_table(d + "/step_length", rows)
+        blocks["step_length_summary"] = step_length_summary(d + "/step_length/full_texels4.csv", rows)
     if os.path.exists(d + "/gpu/bench.csv"):
         blocks["gpu"] = gpu_table(d + "/gpu")
     write_blocks(blocks, docs, "bench_readme")
@@ -262,6 +267,66 @@ def thickness_table(path):
         steps = int(rs[0]["steps"])
         best = ts[max(range(len(ts)), key=lambda i: means[i])]
         lines.append("| %s | %d | %s | %g R | %.3g R |" % (c, steps, " | ".join(f(m) for m in means), best, 0.5 + 1.5 / steps))
+    return "\n".join(lines)
+
+
+def step_length_table(d, main_rows):
+    """Each preset with max_step_texels off and 4, over every case: two quick runs (mean PSNR against V_R, the cases
+    within the issue's margin of the limit, mean and worst bias, CPU time over the textbook pass timed in the same
+    run), then the full run with 4 beside DIR's (off): PSNR, cases within the margin, x textbook at each size."""
+    def stats(rows, name, margin, w):
+        limit = {case_name(r): r["psnr"] for r in rows if r["kind"] == "limit" and r["width"] == w}
+        c = [r for r in rows if r["config"] == name and r["width"] == w and r["psnr"] == r["psnr"]]
+        within = sum(1 for r in c if limit[case_name(r)] - r["psnr"] <= margin)
+        return c, within
+
+    quick = [("off (fixed step count)", load(d + "/fixed.csv")), ("4", load(d + "/texels4.csv"))]
+    lines = ["Quick runs (`--quick --sweep presets`, 320x180):", "",
+             "| preset | max_step_texels | PSNR (mean) | within the limit's margin | bias: mean, worst | x textbook (median) |",
+             "|---|---|---:|---:|---:|---:|"]
+    for label, name, _ in PRESETS:
+        margin = 3.0 if label == "MEDIUM" else 1.0
+        for title, rows in quick:
+            c, within = stats(rows, name, margin, 320)
+            lines.append("| %s | %s | %s | %d of %d (%g dB) | %s, %s | %s |" % (
+                label, title, f(mean(r["psnr"] for r in c)), within, len(c), margin, signed(mean(r["bias"] for r in c)),
+                signed(max(r["bias"] for r in c), 3), f(median(r["x_textbook_cpu"] for r in c), 3)))
+    full = [("off (this page's run)", main_rows), ("4", load(d + "/full_texels4.csv"))]
+    widths = sorted({r["width"] for r in main_rows})
+    lines += ["", "Full runs (errors at 320x180; x textbook: CPU time, median over the cases at each size):", "",
+              "| preset | max_step_texels | PSNR (mean) | within the limit's margin | bias: worst | %s |" % " | ".join(
+                  "x textbook at %dx%d" % (w, [r["height"] for r in main_rows if r["width"] == w][0]) for w in widths),
+              "|---|---|---:|---:|---:|" + "---:|" * len(widths)]
+    for label, name, _ in PRESETS:
+        margin = 3.0 if label == "MEDIUM" else 1.0
+        for title, rows in full:
+            c, within = stats(rows, name, margin, 320)
+            times = [f(median(r["x_textbook_cpu"] for r in rows if r["config"] == name and r["width"] == w), 3)
+                     for w in widths]
+            lines.append("| %s | %s | %s | %d of %d (%g dB) | %s | %s |" % (
+                label, title, f(mean(r["psnr"] for r in c)), within, len(c), margin,
+                signed(max(r["bias"] for r in c), 3), " | ".join(times)))
+    return "\n".join(lines)
+
+
+def step_length_summary(path, main_rows):
+    """One line each for DEFAULT and ULTRA: mean PSNR, cases within the issue's margin, x textbook at the base and the
+    largest size, with max_step_texels off (DIR's run) and 4 (path)."""
+    with4 = load(path)
+    lines = []
+    for label, name, margin in (("DEFAULT", PRESETS[1][1], 3.0), ("ULTRA", PRESETS[3][1], 1.0)):
+        def at(rows):
+            w0, w1 = min(r["width"] for r in rows), max(r["width"] for r in rows)
+            limit = {case_name(r): r["psnr"] for r in rows if r["kind"] == "limit" and r["width"] == w0}
+            c = [r for r in rows if r["config"] == name and r["width"] == w0 and r["psnr"] == r["psnr"]]
+            big = [r["x_textbook_cpu"] for r in rows if r["config"] == name and r["width"] == w1]
+            h1 = [r["height"] for r in rows if r["width"] == w1][0]
+            return (mean(r["psnr"] for r in c), sum(1 for r in c if limit[case_name(r)] - r["psnr"] <= margin), len(c),
+                    median(r["x_textbook_cpu"] for r in c), median(big), "%dx%d" % (w1, h1))
+        a, b = at(main_rows), at(with4)
+        lines.append("- %s: %s -> %s dB; within %g dB of the limit in %d -> %d of %d cases; x textbook %s -> %s at the "
+                     "base size, %s -> %s at %s." % (label, f(a[0]), f(b[0]), margin, a[1], b[1], a[2], f(a[3], 3),
+                                                     f(b[3], 3), f(a[4], 3), f(b[4], 3), a[5]))
     return "\n".join(lines)
 
 

@@ -134,20 +134,23 @@ bool step_surface(vec3 s, float sn, vec2 spf, ivec2 spx, Surface sf, StepSetup s
     return z != SKY_Z;
 }
 
-// Steps along one direction: consts.step_count, or more where the march spans
-// more than that many consts.max_step_texels on screen: as many as keep each
-// step within it, up to SSAO_MARCH_MAX_STEPS. Steps many texels apart pass over
+// Steps along one direction: consts.step_count, or, where max_step_texels is
+// set (> 0), more where the march spans more than that many
+// consts.max_step_texels on screen: as many as keep each step within it, up
+// to SSAO_MARCH_MAX_STEPS. Steps many texels apart pass over
 // thin occluders (a crease's rim, an edge seen close up) that a continuous
 // march meets, which left close-ups and large radii too light. The span is
 // the projected segment from P to the radius, at most the viewport's
 // diagonal (also where the segment's end lies behind the eye), so that a
-// huge max_step_texels keeps step_count.
+// huge max_step_texels keeps step_count. Written so that a NaN keeps
+// step_count too (clamp and int() of a NaN are undefined).
 int direction_steps(StepSetup st, vec4 clip_p, vec4 clip_dir, float radius) {
+    if (!(consts.max_step_texels > 0.0)) return consts.step_count;  // off: a uniform branch
     vec4 clip_end = clip_p + clip_dir * radius;
     float diagonal = length(st.g.size);
     float span = clip_end.w > 0.0 ? min(length(clip_end.xy / clip_end.w - clip_p.xy / clip_p.w), diagonal) : diagonal;
     float wanted = ceil(span * st.g.inv_scale / consts.max_step_texels);
-    return int(clamp(wanted, float(consts.step_count), float(SSAO_MARCH_MAX_STEPS)));
+    return wanted > float(consts.step_count) ? int(min(wanted, float(SSAO_MARCH_MAX_STEPS))) : consts.step_count;
 }
 
 void main() {

@@ -260,7 +260,7 @@ typedef enum ssao_method {
                                      kernel_shape and distribution */
     SSAO_METHOD_VISIBILITY = 2,   /**< ray-marched visibility: sample_count cosine-weighted directions,
                                      each marched to radius in step_count jittered steps (more where
-                                     a step would exceed max_step_texels on screen); a step is
+                                     a step would exceed max_step_texels on screen, if set); a step is
                                      blocked when it lies behind the depth buffer by less than
                                      thickness, or further behind a surface that the segment from the
                                      previous step crossed. Converges to the cosine-weighted open fraction of the
@@ -374,15 +374,17 @@ typedef struct ssao_settings {
                                     most `radius` view units, (0, 16384]; 0 = off (default): radius is
                                     view units. thickness and bias scale with the per-pixel radius */
     ssao_debug_view debug_view;  /**< what to write instead of the AO; default none */
-    /* ---- appended in interface 1.4 (older structs read it as zero = default) */
-    float max_step_texels;       /**< visibility: the longest a march step may be on screen, in texels of
-                                    the sampling grid (viewport pixels at full resolution, 2x2 blocks
-                                    at half). A direction whose march spans more than step_count such
-                                    steps takes as many as keep each within it, up to SSAO_MAX_STEPS,
-                                    so that a radius covering many pixels (close-ups, large radii)
-                                    does not step over thin occluders; the cost then grows with the
-                                    radius on screen, at most SSAO_MAX_STEPS / step_count times.
-                                    (0, 1e6]; default 4; 1e6 keeps step_count fixed */
+    /* ---- appended in interface 1.4 (older structs read it as zero = off) */
+    float max_step_texels;       /**< visibility: > 0: the longest a march step may be on screen, in texels
+                                    of the sampling grid (viewport pixels at full resolution, 2x2
+                                    blocks at half). A direction whose march spans more than
+                                    step_count such steps takes as many as keep each within it, up to
+                                    SSAO_MAX_STEPS, so that a radius covering many pixels (close-ups,
+                                    large radii) does not step over thin occluders. The cost then grows
+                                    with the radius on screen, so with the resolution too, at most
+                                    SSAO_MAX_STEPS / step_count times (docs/benchmark.md, "Step
+                                    length": 4 gains most in close-ups). (0, 1e6], not a denormal;
+                                    0 = off (default): step_count steps */
 } ssao_settings;
 
 /** sizeof(ssao_settings) as interfaces 1.0 to 1.3 defined it; the library accepts them. */

@@ -341,7 +341,6 @@ TEST_CASE("closed forms: a coarse march blocks where its segment crosses the wal
     const double R = 1.5, last = 3.5 / 4.0 * R;
     ssao_settings s = hc::make(64, SSAO_BLUR_NONE, SSAO_ROTATION_NONE, static_cast<float>(R), SSAO_METHOD_VISIBILITY);
     s.step_count = 4;
-    s.max_step_texels = 1e6f;  // four steps, however many texels the radius spans
     s.thickness = static_cast<float>(0.1 * R);
     std::vector<Bin> bins;
     for (double c : {0.05, 0.2, 0.4, 0.6}) bins.push_back({c * R - 0.04 * R, c * R + 0.04 * R, {}});
@@ -367,10 +366,11 @@ TEST_CASE("closed forms: a low wall that four steps pass over blocks once a step
     // step that lands inside the wall's shadow from the camera, at most R/10
     // behind it (the camera looks 45 degrees down). Four steps R/4 apart
     // mostly land beyond it, where the camera sees the floor under the step,
-    // and call the direction open. With max_step_texels a step spans at most
-    // that many pixels: the ~22 px that R spans here give ~22 steps R/22
-    // apart, which land in the shadow. Where the depth buffer sees every
-    // occluder the converged march is V_R (exact ray casts, as above).
+    // and call the direction open (max_step_texels off, the default). With
+    // max_step_texels 1 a step spans at most one pixel: the ~22 px that R
+    // spans here give ~22 steps R/22 apart, which land in the shadow. Where
+    // the depth buffer sees every occluder the converged march is V_R (exact
+    // ray casts, as above).
     testgl::Fixture fx;
     const double R = 1.5, height = 0.1 * R;
     std::vector<Bin> bins;
@@ -386,19 +386,19 @@ TEST_CASE("closed forms: a low wall that four steps pass over blocks once a step
         return measure(fx, wedge_world(90.0, height), bins, [](double) { return 0.0; }, s, exact,
                        camera_for(SSAO_METHOD_VISIBILITY));
     };
-    const auto fixed = run(1e6f), adaptive = run(1.0f), by_default = run(0.0f);
+    const auto fixed = run(0.0f), adaptive = run(1.0f), four = run(4.0f);
     for (size_t b = 0; b < bins.size(); ++b) {
         CAPTURE(b);
         const double d = 0.5 * (bins[b].lo + bins[b].hi) / R;
         MESSAGE("low wall R/10, d/R " << d << " (" << fixed[b].pixels << " px): V_R " << fixed[b].limit
                                       << "; GPU - V_R: 4 steps fixed " << fixed[b].gpu - fixed[b].limit
                                       << ", max_step_texels 1 " << adaptive[b].gpu - adaptive[b].limit
-                                      << ", default (4) " << by_default[b].gpu - by_default[b].limit);
+                                      << ", max_step_texels 4 " << four[b].gpu - four[b].limit);
         CHECK(std::abs(adaptive[b].gpu - adaptive[b].limit) <= 4 * adaptive[b].gpu_se + 0.01);
         // Four fixed steps under-occlude (measured: by 0.116, 0.027 and
-        // 0.012 from the nearest bin out); the default lies between.
+        // 0.012 from the nearest bin out); 4 texels (~6 steps) lie between.
         CHECK(fixed[b].gpu - fixed[b].limit > 3 * std::abs(adaptive[b].gpu - adaptive[b].limit) + 0.005);
-        CHECK(by_default[b].gpu - by_default[b].limit < fixed[b].gpu - fixed[b].limit);
+        CHECK(four[b].gpu - four[b].limit < fixed[b].gpu - fixed[b].limit);
     }
     CHECK(fx.gl_errors().empty());
 }

@@ -123,7 +123,7 @@ float ao(const Input& in, const ssao_settings& s, int x, int y) {
             }
             return std::nullopt;
         };
-        // Steps along a direction: step_count, or as many as keep each
+        // Steps along a direction: step_count, or (max_step_texels > 0) as many as keep each
         // within max_step_texels of the grid on screen, up to SSAO_MAX_STEPS;
         // the span is at most the viewport's diagonal (also where the end
         // lies behind the eye).
@@ -133,6 +133,7 @@ float ao(const Input& in, const ssao_settings& s, int x, int y) {
             return glm::dvec2((c.x / c.w * 0.5 + 0.5) * g.width, (c.y / c.w * 0.5 + 0.5) * g.height);
         };
         auto steps_along = [&](const glm::dvec3& dir) {
+            if (!(s.max_step_texels > 0.0f)) return s.step_count;  // off
             const glm::dvec4 c0 = p.proj * glm::dvec4(P, 1.0), c1 = p.proj * glm::dvec4(P + dir * radius, 1.0);
             const double span = c1.w > 0.0 ? std::min(glm::length(pixel_of(c1) - pixel_of(c0)), diagonal) : diagonal;
             const double wanted = std::ceil(span / grid_scale / s.max_step_texels);

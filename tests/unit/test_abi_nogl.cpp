@@ -193,7 +193,7 @@ TEST_CASE("abi: a 1.1-sized ssao_settings reads the 1.2 fields as off and is wri
     CHECK(full.fade_end == 0.0f);
     CHECK(full.radius_pixels == 0.0f);
     CHECK(full.debug_view == SSAO_DEBUG_VIEW_NONE);
-    CHECK(full.max_step_texels == 4.0f);  // 1.4's field: its default
+    CHECK(full.max_step_texels == 0.0f);  // 1.4's field: off
     // Sizes between the versions are refused.
     for (uint32_t size : {SSAO_SETTINGS_SIZE_1_1 - 4, SSAO_SETTINGS_SIZE_1_1 + 4, SSAO_SETTINGS_SIZE_1_2 - 4,
                           uint32_t(sizeof(ssao_settings)) + 4}) {
@@ -203,7 +203,7 @@ TEST_CASE("abi: a 1.1-sized ssao_settings reads the 1.2 fields as off and is wri
     }
 }
 
-TEST_CASE("abi: a 1.2-sized ssao_settings keeps its fields, reads max_step_texels as the default, is written up to its size") {
+TEST_CASE("abi: a 1.2-sized ssao_settings keeps its fields, reads max_step_texels as off, is written up to its size") {
     const ssao_api& a = api();
     struct Padded {
         ssao_settings s;
@@ -222,7 +222,7 @@ TEST_CASE("abi: a 1.2-sized ssao_settings keeps its fields, reads max_step_texel
     for (size_t i = 0; i < sizeof(ssao_settings) - SSAO_SETTINGS_SIZE_1_2; ++i) CHECK(tail[i] == 0xcd);
     ssao_settings full = sized<ssao_settings>();
     REQUIRE(a.resolve_settings(&in.s, &full) == SSAO_OK);
-    CHECK(full.max_step_texels == 4.0f);
+    CHECK(full.max_step_texels == 0.0f);
 }
 
 TEST_CASE("abi: max_step_texels is validated and kept") {
@@ -234,7 +234,7 @@ TEST_CASE("abi: max_step_texels is validated and kept") {
         return out.max_step_texels;
     };
     ssao_status st{};
-    CHECK(resolved(0.0f, st) == 4.0f);
+    CHECK(resolved(0.0f, st) == 0.0f);  // off
     CHECK(st == SSAO_OK);
     CHECK(resolved(0.5f, st) == 0.5f);
     CHECK(st == SSAO_OK);

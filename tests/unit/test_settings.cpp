@@ -91,7 +91,7 @@ TEST_CASE("settings: a zeroed struct resolves to the documented defaults: the DE
     CHECK(r.output_format == SSAO_OUTPUT_R8);
     CHECK(r.resolution == def.resolution);
     CHECK(r.resolution != SSAO_RESOLUTION_DEFAULT);  // resolved, never the zero that means default
-    CHECK(r.max_step_texels == 4.0f);
+    CHECK(r.max_step_texels == 0.0f);  // off
 }
 
 TEST_CASE("settings: resolution keeps each named value and maps it to its grid scale") {
@@ -253,7 +253,7 @@ TEST_CASE("settings: resolve is idempotent") {
         CHECK(once.blur_sigma > 0.0f);
         CHECK(once.blur_depth_tolerance > 0.0f);
         CHECK(once.output_format != SSAO_OUTPUT_DEFAULT);
-        CHECK(once.max_step_texels > 0.0f);
+        CHECK(once.max_step_texels == in.max_step_texels);  // 0 = off stays 0, like fade_end
     }
     const ssao_settings z = resolve_ok(zeroed());
     CHECK(same(resolve_ok(z), z));
@@ -317,6 +317,7 @@ TEST_CASE("settings: every invalid field gives its documented status and leaves 
         {"step_count max", [](ssao_settings& s) { s.step_count = 0xffffffffu; }, SSAO_ERROR_INVALID_VALUE},
         {"max_step_texels -1", [](ssao_settings& s) { s.max_step_texels = -1.0f; }, SSAO_ERROR_INVALID_VALUE},
         {"max_step_texels 1e7", [](ssao_settings& s) { s.max_step_texels = 1e7f; }, SSAO_ERROR_INVALID_VALUE},
+        {"max_step_texels denormal", [](ssao_settings& s) { s.max_step_texels = 1e-40f; }, SSAO_ERROR_INVALID_VALUE},
         {"max_step_texels NaN", [](ssao_settings& s) { s.max_step_texels = kNaN; }, SSAO_ERROR_INVALID_VALUE},
         {"max_step_texels inf", [](ssao_settings& s) { s.max_step_texels = kInf; }, SSAO_ERROR_INVALID_VALUE},
         {"resolution 4", [](ssao_settings& s) { set_raw(s.resolution, 4); }, SSAO_ERROR_INVALID_ENUM},
