@@ -52,6 +52,7 @@ uint32_t sampling_feature_variant(const ssao_settings& s, const AnalysedInputs& 
     if (s.fade_end > 0.0f) v |= variant::fade;                // distance fade
     if (s.radius_pixels > 0.0f) v |= variant::radius_pixels;  // radius in viewport pixels
     if (in.frame_index != 0) v |= variant::frame_noise;       // noise moving with the frame index
+    if (s.method == SSAO_METHOD_VISIBILITY && s.max_step_texels > 0.0f) v |= variant::step_texels;  // steps per texels
     // The bias's depth-format step, per march step: one formula, not both
     // (a SIMD rasteriser pays for both sides of a branch on the format).
     if (!in.depth.is_float) v |= variant::unorm_depth;

@@ -69,7 +69,9 @@ constexpr uint32_t upsample_nearest = 1u << 7;    // UPSAMPLE_NEAREST: the upsam
                                                   // no depth weights (debug views RAW_AO and BLUR_WEIGHTS)
 constexpr uint32_t unorm_depth = 1u << 8;         // UNORM_DEPTH: the host's depth is unorm (D16, D24): a depth-format
                                                   // step is the format's fixed step, not a float's ulp
-constexpr int kBits = 9;
+constexpr uint32_t step_texels = 1u << 9;         // STEP_TEXELS: the visibility march's step count follows the
+                                                  // radius on screen (max_step_texels)
+constexpr int kBits = 10;
 }  // namespace variant
 
 // Formats of the textures the plan renders into.

@@ -143,15 +143,18 @@ bool step_surface(vec3 s, float sn, vec2 spf, ivec2 spx, Surface sf, StepSetup s
 // the projected segment from P to the radius, at most the viewport's
 // diagonal (also where the segment's end lies behind the eye), so that a
 // huge max_step_texels keeps step_count. Written so that a NaN keeps
-// step_count too (clamp and int() of a NaN are undefined).
+// step_count too (clamp and int() of a NaN are undefined). Variant
+// STEP_TEXELS (max_step_texels > 0); without it every direction takes
+// step_count steps and none of this runs.
+#ifdef SSAO_STEP_TEXELS
 int direction_steps(StepSetup st, vec4 clip_p, vec4 clip_dir, float radius) {
-    if (!(consts.max_step_texels > 0.0)) return consts.step_count;  // off: a uniform branch
     vec4 clip_end = clip_p + clip_dir * radius;
     float diagonal = length(st.g.size);
     float span = clip_end.w > 0.0 ? min(length(clip_end.xy / clip_end.w - clip_p.xy / clip_p.w), diagonal) : diagonal;
     float wanted = ceil(span * st.g.inv_scale / consts.max_step_texels);
     return wanted > float(consts.step_count) ? int(min(wanted, float(SSAO_MARCH_MAX_STEPS))) : consts.step_count;
 }
+#endif
 
 void main() {
     Surface sf;
@@ -162,6 +165,10 @@ void main() {
 
     float radius = sf.radius;  // the step length scales with the per-pixel radius (RADIUS_PIXELS)
     float thickness = consts.thickness * sf.radius_scale;
+#ifndef SSAO_STEP_TEXELS
+    int steps = consts.step_count;
+    float step_length = radius / float(steps);
+#endif
     float jitter = step_jitter(sf.vpx);
     int count = consts.sample_count;
     float open = 0.0;
@@ -177,8 +184,10 @@ void main() {
         vec3 dir = sf.TBN * kernel.vectors[i].xyz;
         vec4 clip_dir = step_clip(st, proj * vec4(dir, 0.0));
         float dn = dot(dir, sf.n);
+#ifdef SSAO_STEP_TEXELS
         int steps = direction_steps(st, clip_p, clip_dir, radius);
         float step_length = radius / float(steps);
+#endif
         bool blocked = false;
         vec2 prev_spf = clip_p.xy / clip_p.w;  // the previous point: P, then each step
         float prev_z = sf.P.z;

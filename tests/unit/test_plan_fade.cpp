@@ -112,6 +112,23 @@ TEST_CASE("frame noise offsets: frame 0 is no offset, frame n is fract(n / g, n 
     }
 }
 
+TEST_CASE("plan: max_step_texels > 0 makes STEP_TEXELS a variant of the visibility pass only; 0 (off) never does") {
+    for (ssao_method method : {SSAO_METHOD_KERNEL, SSAO_METHOD_VISIBILITY})
+        for (float texels : {0.0f, 4.0f}) {
+            CAPTURE(method);
+            CAPTURE(texels);
+            ssao_settings r = plan_test::request(method, SSAO_RESOLUTION_HALF, SSAO_BLUR_DEFAULT);
+            r.max_step_texels = texels;
+            const ssao_settings s = plan_test::resolve(r);
+            const FramePlan p = plan_frame(s, plan_test::viewport_inputs(0, 0, 64, 48, 0));
+            for (int i = 0; i < p.pass_count; ++i) {
+                const bool ao = pass_info(p.passes[i].kind).bit == SSAO_PASS_OCCLUSION;
+                CHECK(((p.passes[i].variant & variant::step_texels) != 0) ==
+                      (ao && method == SSAO_METHOD_VISIBILITY && texels > 0.0f));
+            }
+        }
+}
+
 TEST_CASE("plan: a unorm depth (D16, D24) makes UNORM_DEPTH a sampling-pass variant; a float depth never does") {
     for (ssao_method method : {SSAO_METHOD_KERNEL, SSAO_METHOD_VISIBILITY})
         for (ssao_resolution res : {SSAO_RESOLUTION_FULL, SSAO_RESOLUTION_HALF, SSAO_RESOLUTION_QUARTER}) {

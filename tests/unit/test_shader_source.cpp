@@ -188,7 +188,7 @@ TEST_CASE("shader source: the driver's log names the source string and the line 
         const char* file;
         const char* line;    // a line of that file...
         const char* broken;  // ...and what it becomes
-    } cases[] = {{"visibility.frag", "        float step_length = radius / float(steps);\n", "        float step_length = radius / float(steps); @\n"},
+    } cases[] = {{"visibility.frag", "    int steps = consts.step_count;\n", "    int steps = consts.step_count; @\n"},
                  {"common.glsl", "bool is_sky(float d) { return d == consts.sky_depth; }\n",
                   "bool is_sky(float d) { return d == consts.sky_depth; @ }\n"},
                  {"sampling.glsl", "    sf.radius = consts.radius;\n", "    sf.radius = consts.radius; @\n"},
