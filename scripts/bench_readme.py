@@ -7,9 +7,10 @@ and rewrites the blocks (scripts/doc_blocks.py) between <!-- bench:NAME --> and
 the targets (met or missed, as measured over every scene, view and radius),
 every case, the time-against-pixels table, the half/quarter-resolution
 ratios, from thickness.csv (scripts/thickness-sweep.sh) the thickness
-table and, from step_length/ (two ssao-bench --quick --sweep presets runs,
-fixed.csv without --max-step-texels and texels4.csv with 4, and a full run with
-4, full_texels4.csv, beside DIR's), the step-length tables. Time is process CPU time (ssao-bench, LP_NUM_THREADS=1). Every number in those blocks comes from the run; nothing is
+table and, from step_length/ (two ssao-bench --quick --sweep presets runs of
+one build, fixed.csv with --max-step-texels 1e6, which keeps every step count,
+and texels4.csv with 4; and a full run with 4, full_texels4.csv, beside DIR's),
+the step-length tables. Time is process CPU time (ssao-bench, LP_NUM_THREADS=1). Every number in those blocks comes from the run; nothing is
 typed by hand.
 
 usage: scripts/bench_readme.py [DIR] [DOC...]   (default: README.md docs/*.md)
