@@ -2,6 +2,7 @@
 
 #include "kernel.h"
 #include "projection.h"
+#include "settings.h"
 
 #include <algorithm>
 #include <cmath>
@@ -86,15 +87,19 @@ float ao(const Input& in, const ssao_settings& s, int x, int y) {
 
     const double radius = s.radius;
     const double step_p = step(x, y, d);
-    const double strength = s.strength == SSAO_STRENGTH_OFF ? 0.0 : s.strength;
+    const double strength = ssao_impl::effective_strength(s);
+    // Viewport pixel coordinates of clip coordinates c (in front of the eye: c.w > 0).
+    auto pixel_of = [&](const glm::dvec4& c) {
+        return glm::dvec2((c.x / c.w * 0.5 + 0.5) * g.width, (c.y / c.w * 0.5 + 0.5) * g.height);
+    };
     // Where a view-space point lands: false behind the eye or off the image.
     auto project = [&](const glm::dvec3& sp, int& sx, int& sy) {
         const glm::dvec4 c = p.proj * glm::dvec4(sp, 1.0);
         if (!(c.w > 0.0)) return false;
-        const double fx = (c.x / c.w * 0.5 + 0.5) * g.width, fy = (c.y / c.w * 0.5 + 0.5) * g.height;
-        if (fx < 0.0 || fy < 0.0 || fx >= g.width || fy >= g.height) return false;
-        sx = static_cast<int>(fx);
-        sy = static_cast<int>(fy);
+        const glm::dvec2 f = pixel_of(c);
+        if (f.x < 0.0 || f.y < 0.0 || f.x >= g.width || f.y >= g.height) return false;
+        sx = static_cast<int>(f.x);
+        sy = static_cast<int>(f.y);
         return true;
     };
     auto snap = [&](const glm::dvec3& sp, const glm::dvec3& Q) {
@@ -127,11 +132,8 @@ float ao(const Input& in, const ssao_settings& s, int x, int y) {
         // within max_step_texels of the grid on screen, up to SSAO_MAX_STEPS;
         // the span is at most the viewport's diagonal (also where the end
         // lies behind the eye).
-        const double grid_scale = s.resolution == SSAO_RESOLUTION_QUARTER ? 4.0 : s.resolution == SSAO_RESOLUTION_HALF ? 2.0 : 1.0;
+        const double grid_scale = ssao_impl::resolution_scale(s);
         const double diagonal = std::hypot(double(g.width), double(g.height));
-        auto pixel_of = [&](const glm::dvec4& c) {
-            return glm::dvec2((c.x / c.w * 0.5 + 0.5) * g.width, (c.y / c.w * 0.5 + 0.5) * g.height);
-        };
         auto steps_along = [&](const glm::dvec3& dir) {
             if (!(s.max_step_texels > 0.0f)) return s.step_count;  // off
             const glm::dvec4 c0 = p.proj * glm::dvec4(P, 1.0), c1 = p.proj * glm::dvec4(P + dir * radius, 1.0);

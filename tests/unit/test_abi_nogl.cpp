@@ -19,6 +19,21 @@ namespace {
 
 const float kNaN = std::numeric_limits<float>::quiet_NaN();
 
+// A settings struct with room after it, so that a test can see that a call
+// wrote nothing beyond the size the caller declared.
+struct PaddedSettings {
+    ssao_settings s;
+    unsigned char guard[64];
+};
+
+// Whether every byte of `s` from offset `size` to the end of ssao_settings still holds `fill`.
+bool untouched_beyond(const ssao_settings& s, uint32_t size, unsigned char fill) {
+    const unsigned char* bytes = reinterpret_cast<const unsigned char*>(&s);
+    for (size_t i = size; i < sizeof(ssao_settings); ++i)
+        if (bytes[i] != fill) return false;
+    return true;
+}
+
 }  // namespace
 
 TEST_CASE("abi: plugin::Library opens the plugin and the table is complete") {
@@ -138,11 +153,7 @@ TEST_CASE("abi: a 1.0-sized ssao_settings is read and written only up to its siz
     // A host compiled against interface 1.0 hands a 64-byte struct: the
     // library reads the 1.1 fields as defaults and never writes past it.
     const ssao_api& a = api();
-    struct Padded {
-        ssao_settings s;
-        unsigned char guard[64];
-    };
-    Padded in{}, out{};
+    PaddedSettings in{}, out{};
     std::memset(&in, 0xab, sizeof in);   // the tail beyond 64 bytes is garbage the library must not read
     std::memset(&out, 0xcd, sizeof out);
     std::memset(&in.s, 0, SSAO_SETTINGS_SIZE_1_0);
@@ -153,8 +164,7 @@ TEST_CASE("abi: a 1.0-sized ssao_settings is read and written only up to its siz
     CHECK(out.s.size == SSAO_SETTINGS_SIZE_1_0);
     CHECK(out.s.sample_count == 12u);
     CHECK(out.s.radius > 0.0f);
-    const unsigned char* tail = reinterpret_cast<const unsigned char*>(&out.s) + SSAO_SETTINGS_SIZE_1_0;
-    for (size_t i = 0; i < sizeof(ssao_settings) - SSAO_SETTINGS_SIZE_1_0; ++i) CHECK(tail[i] == 0xcd);
+    CHECK(untouched_beyond(out.s, SSAO_SETTINGS_SIZE_1_0, 0xcd));
     // The same 1.0 input into a full-size output: the 1.1 fields resolve to their defaults.
     ssao_settings full = sized<ssao_settings>();
     REQUIRE(a.resolve_settings(&in.s, &full) == SSAO_OK);
@@ -171,11 +181,7 @@ TEST_CASE("abi: a 1.0-sized ssao_settings is read and written only up to its siz
 
 TEST_CASE("abi: a 1.1-sized ssao_settings reads the 1.2 fields as off and is written only up to its size") {
     const ssao_api& a = api();
-    struct Padded {
-        ssao_settings s;
-        unsigned char guard[64];
-    };
-    Padded in{}, out{};
+    PaddedSettings in{}, out{};
     std::memset(&in, 0xab, sizeof in);
     std::memset(&out, 0xcd, sizeof out);
     std::memset(&in.s, 0, SSAO_SETTINGS_SIZE_1_1);
@@ -185,8 +191,7 @@ TEST_CASE("abi: a 1.1-sized ssao_settings reads the 1.2 fields as off and is wri
     REQUIRE(a.resolve_settings(&in.s, &out.s) == SSAO_OK);
     CHECK(out.s.size == SSAO_SETTINGS_SIZE_1_1);
     CHECK(out.s.step_count == 3u);
-    const unsigned char* tail = reinterpret_cast<const unsigned char*>(&out.s) + SSAO_SETTINGS_SIZE_1_1;
-    for (size_t i = 0; i < sizeof(ssao_settings) - SSAO_SETTINGS_SIZE_1_1; ++i) CHECK(tail[i] == 0xcd);
+    CHECK(untouched_beyond(out.s, SSAO_SETTINGS_SIZE_1_1, 0xcd));
     ssao_settings full = sized<ssao_settings>();
     REQUIRE(a.resolve_settings(&in.s, &full) == SSAO_OK);
     CHECK(full.fade_start == 0.0f);
@@ -205,11 +210,7 @@ TEST_CASE("abi: a 1.1-sized ssao_settings reads the 1.2 fields as off and is wri
 
 TEST_CASE("abi: a 1.2-sized ssao_settings keeps its fields, reads max_step_texels as off, is written up to its size") {
     const ssao_api& a = api();
-    struct Padded {
-        ssao_settings s;
-        unsigned char guard[64];
-    };
-    Padded in{}, out{};
+    PaddedSettings in{}, out{};
     std::memset(&out, 0xcd, sizeof out);
     in.s.size = SSAO_SETTINGS_SIZE_1_2;
     in.s.radius_pixels = 40.0f;
@@ -218,8 +219,7 @@ TEST_CASE("abi: a 1.2-sized ssao_settings keeps its fields, reads max_step_texel
     REQUIRE(a.resolve_settings(&in.s, &out.s) == SSAO_OK);
     CHECK(out.s.size == SSAO_SETTINGS_SIZE_1_2);
     CHECK(out.s.radius_pixels == 40.0f);
-    const unsigned char* tail = reinterpret_cast<const unsigned char*>(&out.s) + SSAO_SETTINGS_SIZE_1_2;
-    for (size_t i = 0; i < sizeof(ssao_settings) - SSAO_SETTINGS_SIZE_1_2; ++i) CHECK(tail[i] == 0xcd);
+    CHECK(untouched_beyond(out.s, SSAO_SETTINGS_SIZE_1_2, 0xcd));
     ssao_settings full = sized<ssao_settings>();
     REQUIRE(a.resolve_settings(&in.s, &full) == SSAO_OK);
     CHECK(full.max_step_texels == 0.0f);
