@@ -205,6 +205,9 @@ void settings_flags(flags::Valued& table, Options& o) {
         {"--steps", [&](const std::string& f, const std::string& v) {
              o.steps = static_cast<int>(flags::integer(f, v, 1, SSAO_MAX_STEPS));
          }},
+        {"--max-step-texels", [&](const std::string& f, const std::string& v) {
+             o.max_step_texels = ranged(f, v, 0, false, 1e6, false);
+         }},
         {"--fade-start", [&](const std::string& f, const std::string& v) { o.fade_start = ranged(f, v, 0, false, kBig, false); }},
         {"--fade-end", [&](const std::string& f, const std::string& v) { o.fade_end = ranged(f, v, 0, false, kBig, false); }},
         {"--radius-pixels", [&](const std::string& f, const std::string& v) {
@@ -337,6 +340,11 @@ std::string help_text(const ssao_settings* d, const std::string& default_scene, 
       << def([&](const ssao_settings& s) { return num(s.thickness / s.radius) + " x radius"; }) << ")\n"
          "  --steps N               visibility: steps per direction, 1.." << SSAO_MAX_STEPS << " (default "
       << def([](const ssao_settings& s) { return std::to_string(s.step_count); }) << ")\n"
+         "  --max-step-texels X     visibility: the longest a step may be on screen, sampling-grid texels; more\n"
+         "                          steps (up to " << SSAO_MAX_STEPS << ") where the radius spans more, [0, 1e6]; 0 = off: --steps\n"
+         "                          fixed (default "
+      << def([&](const ssao_settings& s) { return s.max_step_texels > 0.0f ? num(s.max_step_texels) : std::string("off"); })
+      << ")\n"
          "  --output-format r8|r16f plugin output texture format (default " << def([](const ssao_settings& s) { return std::string(name(s.output_format)); }) << ")\n"
          "  --fade-start D          distance fade: view depth where AO starts fading to 1, >= 0 (default: scene\n"
          "                          hint, else 0); needs a fade end\n"

@@ -59,6 +59,7 @@ struct Options {
     std::optional<ssao_method> method;
     std::optional<float> thickness;  // visibility: view units
     std::optional<int> steps;        // visibility: steps per direction
+    std::optional<float> max_step_texels;  // visibility: longest step on screen, sampling-grid texels
     // Distance fade (view depth; --fade-end 0 turns a scene hint's fade
     // off) and the radius in viewport pixels (0 = off).
     std::optional<float> fade_start, fade_end, radius_pixels;

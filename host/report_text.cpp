@@ -38,6 +38,10 @@ std::string estimator(const ssao_settings& s) {
     if (s.method == SSAO_METHOD_VISIBILITY) {
         std::snprintf(buffer, sizeof buffer, ", thickness %.4g", static_cast<double>(s.thickness));
         words += buffer;
+        if (s.max_step_texels > 0.0f) {
+            std::snprintf(buffer, sizeof buffer, ", steps <= %.4g texels apart", static_cast<double>(s.max_step_texels));
+            words += buffer;
+        }
     } else {
         words += std::string(", kernel ") + cli::name(s.kernel_shape);
     }

@@ -96,6 +96,7 @@ ssao_settings build_settings(const ssao_api& api, const cli::Options& o, const s
     if (o.method) s.method = *o.method;
     if (o.thickness) s.thickness = *o.thickness;
     if (o.steps) s.step_count = static_cast<uint32_t>(*o.steps);
+    if (o.max_step_texels) s.max_step_texels = *o.max_step_texels;
     // The fade: a flag replaces its end of the hint's range; --fade-end 0
     // (no fade) drops a hinted start too, so it always turns the fade off.
     if (o.fade_start) s.fade_start = *o.fade_start;

@@ -556,7 +556,7 @@ TEST_CASE("--help lists every flag with the plugin's own defaults") {
           "--normals", "--normal-format", "--samples", "--radius", "--bias", "--depth-step-bias", "--power",
           "--strength", "--kernel", "--distribution", "--rotation", "--seed", "--blur", "--blur-radius",
           "--blur-sigma", "--blur-tolerance", "--output-format", "--preset", "--frames", "--only", "--sheet",
-          "--gl33", "--out", "--method", "--thickness", "--steps"})
+          "--gl33", "--out", "--method", "--thickness", "--steps", "--max-step-texels"})
         CHECK_MESSAGE(r.out.find(flag) != std::string::npos, flag);
     // The defaults shown are the plugin's resolved zeroed settings.
     plugin::Library lib;
@@ -578,6 +578,11 @@ TEST_CASE("--help lists every flag with the plugin's own defaults") {
     // The estimator's flags: ranges from the header's limits, defaults from the plugin.
     CHECK(line_of("--steps").find("1.." + std::to_string(SSAO_MAX_STEPS) + " (default " + std::to_string(d.step_count) + ")") !=
           std::string::npos);
+    // The step length's default, 0, reads "off" (its text wraps onto a third line).
+    REQUIRE(d.max_step_texels == 0.0f);
+    const size_t step_length = r.out.find("  --max-step-texels X ");
+    REQUIRE(step_length != std::string::npos);
+    CHECK(r.out.find("fixed (default off)", step_length) < r.out.find("  --output-format", step_length));
     CHECK(r.out.find("(default " + std::string(d.method == SSAO_METHOD_VISIBILITY ? "visibility" : "kernel") + ")") !=
           std::string::npos);
     std::ostringstream thickness;
@@ -588,7 +593,8 @@ TEST_CASE("--help lists every flag with the plugin's own defaults") {
 TEST_CASE("usage errors of the estimator flags exit with status 2 and one line naming the flag") {
     for (const std::vector<std::string>& args : std::vector<std::vector<std::string>>{
              {"--method", "horizon"}, {"--method"}, {"--thickness", "0"}, {"--thickness", "inf"}, {"--thickness", "x"},
-             {"--steps", "0"}, {"--steps", "33"}, {"--steps", "-1"}}) {
+             {"--steps", "0"}, {"--steps", "33"}, {"--steps", "-1"}, {"--max-step-texels", "-1"},
+             {"--max-step-texels", "2e6"}, {"--max-step-texels", "nan"}, {"--max-step-texels"}}) {
         CAPTURE(args[0]);
         CAPTURE(args.size() > 1 ? args[1] : std::string("(no value)"));
         const Run r = run_host(args);
@@ -600,7 +606,7 @@ TEST_CASE("usage errors of the estimator flags exit with status 2 and one line n
     }
 }
 
-TEST_CASE("--method, --thickness and --steps reach the plugin") {
+TEST_CASE("--method, --thickness, --steps and --max-step-texels reach the plugin") {
     // Spot, 64x48, radius 0.3, no blur, hash rotation: per pixel the
     // visibility estimator can only block more as the thickness grows.
     const std::vector<std::string> common = {"--width", "64", "--height", "48", "--only", "ao", "--radius", "0.3",
@@ -647,6 +653,29 @@ TEST_CASE("--method, --thickness and --steps reach the plugin") {
     const auto one_step = render("method_one_step", {"--method", "visibility", "--steps", "1"});
     CHECK(one_step.second.find(" x 1 steps,") != std::string::npos);
     CHECK(compare(vis.first, one_step.first).mean > 1e-3);
+
+    // Step length: at 160x120 a radius of 0.6 spans several grid texels, so
+    // steps at most one texel apart march more of them than the fixed count
+    // and find occluders the coarser steps pass over: a different image,
+    // darker on the whole. (The flag given last wins.)
+    const std::vector<std::string> larger = {"--method", "visibility", "--width", "160", "--height", "120", "--radius", "0.6"};
+    auto with = [&](std::vector<std::string> v, const std::vector<std::string>& more) {
+        v.insert(v.end(), more.begin(), more.end());
+        return v;
+    };
+    const auto fixed_steps = render("method_fixed_steps", larger);
+    const auto short_steps = render("method_short_steps", with(larger, {"--max-step-texels", "1"}));
+    CHECK(short_steps.second.find(", steps <= 1 texels apart") != std::string::npos);
+    CHECK(fixed_steps.second.find("texels apart") == std::string::npos);  // off by default
+    double sum_fixed = 0, sum_short = 0;
+    for (size_t i = 0; i < fixed_steps.first.v.size(); ++i) {
+        sum_fixed += fixed_steps.first.v[i];
+        sum_short += short_steps.first.v[i];
+    }
+    MESSAGE("mean AO: fixed steps " << sum_fixed / fixed_steps.first.v.size() << ", steps <= 1 texel apart "
+                                    << sum_short / fixed_steps.first.v.size());
+    CHECK(compare(fixed_steps.first, short_steps.first).mean > 1e-3);
+    CHECK(sum_short < sum_fixed);
 
     // Thickness: a height field (huge thickness) blocks everything the
     // default blocks and more; never lighter at any pixel.
