@@ -10,7 +10,8 @@ ratios, from thickness.csv (scripts/thickness-sweep.sh) the thickness
 table and, from step_length/ (two ssao-bench --quick --sweep presets runs of
 one build, fixed.csv with --max-step-texels 1e6, which keeps every step count,
 and texels4.csv with 4; and a full run with 4, full_texels4.csv, beside DIR's),
-the step-length tables. Time is process CPU time (ssao-bench, LP_NUM_THREADS=1). Every number in those blocks comes from the run; nothing is
+the step-length tables and, from upsample/ (four quick runs: the upsample's 2x2 or 3x3 taps, MEDIUM's
+directions), the upsample table. Time is process CPU time (ssao-bench, LP_NUM_THREADS=1). Every number in those blocks comes from the run; nothing is
 typed by hand.
 
 usage: scripts/bench_readme.py [DIR] [DOC...]   (default: README.md docs/*.md)
@@ -153,6 +154,8 @@ def main():
     if os.path.exists(d + "/step_length/fixed.csv"):
         blocks["step_length"] = step_length_table(d + "/step_length", rows)
         blocks["step_length_summary"] = step_length_summary(d + "/step_length/full_texels4.csv", rows)
+    if os.path.exists(d + "/upsample/taps2x2_dirs8.csv"):
+        blocks["upsample"] = upsample_table(d + "/upsample")
     if os.path.exists(d + "/gpu/bench.csv"):
         blocks["gpu"] = gpu_table(d + "/gpu")
     write_blocks(blocks, docs, "bench_readme")
@@ -307,6 +310,30 @@ def step_length_table(d, main_rows):
             lines.append("| %s | %s | %s | %d of %d (%g dB) | %s | %s |" % (
                 label, title, f(mean(r["psnr"] for r in c)), within, len(c), margin,
                 signed(max(r["bias"] for r in c), 3), " | ".join(times)))
+    return "\n".join(lines)
+
+
+def upsample_table(d):
+    """The upsample's footprint against the march's directions: four quick runs (DIR/taps*_dirs*.csv, MEDIUM's
+    direction count and the upsample's taps per run) over every case: MEDIUM's and LOW's mean PSNR, MEDIUM's cases
+    within 3 dB of the limit and with a cell spread within 1.5x the limit's, and each one's CPU time over the textbook
+    pass timed in the same run (median over the cases)."""
+    runs = [("2x2 (shipped)", 8, "taps2x2_dirs8.csv"), ("3x3", 8, "taps3x3_dirs8.csv"), ("3x3", 6, "taps3x3_dirs6.csv"),
+            ("3x3", 4, "taps3x3_dirs4.csv")]
+    lines = ["| upsample taps | MEDIUM directions | MEDIUM PSNR (mean) | within 3 dB of the limit | cell spread <= 1.5x "
+             "the limit's | MEDIUM x textbook (median) | LOW PSNR (mean) | LOW x textbook (median) |",
+             "|---|---:|---:|---:|---:|---:|---:|---:|"]
+    for taps, dirs, name in runs:
+        rows = [r for r in load(d + "/" + name) if r["width"] == 320]
+        limit = {case_name(r): r for r in rows if r["kind"] == "limit"}
+        med = [r for r in rows if r["config"] == PRESETS[1][1] and r["psnr"] == r["psnr"]]
+        low = [r for r in rows if r["config"] == PRESETS[0][1] and r["psnr"] == r["psnr"]]
+        within = sum(1 for r in med if limit[case_name(r)]["psnr"] - r["psnr"] <= 3.0)
+        cells = sum(1 for r in med if r["cell_spread"] <= 1.5 * limit[case_name(r)]["cell_spread"])
+        lines.append("| %s | %d | %s | %d of %d | %d of %d | %s | %s | %s |" % (
+            taps, dirs, f(mean(r["psnr"] for r in med)), within, len(med), cells, len(med),
+            f(median(r["x_textbook_cpu"] for r in med), 3), f(mean(r["psnr"] for r in low)),
+            f(median(r["x_textbook_cpu"] for r in low), 3)))
     return "\n".join(lines)
 
 
