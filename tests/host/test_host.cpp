@@ -659,7 +659,7 @@ TEST_CASE("--method, --thickness, --steps and --max-step-texels reach the plugin
     // and find occluders the coarser steps pass over: a different image,
     // darker on the whole. (The flag given last wins.)
     const std::vector<std::string> larger = {"--method", "visibility", "--width", "160", "--height", "120", "--radius", "0.6"};
-    auto with = [&](std::vector<std::string> v, const std::vector<std::string>& more) {
+    auto with = [](std::vector<std::string> v, const std::vector<std::string>& more) {
         v.insert(v.end(), more.begin(), more.end());
         return v;
     };
@@ -676,6 +676,9 @@ TEST_CASE("--method, --thickness, --steps and --max-step-texels reach the plugin
                                     << sum_short / fixed_steps.first.v.size());
     CHECK(compare(fixed_steps.first, short_steps.first).mean > 1e-3);
     CHECK(sum_short < sum_fixed);
+    // 0 is off: the fixed count's image, bit for bit.
+    const auto off = render("method_steps_off", with(larger, {"--max-step-texels", "0"}));
+    CHECK(compare(fixed_steps.first, off.first).max == 0.0);
 
     // Thickness: a height field (huge thickness) blocks everything the
     // default blocks and more; never lighter at any pixel.
