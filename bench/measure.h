@@ -41,6 +41,7 @@ struct Row {
     metrics::Stats all, interior, silhouette, border;  // against V_R
     metrics::Stats vs_limit;       // against the depth-only limit (all pixels)
     double cell_spread = 0;        // metrics::cell_spread of the error against V_R (the fixed pattern)
+    std::vector<double> cell_pattern;  // metrics::cell_pattern of that error (8 x 8), for the patterns cases share
     double bias_occluded = 0;      // metrics::occluded_bias: where V_R < 0.5 (contact shadows, creases)
     bool variant = false;  // a sweep configuration with a setting no preset carries: its own thickness or rotation
 };

@@ -232,6 +232,35 @@ void write_csv(const Options& o, const std::vector<Row>& rows) {
     }
 }
 
+// cell_pattern.csv: for each configuration measured on more than one case at
+// the base size (the limit, the textbook pass, the presets), the part of its
+// error's 8x8 cell pattern that the cases share (metrics::common_pattern: a
+// pattern fixed on the screen) beside the mean of each case's cell spread
+// (which noise raises too).
+void write_cell_patterns(const Options& o, const std::vector<Row>& rows) {
+    std::map<std::string, std::vector<const Row*>> by_config;
+    std::vector<std::string> order;
+    for (const Row& r : rows) {
+        if (!r.has_error || r.width != o.width || r.cell_pattern.empty()) continue;
+        if (!by_config.count(r.config)) order.push_back(r.config);
+        by_config[r.config].push_back(&r);
+    }
+    std::ofstream csv(o.out + "/cell_pattern.csv");
+    csv << "config,kind,cases,common_pattern,mean_cell_spread\n";
+    for (const std::string& c : order) {
+        const std::vector<const Row*>& rs = by_config[c];
+        if (rs.size() < 2) continue;
+        std::vector<std::vector<double>> patterns;
+        double spread = 0.0;
+        for (const Row* r : rs) {
+            patterns.push_back(r->cell_pattern);
+            spread += r->cell_spread;
+        }
+        csv << "\"" << c << "\"," << kind_name(rs[0]->kind) << "," << rs.size() << ","
+            << fmt(metrics::common_pattern(patterns), 6) << "," << fmt(spread / double(rs.size()), 6) << "\n";
+    }
+}
+
 std::string summary_table(const std::vector<Summary>& sum) {
     std::vector<Summary> sorted = sum;
     std::sort(sorted.begin(), sorted.end(),
@@ -455,6 +484,7 @@ void write_report(const Options& o, const std::vector<Row>& rows) {
         write_timing_report(o, rows);
         return;
     }
+    write_cell_patterns(o, rows);
     const std::vector<Summary> sum = summarise(rows, o.width, main_case);
     std::vector<std::string> scenes;
     for (const Row& r : rows)
@@ -505,7 +535,8 @@ void write_report(const Options& o, const std::vector<Row>& rows) {
     std::ofstream(o.out + "/presets.txt") << pr.str();
     std::printf("%s\n%s", md.str().c_str(), pr.str().c_str());
     write_plot(o, sum);
-    std::printf("results: %s/bench.csv, %s/bench.md, %s/presets.txt\n", o.out.c_str(), o.out.c_str(), o.out.c_str());
+    std::printf("results: %s/bench.csv, %s/bench.md, %s/presets.txt, %s/cell_pattern.csv\n", o.out.c_str(), o.out.c_str(),
+                o.out.c_str(), o.out.c_str());
 }
 
 }  // namespace bench

@@ -269,8 +269,8 @@ std::string csv_rows(const std::vector<Stats>& s, const std::string& label, cons
     return o.str();
 }
 
-double cell_spread(const std::vector<float>& test, const std::vector<float>& reference,
-                   const std::vector<uint8_t>& geometry, int width, int height, int cell) {
+std::vector<double> cell_pattern(const std::vector<float>& test, const std::vector<float>& reference,
+                                 const std::vector<uint8_t>& geometry, int width, int height, int cell) {
     std::vector<double> sum(size_t(cell) * size_t(cell), 0.0);
     std::vector<size_t> count(sum.size(), 0);
     for (int y = 0; y < height; ++y)
@@ -281,16 +281,49 @@ double cell_spread(const std::vector<float>& test, const std::vector<float>& ref
             sum[k] += double(test[i]) - double(reference[i]);
             ++count[k];
         }
-    std::vector<double> means;
-    for (size_t k = 0; k < sum.size(); ++k)
-        if (count[k] > 0) means.push_back(sum[k] / double(count[k]));
-    if (means.empty()) return std::numeric_limits<double>::quiet_NaN();
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    std::vector<double> pattern(sum.size(), nan);
     double mean = 0.0;
-    for (double m : means) mean += m;
-    mean /= double(means.size());
-    double var = 0.0;
-    for (double m : means) var += (m - mean) * (m - mean);
-    return std::sqrt(var / double(means.size()));
+    size_t filled = 0;
+    for (size_t k = 0; k < sum.size(); ++k)
+        if (count[k] > 0) {
+            pattern[k] = sum[k] / double(count[k]);
+            mean += pattern[k];
+            ++filled;
+        }
+    if (filled) mean /= double(filled);
+    for (double& m : pattern) m -= mean;  // NaN stays NaN
+    return pattern;
+}
+
+namespace {
+
+// RMS of the finite values; NaN when there is none.
+double finite_rms(const std::vector<double>& v) {
+    double sq = 0.0;
+    size_t n = 0;
+    for (double x : v)
+        if (std::isfinite(x)) {
+            sq += x * x;
+            ++n;
+        }
+    return n ? std::sqrt(sq / double(n)) : std::numeric_limits<double>::quiet_NaN();
+}
+
+}  // namespace
+
+double cell_spread(const std::vector<float>& test, const std::vector<float>& reference,
+                   const std::vector<uint8_t>& geometry, int width, int height, int cell) {
+    return finite_rms(cell_pattern(test, reference, geometry, width, height, cell));
+}
+
+double common_pattern(const std::vector<std::vector<double>>& patterns) {
+    if (patterns.empty()) return std::numeric_limits<double>::quiet_NaN();
+    std::vector<double> mean(patterns[0].size(), 0.0);
+    for (const auto& p : patterns)
+        for (size_t k = 0; k < mean.size(); ++k) mean[k] += k < p.size() ? p[k] : std::numeric_limits<double>::quiet_NaN();
+    for (double& m : mean) m /= double(patterns.size());
+    return finite_rms(mean);
 }
 
 double occluded_bias(const std::vector<float>& test, const std::vector<float>& reference,

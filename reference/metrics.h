@@ -64,13 +64,27 @@ bool compute_split(const Inputs& in, const std::vector<float>& limit, const std:
 // Text tables and CSV rows. The CSV's last column, `against`, names what the
 // row compares: "V_R" (the tested image against the reference), "limit" (the
 // tested image against the limit) or "limit_vs_V_R" (the limit against V_R).
-// The fixed-pattern ("stipple") figure: the error (test - reference) averaged
-// separately at each of the cell x cell positions of a tile of pixels, and the
-// spread (standard deviation) of those means. A rotation pattern that repeats
-// every `cell` pixels shows as a spread well above what noise and content
-// leave. Pixels where `geometry` is 0 are left out.
+// The error (test - reference) averaged separately at each of the cell x cell
+// positions of a tile of pixels, less the mean of those averages: what repeats
+// every `cell` pixels, cell * cell values row by row (NaN at a position with
+// no pixel). Pixels where `geometry` is 0 are left out.
+std::vector<double> cell_pattern(const std::vector<float>& test, const std::vector<float>& reference,
+                                 const std::vector<uint8_t>& geometry, int width, int height, int cell = 8);
+
+// The fixed-pattern ("stipple") figure of one image: the spread (RMS) of its
+// cell_pattern. A rotation pattern that repeats every `cell` pixels shows as a
+// spread well above what noise and content leave; but noise whose blotches
+// are a few pixels wide raises it too. NaN when no position has a pixel.
 double cell_spread(const std::vector<float>& test, const std::vector<float>& reference,
                    const std::vector<uint8_t>& geometry, int width, int height, int cell = 8);
+
+// The part of several images' cell patterns (of one size of cell) that they
+// share: the RMS over the positions of their mean, leaving out a position
+// that is NaN in any of them. A pattern fixed on the screen (a rotation tile,
+// where a reduced grid picks its pixels) survives the mean; noise and content,
+// which differ from image to image, shrink with it (independent noise as
+// 1/sqrt(count)). NaN for none.
+double common_pattern(const std::vector<std::vector<double>>& patterns);
 
 // Mean of (test - reference) over the geometry pixels whose reference AO is
 // below `below`: the bias in the occluded places (contact shadows, creases),

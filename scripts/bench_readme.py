@@ -11,7 +11,8 @@ table and, from step_length/ (two ssao-bench --quick --sweep presets runs of
 one build, fixed.csv with --max-step-texels 1e6, which keeps every step count,
 and texels4.csv with 4; and a full run with 4, full_texels4.csv, beside DIR's),
 the step-length tables and, from upsample/ (four quick runs: the upsample's 2x2 or 3x3 taps, MEDIUM's
-directions), the upsample table. Time is process CPU time (ssao-bench, LP_NUM_THREADS=1). Every number in those blocks comes from the run; nothing is
+directions), the upsample table and, from cell_pattern/ (a quick run's cell_pattern.csv), the shared-pattern
+table. Time is process CPU time (ssao-bench, LP_NUM_THREADS=1). Every number in those blocks comes from the run; nothing is
 typed by hand.
 
 usage: scripts/bench_readme.py [DIR] [DOC...]   (default: README.md docs/*.md)
@@ -156,6 +157,8 @@ def main():
         blocks["step_length_summary"] = step_length_summary(d + "/step_length/full_texels4.csv", rows)
     if os.path.exists(d + "/upsample/taps2x2_dirs8.csv"):
         blocks["upsample"] = upsample_table(d + "/upsample")
+    if os.path.exists(d + "/cell_pattern/cell_pattern.csv"):
+        blocks["cell_pattern"] = cell_pattern_table(d + "/cell_pattern/cell_pattern.csv")
     if os.path.exists(d + "/gpu/bench.csv"):
         blocks["gpu"] = gpu_table(d + "/gpu")
     write_blocks(blocks, docs, "bench_readme")
@@ -334,6 +337,28 @@ def upsample_table(d):
             taps, dirs, f(mean(r["psnr"] for r in med)), within, len(med), cells, len(med),
             f(median(r["x_textbook_cpu"] for r in med), 3), f(mean(r["psnr"] for r in low)),
             f(median(r["x_textbook_cpu"] for r in low), 3)))
+    return "\n".join(lines)
+
+
+def cell_pattern_table(path):
+    """ssao-bench's cell_pattern.csv: for the limit, the textbook pass and each preset, the part of the 8x8 cell
+    pattern of its error that every case shares (a pattern fixed on the screen) and the mean of each case's cell
+    spread, each also over the limit's."""
+    rows = list(csv.DictReader(open(path)))
+    for r in rows:
+        r["common"], r["spread"] = number(r, "common_pattern"), number(r, "mean_cell_spread")
+    limit = [r for r in rows if r["kind"] == "limit"][0]
+    names = {"limit": "depth-only limit", "textbook": "textbook pass"}
+    names.update({name: label for label, name, _ in PRESETS})
+    lines = ["| pass | cases | shared pattern (RMS) | x the limit's | mean cell spread | x the limit's |",
+             "|---|---:|---:|---:|---:|---:|"]
+    for r in rows:
+        label = names.get(r["kind"]) or names.get(r["config"])
+        if not label:
+            continue
+        lines.append("| %s | %s | %s | %s | %s | %s |" % (label, r["cases"], f(r["common"], 5),
+                                                       f(r["common"] / limit["common"]), f(r["spread"], 5),
+                                                       f(r["spread"] / limit["spread"])))
     return "\n".join(lines)
 
 

@@ -80,6 +80,18 @@ with tempfile.TemporaryDirectory() as tmp:
             check("| overhang | %s | %s | preset medium (= default) |" % (view, rs) in md,
                   "bench.md lists overhang %s %s DEFAULT" % (view, rs))
     check("DEFAULT / textbook (CPU)" in md, "bench.md: DEFAULT against the anchors by CPU time")
+    # cell_pattern.csv: every pass with errors over the 9 cases; what they share is never more than
+    # their mean cell spread (the mean of patterns is no longer than their mean length), and each
+    # case's cell spread is in bench.csv.
+    patterns = {r["config"]: r for r in csv.DictReader(open(os.path.join(tmp, "all", "cell_pattern.csv")))}
+    check(set(patterns) == set(CONFIGS) - {"bandwidth floor (read depth + normal, write R8)"},
+          "cell_pattern.csv: a row for the limit, the presets and the textbook pass, got %s" % sorted(patterns))
+    for c, r in patterns.items():
+        common, spread = num(r, "common_pattern"), num(r, "mean_cell_spread")
+        check(r["cases"] == "9", "%s: 9 cases in cell_pattern.csv, got %r" % (c, r["cases"]))
+        check(0 <= common <= spread + 1e-6, "%s: 0 <= common pattern %s <= mean cell spread %s" % (c, common, spread))
+        cells = [num(x, "cell_spread") for x in rows if x["config"] == c]
+        check(abs(sum(cells) / len(cells) - spread) <= 1e-4, "%s: mean cell spread = bench.csv's mean" % c)
 
     # The user's LP_NUM_THREADS is kept and reported; --views and --radii pick the cases.
     rows, md = run(os.path.join(tmp, "one"), "--views", "close-up", "--radii", "2", env={"LP_NUM_THREADS": "2"})

@@ -294,6 +294,43 @@ TEST_CASE("cell spread: a pattern that repeats every 8 pixels, against noise-fre
     CHECK(metrics::cell_spread(tiled, ref, half, w, h) == doctest::Approx(0.0).epsilon(1e-9));
 }
 
+TEST_CASE("cell pattern: the tile's centred means, NaN where a position has no pixel; the common part of several") {
+    const int w = 64, h = 48;
+    const size_t n = size_t(w) * size_t(h);
+    const std::vector<float> ref(n, 0.5f);
+    const std::vector<uint8_t> geometry(n, 1);
+    // A tile of +0.1 / -0.1 on a +0.2 offset: the pattern is the tile without the offset.
+    std::vector<float> tiled(n);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) tiled[size_t(y) * w + x] = 0.7f + (((x % 8) + (y % 8)) % 2 ? -0.1f : 0.1f);
+    const std::vector<double> p = metrics::cell_pattern(tiled, ref, geometry, w, h);
+    REQUIRE(p.size() == 64);
+    for (int k = 0; k < 64; ++k) CHECK(p[k] == doctest::Approx(((k % 8) + (k / 8)) % 2 ? -0.1 : 0.1).epsilon(1e-5));
+    // Only column 0 of each tile holds geometry: the other positions are NaN.
+    std::vector<uint8_t> column(n, 0);
+    for (int y = 0; y < h; ++y) column[size_t(y) * w] = 1;
+    const std::vector<double> q = metrics::cell_pattern(tiled, ref, column, w, h);
+    CHECK(std::isfinite(q[0]));
+    CHECK(std::isnan(q[1]));
+    CHECK(metrics::cell_spread(tiled, ref, column, w, h) == doctest::Approx(0.1).epsilon(1e-5));
+
+    // Several images: the tile in all of them survives their mean, patterns
+    // that differ from image to image (here two opposite ones) cancel.
+    std::vector<double> a(64), b(64), c(64);
+    for (int k = 0; k < 64; ++k) {
+        a[k] = p[k] + (k % 3 == 0 ? 0.05 : -0.025);
+        b[k] = p[k] - (k % 3 == 0 ? 0.05 : -0.025);
+        c[k] = -p[k];
+    }
+    CHECK(metrics::common_pattern({a, b}) == doctest::Approx(0.1).epsilon(1e-5));
+    CHECK(metrics::common_pattern({p, c}) == doctest::Approx(0.0).epsilon(1e-12));
+    // A position NaN in any image is left out; none at all gives NaN.
+    std::vector<double> holed = a;
+    holed[0] = std::numeric_limits<double>::quiet_NaN();
+    CHECK(metrics::common_pattern({holed, b}) == doctest::Approx(0.1).epsilon(1e-5));
+    CHECK(std::isnan(metrics::common_pattern({})));
+}
+
 TEST_CASE("occluded bias: the mean error where the reference is below 0.5, NaN where there is none") {
     const std::vector<float> ref = {0.2f, 0.4f, 0.9f, 0.3f};
     const std::vector<float> test = {0.3f, 0.6f, 0.5f, 0.0f};
