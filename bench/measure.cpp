@@ -105,7 +105,7 @@ void fill_errors(Row& row, const std::vector<float>& ao, const Truth& t) {
     std::vector<uint8_t> geometry(t.mask.size());
     for (size_t i = 0; i < geometry.size(); ++i) geometry[i] = t.mask[i] > 0.5f;
     row.cell_pattern = metrics::cell_pattern(ao, t.ao, geometry, t.width, t.height);
-    row.cell_spread = metrics::cell_spread(ao, t.ao, geometry, t.width, t.height);
+    row.cell_spread = metrics::pattern_spread(row.cell_pattern);
     row.bias_occluded = metrics::occluded_bias(ao, t.ao, geometry);
     row.has_error = true;
 }

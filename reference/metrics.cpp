@@ -296,13 +296,10 @@ std::vector<double> cell_pattern(const std::vector<float>& test, const std::vect
     return pattern;
 }
 
-namespace {
-
-// RMS of the finite values; NaN when there is none.
-double finite_rms(const std::vector<double>& v) {
+double pattern_spread(const std::vector<double>& pattern) {
     double sq = 0.0;
     size_t n = 0;
-    for (double x : v)
+    for (double x : pattern)
         if (std::isfinite(x)) {
             sq += x * x;
             ++n;
@@ -310,11 +307,9 @@ double finite_rms(const std::vector<double>& v) {
     return n ? std::sqrt(sq / double(n)) : std::numeric_limits<double>::quiet_NaN();
 }
 
-}  // namespace
-
 double cell_spread(const std::vector<float>& test, const std::vector<float>& reference,
                    const std::vector<uint8_t>& geometry, int width, int height, int cell) {
-    return finite_rms(cell_pattern(test, reference, geometry, width, height, cell));
+    return pattern_spread(cell_pattern(test, reference, geometry, width, height, cell));
 }
 
 double common_pattern(const std::vector<std::vector<double>>& patterns) {
@@ -323,7 +318,7 @@ double common_pattern(const std::vector<std::vector<double>>& patterns) {
     for (const auto& p : patterns)
         for (size_t k = 0; k < mean.size(); ++k) mean[k] += k < p.size() ? p[k] : std::numeric_limits<double>::quiet_NaN();
     for (double& m : mean) m /= double(patterns.size());
-    return finite_rms(mean);
+    return pattern_spread(mean);
 }
 
 double occluded_bias(const std::vector<float>& test, const std::vector<float>& reference,

@@ -77,6 +77,8 @@ std::vector<double> cell_pattern(const std::vector<float>& test, const std::vect
 // are a few pixels wide raises it too. NaN when no position has a pixel.
 double cell_spread(const std::vector<float>& test, const std::vector<float>& reference,
                    const std::vector<uint8_t>& geometry, int width, int height, int cell = 8);
+// The same from a cell_pattern already computed: the RMS of its finite values.
+double pattern_spread(const std::vector<double>& pattern);
 
 // The part of several images' cell patterns (of one size of cell) that they
 // share: the RMS over the positions of their mean, leaving out a position
