@@ -4,9 +4,23 @@
 #include "flags.h"
 #include "locate.h"
 
+#include <ssao/ssao.h>
+
 #include <algorithm>
+#include <sstream>
 
 namespace bench {
+
+namespace {
+
+// The plugin's bound on max_step_texels as the help and the errors print it.
+std::string max_step_texels_text() {
+    std::ostringstream s;
+    s << SSAO_MAX_STEP_TEXELS;
+    return s.str();
+}
+
+}  // namespace
 
 std::string help_text() {
     return "ssao-bench - what accuracy costs in time: error against ray-traced V_R and against the\n"
@@ -37,7 +51,8 @@ std::string help_text() {
            "                         and view (1x radius), no ground truth, no limit, no errors; GPU-timer\n"
            "                         ratios beside the CPU ones (for a real GPU)\n"
            "  --plugin PATH          libssao.so to load (default: as ssao-host finds it)\n"
-           "  --max-step-texels X    every visibility configuration's max_step_texels, (0, 1e6] (default: off,\n"
+           "  --max-step-texels X    every visibility configuration's max_step_texels, (0, " + max_step_texels_text() +
+           "] (default: off,\n"
            "                         each configuration's step count fixed)\n"
            "  --normals gbuffer|depth  the plugin's normals: the G-buffer's, or depth: normal_texture = 0, the\n"
            "                         plugin rebuilds them from depth (default gbuffer)\n"
@@ -148,7 +163,8 @@ Parse parse(int argc, char** argv, Options& o, std::string& error) {
          }},
         {"--max-step-texels", [&](const std::string& f, const std::string& v) {
              const double x = flags::number(f, v);
-             if (!(x > 0.0 && x <= 1e6)) flags::fail(f + " must be in (0, 1e6], got " + flags::quoted(v));
+             if (!(x > 0.0 && x <= SSAO_MAX_STEP_TEXELS))
+                 flags::fail(f + " must be in (0, " + max_step_texels_text() + "], got " + flags::quoted(v));
              flags::check_normal_float(f, v, x);
              o.max_step_texels = static_cast<float>(x);
          }},

@@ -179,10 +179,10 @@ void settings_flags(flags::Valued& table, Options& o) {
         {"--radius", [&](const std::string& f, const std::string& v) { o.radius = ranged(f, v, 0, true, kBig, false); }},
         {"--bias", [&](const std::string& f, const std::string& v) { o.bias = ranged(f, v, 0, false, kBig, false); }},
         {"--depth-step-bias", [&](const std::string& f, const std::string& v) {
-             o.depth_step_bias = ranged(f, v, 0, false, 1e6, false);
+             o.depth_step_bias = ranged(f, v, 0, false, SSAO_MAX_DEPTH_STEP_BIAS, false);
          }},
-        {"--power", [&](const std::string& f, const std::string& v) { o.power = ranged(f, v, 0, true, 16, false); }},
-        {"--strength", [&](const std::string& f, const std::string& v) { o.strength = ranged(f, v, 0, false, 8, false); }},
+        {"--power", [&](const std::string& f, const std::string& v) { o.power = ranged(f, v, 0, true, SSAO_MAX_POWER, false); }},
+        {"--strength", [&](const std::string& f, const std::string& v) { o.strength = ranged(f, v, 0, false, SSAO_MAX_STRENGTH, false); }},
         {"--kernel", [&](const std::string& f, const std::string& v) { o.kernel = parse_choice(f, v, kKernels); }},
         {"--distribution", [&](const std::string& f, const std::string& v) {
              o.distribution = parse_choice(f, v, kDistributions);
@@ -195,7 +195,7 @@ void settings_flags(flags::Valued& table, Options& o) {
         {"--blur-radius", [&](const std::string& f, const std::string& v) {
              o.blur_radius = static_cast<int>(flags::integer(f, v, 1, SSAO_MAX_BLUR_RADIUS));
          }},
-        {"--blur-sigma", [&](const std::string& f, const std::string& v) { o.blur_sigma = ranged(f, v, 0, true, 64, false); }},
+        {"--blur-sigma", [&](const std::string& f, const std::string& v) { o.blur_sigma = ranged(f, v, 0, true, SSAO_MAX_BLUR_SIGMA, false); }},
         {"--blur-tolerance", [&](const std::string& f, const std::string& v) {
              o.blur_tolerance = ranged(f, v, 0, true, 1, false);
          }},
@@ -206,7 +206,7 @@ void settings_flags(flags::Valued& table, Options& o) {
              o.steps = static_cast<int>(flags::integer(f, v, 1, SSAO_MAX_STEPS));
          }},
         {"--max-step-texels", [&](const std::string& f, const std::string& v) {
-             o.max_step_texels = ranged(f, v, 0, false, 1e6, false);
+             o.max_step_texels = ranged(f, v, 0, false, SSAO_MAX_STEP_TEXELS, false);
          }},
         {"--fade-start", [&](const std::string& f, const std::string& v) { o.fade_start = ranged(f, v, 0, false, kBig, false); }},
         {"--fade-end", [&](const std::string& f, const std::string& v) { o.fade_end = ranged(f, v, 0, false, kBig, false); }},
@@ -319,10 +319,10 @@ std::string help_text(const ssao_settings* d, const std::string& default_scene, 
       << def([&](const ssao_settings& s) { return num(s.radius); }) << ")\n"
          "  --bias B                depth bias in scene units, >= 0 (default 0.025 x radius"
       << (d ? ", i.e. " + num(d->bias) + " at radius " + num(d->radius) : std::string()) << ")\n"
-         "  --depth-step-bias K     multiple of the depth format's step, >= 0 (default "
+         "  --depth-step-bias K     multiple of the depth format's step, [0, " << num(SSAO_MAX_DEPTH_STEP_BIAS) << "] (default "
       << def([&](const ssao_settings& s) { return num(s.depth_step_bias); }) << ")\n"
-         "  --power P               exponent on the AO, (0, 16] (default " << def([&](const ssao_settings& s) { return num(s.power); }) << ")\n"
-         "  --strength S            occlusion multiplier, [0, 8]; 0 = no AO at all (default "
+         "  --power P               exponent on the AO, (0, " << num(SSAO_MAX_POWER) << "] (default " << def([&](const ssao_settings& s) { return num(s.power); }) << ")\n"
+         "  --strength S            occlusion multiplier, [0, " << num(SSAO_MAX_STRENGTH) << "]; 0 = no AO at all (default "
       << def([&](const ssao_settings& s) { return num(s.strength); }) << ")\n"
          "  --kernel hemisphere|sphere|separable (default " << def([](const ssao_settings& s) { return std::string(name(s.kernel_shape)); }) << ")\n"
          "  --distribution accelerating|uniform (default " << def([](const ssao_settings& s) { return std::string(name(s.distribution)); }) << ")\n"
@@ -330,8 +330,8 @@ std::string help_text(const ssao_settings* d, const std::string& default_scene, 
          "  --seed N                seed of kernel, noise and hash, 0..4294967295; 0 = default (default "
       << def([](const ssao_settings& s) { return std::to_string(s.seed); }) << ")\n"
          "  --blur depth-aware|box|gaussian|none (default " << def([](const ssao_settings& s) { return std::string(name(s.blur)); }) << ")\n"
-         "  --blur-radius N         blur taps either side, 1..16 (default " << def([](const ssao_settings& s) { return std::to_string(s.blur_radius); }) << ")\n"
-         "  --blur-sigma S          gaussian sigma in pixels, (0, 64] (default: the blur radius"
+         "  --blur-radius N         blur taps either side, 1.." << SSAO_MAX_BLUR_RADIUS << " (default " << def([](const ssao_settings& s) { return std::to_string(s.blur_radius); }) << ")\n"
+         "  --blur-sigma S          gaussian sigma in pixels, (0, " << num(SSAO_MAX_BLUR_SIGMA) << "] (default: the blur radius"
       << (d ? ", " + num(d->blur_sigma) : std::string()) << ")\n"
          "  --blur-tolerance T      depth-aware blur's relative depth tolerance, (0, 1] (default "
       << def([&](const ssao_settings& s) { return num(s.blur_depth_tolerance); }) << ")\n"
@@ -341,7 +341,7 @@ std::string help_text(const ssao_settings* d, const std::string& default_scene, 
          "  --steps N               visibility: steps per direction, 1.." << SSAO_MAX_STEPS << " (default "
       << def([](const ssao_settings& s) { return std::to_string(s.step_count); }) << ")\n"
          "  --max-step-texels X     visibility: the longest a step may be on screen, sampling-grid texels; more\n"
-         "                          steps (up to " << SSAO_MAX_STEPS << ") where the radius spans more, [0, 1e6]; 0 = off: --steps\n"
+         "                          steps (up to " << SSAO_MAX_STEPS << ") where the radius spans more, [0, " << num(SSAO_MAX_STEP_TEXELS) << "]; 0 = off: --steps\n"
          "                          fixed (default "
       << def([&](const ssao_settings& s) { return s.max_step_texels > 0.0f ? num(s.max_step_texels) : std::string("off"); })
       << ")\n"

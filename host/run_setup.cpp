@@ -54,8 +54,9 @@ ssao_settings build_settings(const ssao_api& api, const cli::Options& o, const s
         s.bias = *h.bias > 0.0f ? *h.bias : FLT_MIN;
     }
     if (h.power) {
-        if (!(std::isfinite(*h.power) && *h.power > 0.0f && *h.power <= 16.0f))
-            throw Error("the scene's hint ssao.power = " + fmt(*h.power) + " is out of range (0, 16]");
+        if (!(std::isfinite(*h.power) && *h.power > 0.0f && *h.power <= SSAO_MAX_POWER))
+            throw Error("the scene's hint ssao.power = " + fmt(*h.power) + " is out of range (0, " +
+                        fmt(SSAO_MAX_POWER) + "]");
         s.power = *h.power;
     }
     if (h.fade_start) {

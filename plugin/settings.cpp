@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <limits>
 
@@ -20,28 +21,37 @@ ssao_status fail(std::string& why, ssao_status status, const std::string& what) 
     return status;
 }
 
+// A bound as the messages print it (1e6 as 1e+06, 16 as 16).
+std::string bound(float v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", static_cast<double>(v));
+    return text;
+}
+
 // How many samples, how far, how strong.
 ssao_status resolve_amounts(ssao_settings& r, const PresetRow& defaults, std::string& why) {
     if (r.sample_count == 0) r.sample_count = defaults.sample_count;
     if (r.sample_count > SSAO_MAX_SAMPLES)
         return fail(why, SSAO_ERROR_INVALID_VALUE,
-                    "sample_count " + std::to_string(r.sample_count) + " is outside 1..64");
+                    "sample_count " + std::to_string(r.sample_count) + " is outside 1.." + std::to_string(SSAO_MAX_SAMPLES));
 
     if (!finite(r.radius) || r.radius < 0.0f)
         return fail(why, SSAO_ERROR_INVALID_VALUE, "radius must be a finite number > 0");
     if (r.radius == 0.0f) r.radius = kDefaultRadius;
 
-    if (!finite(r.depth_step_bias) || r.depth_step_bias < 0.0f || r.depth_step_bias > 1e6f)
-        return fail(why, SSAO_ERROR_INVALID_VALUE, "depth_step_bias must be finite and in [0, 1e6]");
+    if (!finite(r.depth_step_bias) || r.depth_step_bias < 0.0f || r.depth_step_bias > SSAO_MAX_DEPTH_STEP_BIAS)
+        return fail(why, SSAO_ERROR_INVALID_VALUE,
+                    "depth_step_bias must be finite and in [0, " + bound(SSAO_MAX_DEPTH_STEP_BIAS) + "]");
     if (r.depth_step_bias == 0.0f) r.depth_step_bias = kDefaultDepthStepBias;
 
-    if (!finite(r.power) || r.power < 0.0f || r.power > kMaxPower)
-        return fail(why, SSAO_ERROR_INVALID_VALUE, "power must be finite and in (0, 16]");
+    if (!finite(r.power) || r.power < 0.0f || r.power > SSAO_MAX_POWER)
+        return fail(why, SSAO_ERROR_INVALID_VALUE, "power must be finite and in (0, " + bound(SSAO_MAX_POWER) + "]");
     if (r.power == 0.0f) r.power = kDefaultPower;
 
-    if (!finite(r.strength) || (r.strength != SSAO_STRENGTH_OFF && (r.strength < 0.0f || r.strength > kMaxStrength)))
-        return fail(why, SSAO_ERROR_INVALID_VALUE,
-                    "strength must be in [0, 8] (0 = default 1) or SSAO_STRENGTH_OFF");
+    if (!finite(r.strength) || (r.strength != SSAO_STRENGTH_OFF && (r.strength < 0.0f || r.strength > SSAO_MAX_STRENGTH)))
+        return fail(why, SSAO_ERROR_INVALID_VALUE, "strength must be in [0, " + bound(SSAO_MAX_STRENGTH) +
+                                                       "] (0 = default " + bound(kDefaultStrength) +
+                                                       ") or SSAO_STRENGTH_OFF");
     if (r.strength == 0.0f) r.strength = kDefaultStrength;
     return SSAO_OK;
 }
@@ -78,10 +88,11 @@ ssao_status resolve_blur_and_output(ssao_settings& r, const PresetRow& defaults,
     if (r.blur_radius == 0) r.blur_radius = kDefaultBlurRadius;
     if (r.blur_radius > SSAO_MAX_BLUR_RADIUS)
         return fail(why, SSAO_ERROR_INVALID_VALUE,
-                    "blur_radius " + std::to_string(r.blur_radius) + " is outside 1..16");
+                    "blur_radius " + std::to_string(r.blur_radius) + " is outside 1.." + std::to_string(SSAO_MAX_BLUR_RADIUS));
 
-    if (!finite(r.blur_sigma) || r.blur_sigma < 0.0f || r.blur_sigma > kMaxBlurSigma)
-        return fail(why, SSAO_ERROR_INVALID_VALUE, "blur_sigma must be finite and in (0, 64]");
+    if (!finite(r.blur_sigma) || r.blur_sigma < 0.0f || r.blur_sigma > SSAO_MAX_BLUR_SIGMA)
+        return fail(why, SSAO_ERROR_INVALID_VALUE,
+                    "blur_sigma must be finite and in (0, " + bound(SSAO_MAX_BLUR_SIGMA) + "]");
     if (r.blur_sigma == 0.0f) r.blur_sigma = static_cast<float>(r.blur_radius);
 
     if (!finite(r.blur_depth_tolerance) || r.blur_depth_tolerance < 0.0f || r.blur_depth_tolerance > 1.0f)
@@ -111,14 +122,19 @@ ssao_status resolve_march(ssao_settings& r, const PresetRow& defaults, std::stri
     if (r.step_count == 0) r.step_count = defaults.step_count;
     if (r.step_count > SSAO_MAX_STEPS)
         return fail(why, SSAO_ERROR_INVALID_VALUE,
-                    "step_count " + std::to_string(r.step_count) + " is outside 1..32");
+                    "step_count " + std::to_string(r.step_count) + " is outside 1.." + std::to_string(SSAO_MAX_STEPS));
+    // Held to a normal, finite float: a tiny radius would derive a denormal
+    // (0 in the shader), a radius near FLT_MAX an infinite thickness that
+    // the settings, handed back, would refuse.
     if (r.thickness == 0.0f)
-        r.thickness = std::max(default_thickness(r.radius, r.step_count), std::numeric_limits<float>::min());
+        r.thickness = std::clamp(default_thickness(r.radius, r.step_count), std::numeric_limits<float>::min(),
+                                 std::numeric_limits<float>::max());
     // A denormal would reach the shader as 0 (flushed), which reads as off.
-    if (!finite(r.max_step_texels) || r.max_step_texels < 0.0f || r.max_step_texels > kMaxStepTexelsLimit ||
+    if (!finite(r.max_step_texels) || r.max_step_texels < 0.0f || r.max_step_texels > SSAO_MAX_STEP_TEXELS ||
         (r.max_step_texels != 0.0f && r.max_step_texels < std::numeric_limits<float>::min()))
         return fail(why, SSAO_ERROR_INVALID_VALUE,
-                    "max_step_texels must be 0 (off) or in [1.2e-38, 1e6] (a normal float)");
+                    "max_step_texels must be 0 (off) or in [1.2e-38, " + bound(SSAO_MAX_STEP_TEXELS) +
+                        "] (a normal float)");
 
     if (!raw_enum_at_most(r.resolution, SSAO_RESOLUTION_QUARTER))
         return fail(why, SSAO_ERROR_INVALID_ENUM, "resolution is not an ssao_resolution");
@@ -137,7 +153,7 @@ ssao_status resolve_extras(ssao_settings& r, const PresetRow&, std::string& why)
         return fail(why, SSAO_ERROR_INVALID_VALUE, "fade_end must be greater than fade_start");
 
     if (!finite(r.radius_pixels) || r.radius_pixels < 0.0f || r.radius_pixels > static_cast<float>(SSAO_MAX_DIMENSION))
-        return fail(why, SSAO_ERROR_INVALID_VALUE, "radius_pixels must be finite and in [0, 16384] (0 = off)");
+        return fail(why, SSAO_ERROR_INVALID_VALUE, "radius_pixels must be finite and in [0, " + std::to_string(SSAO_MAX_DIMENSION) + "] (0 = off)");
 
     if (!raw_enum_at_most(r.debug_view, SSAO_DEBUG_VIEW_BLUR_WEIGHTS))
         return fail(why, SSAO_ERROR_INVALID_ENUM, "debug_view is not an ssao_debug_view");

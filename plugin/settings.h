@@ -35,14 +35,10 @@ constexpr float kThicknessStepsOfRadius = 1.5f;
 inline float default_thickness(float radius, uint32_t step_count) {
     return radius * (kThicknessBaseOfRadius + kThicknessStepsOfRadius / static_cast<float>(step_count));
 }
-// The largest max_step_texels accepted. Its default is 0 (off): a bound in
-// texels adds steps with the radius on screen and so with the resolution,
-// which on ssao-bench's standard views cost DEFAULT 13% for 0.01 dB
-// (docs/benchmark.md, "Step length").
-constexpr float kMaxStepTexelsLimit = 1e6f;
-constexpr float kMaxStrength = 8.0f;
-constexpr float kMaxPower = 16.0f;
-constexpr float kMaxBlurSigma = 64.0f;
+// max_step_texels defaults to 0 (off): a bound in texels adds steps with the
+// radius on screen and so with the resolution, which on ssao-bench's
+// standard views cost DEFAULT 13% for 0.01 dB (docs/benchmark.md, "Step
+// length"). The fields' upper bounds are the header's (SSAO_MAX_POWER ...).
 
 // Resolves zero fields to defaults and validates the rest. `in` may be of
 // any known version (struct_versions.h): the fields it lacks read as zero. On failure returns

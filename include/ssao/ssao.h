@@ -155,6 +155,11 @@ extern "C" {
 #define SSAO_MAX_DIMENSION 16384   /**< largest viewport width or height, pixels */
 #define SSAO_TEXTURE_UNITS_USED 4  /**< texture units 0..3 are bound during execute (and restored) */
 #define SSAO_MAX_PASSES 8          /**< passes of one execute: room in ssao_timings (1.1) */
+#define SSAO_MAX_POWER 16.0f       /**< largest power */
+#define SSAO_MAX_STRENGTH 8.0f     /**< largest strength */
+#define SSAO_MAX_BLUR_SIGMA 64.0f  /**< largest blur_sigma, pixels */
+#define SSAO_MAX_DEPTH_STEP_BIAS 1e6f  /**< largest depth_step_bias */
+#define SSAO_MAX_STEP_TEXELS 1e6f  /**< largest max_step_texels (1.4) */
 
 /* ---------------------------------------------------------------- status */
 /** What every function returns: SSAO_OK or why it refused (status_string gives a sentence). */

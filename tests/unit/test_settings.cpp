@@ -12,6 +12,7 @@
 #include <limits>
 #include <random>
 #include <string>
+#include <utility>
 #include <vector>
 
 using ssao_impl::preset_settings;
@@ -195,6 +196,51 @@ TEST_CASE("settings: the derived bias stays a normal float > 0 for a tiny radius
     in.method = SSAO_METHOD_KERNEL;
     in.radius = 2.0f;
     CHECK(resolve_ok(in).bias == doctest::Approx(0.05f));  // ordinary radii keep 0.025 x radius
+}
+
+TEST_CASE("settings: a radius near FLT_MAX derives a finite thickness, and the result resolves again") {
+    for (uint32_t steps : {1u, 4u}) {
+        CAPTURE(steps);
+        ssao_settings in = zeroed();
+        in.radius = std::numeric_limits<float>::max();
+        in.step_count = steps;
+        const ssao_settings out = resolve_ok(in);
+        CHECK(std::isfinite(out.thickness));
+        CHECK(out.thickness > 0.0f);
+        CHECK(same(resolve_ok(out), out));
+    }
+}
+
+TEST_CASE("settings: the header's bounds are the accepted maxima") {
+    const auto above = [](float v) { return std::nextafter(v, std::numeric_limits<float>::infinity()); };
+    ssao_settings in = zeroed();
+    in.power = SSAO_MAX_POWER;
+    in.strength = SSAO_MAX_STRENGTH;
+    in.blur_sigma = SSAO_MAX_BLUR_SIGMA;
+    in.depth_step_bias = SSAO_MAX_DEPTH_STEP_BIAS;
+    in.max_step_texels = SSAO_MAX_STEP_TEXELS;
+    const ssao_settings out = resolve_ok(in);
+    CHECK(out.power == 16.0f);  // the documented numbers
+    CHECK(out.strength == 8.0f);
+    CHECK(out.blur_sigma == 64.0f);
+    CHECK(out.depth_step_bias == 1e6f);
+    CHECK(out.max_step_texels == 1e6f);
+    const std::pair<const char*, float ssao_settings::*> fields[] = {
+        {"power", &ssao_settings::power},
+        {"strength", &ssao_settings::strength},
+        {"blur_sigma", &ssao_settings::blur_sigma},
+        {"depth_step_bias", &ssao_settings::depth_step_bias},
+        {"max_step_texels", &ssao_settings::max_step_texels},
+    };
+    for (const auto& [name, field] : fields) {
+        CAPTURE(name);
+        ssao_settings bad = in;
+        bad.*field = above(in.*field);
+        ssao_settings untouched = zeroed();
+        std::string why;
+        CHECK(ssao_impl::resolve_settings(bad, untouched, why) == SSAO_ERROR_INVALID_VALUE);
+        CHECK(why.find(name) != std::string::npos);
+    }
 }
 
 TEST_CASE("settings: SSAO_STRENGTH_OFF is accepted and stays off") {
