@@ -104,7 +104,7 @@ ssao_status initialise(ssao_context& ctx, const ssao_context_desc& desc) {
     const int v = major * 10 + minor;
     ctx.caps.clip_control = gl.ClipControl != nullptr && (v >= 45 || has_gl_extension(gl, "GL_ARB_clip_control"));
     ctx.caps.depth_stencil_mode = v >= 43;
-    ctx.caps.texture_target_query = v >= 45 && gl.GetTextureParameteriv != nullptr;
+    ctx.caps.texture_target_query = v >= 45 && gl.GetTextureParameteriv != nullptr && gl.GetTextureLevelParameteriv != nullptr;
     ctx.caps.query_buffer = v >= 44 || has_gl_extension(gl, "GL_ARB_query_buffer_object");
     ctx.caps.indexed_blend = v >= 40 && gl.BlendFuncSeparatei != nullptr && gl.BlendEquationSeparatei != nullptr;
     if (v >= 41 && gl.GetFloati_v && gl.ViewportIndexedfv && gl.ScissorIndexedv) {
