@@ -4,11 +4,19 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <sstream>
+#include <string>
 
 namespace camera {
 namespace {
 
 bool finite3(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+std::string num(float v) {
+    std::ostringstream s;
+    s << v;
+    return s.str();
+}
 
 // Looks at the bounds' centre from above and in front, at the distance where all
 // eight corners of the bounding box fit the field of view with a 5% margin.
@@ -110,7 +118,17 @@ Camera apply(const scene::Scene& s, Camera c, const Overrides& o) {
     if (o.znear) c.znear = *o.znear;
     if (o.zfar) c.zfar = *o.zfar;
     if (c.orthographic && std::isinf(c.zfar)) c.zfar = c.znear + 1e4f;
-    if (!(c.zfar > c.znear)) c.zfar = c.znear * 2.0f + 1.0f;
+    if (!(c.zfar > c.znear)) {
+        // A given plane is never replaced behind the user's back.
+        if (o.znear && o.zfar) throw Error("--far " + num(*o.zfar) + " must be beyond --near " + num(*o.znear));
+        if (o.zfar)
+            throw Error("--far " + num(*o.zfar) + " is not beyond the near plane fitted to the scene (" +
+                        num(c.znear) + "); give --near too");
+        if (o.znear)
+            throw Error("--near " + num(*o.znear) + " is not in front of the far plane fitted to the scene (" +
+                        num(c.zfar) + "); give --far too");
+        c.zfar = c.znear * 2.0f + 1.0f;
+    }
     if (o.reverse_z) {
         c.reverse_z = true;
         c.zero_to_one = true;

@@ -6,6 +6,7 @@
 #include <glm/glm.hpp>
 
 #include <optional>
+#include <stdexcept>
 
 namespace camera {
 
@@ -36,8 +37,15 @@ struct Overrides {
     bool reverse_z = false;                  // sets reverse_z and zero_to_one
 };
 
+// A near or far plane the command line gave that the other plane, given or
+// fitted, contradicts: the message names the flag.
+struct Error : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
 // `c` with the overrides applied. When the eye or the target moved and near/far
 // were not given, near and far are refitted to the scene's bounds (as choose does).
+// Throws Error where a given --near or --far does not leave far beyond near.
 Camera apply(const scene::Scene& s, Camera c, const Overrides& o);
 
 // Where the starting camera came from.

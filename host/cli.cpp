@@ -45,6 +45,8 @@ const std::vector<std::pair<const char*, ssao_blur>> kBlurs = {
     {"depth-aware", SSAO_BLUR_DEPTH_AWARE}, {"box", SSAO_BLUR_BOX_4X4}, {"gaussian", SSAO_BLUR_GAUSSIAN}, {"none", SSAO_BLUR_NONE}};
 const std::vector<std::pair<const char*, ssao_output_format>> kOutputs = {
     {"r8", SSAO_OUTPUT_R8}, {"r16f", SSAO_OUTPUT_R16F}};
+const std::vector<std::pair<const char*, ssao_resolution>> kResolutions = {
+    {"full", SSAO_RESOLUTION_FULL}, {"half", SSAO_RESOLUTION_HALF}, {"quarter", SSAO_RESOLUTION_QUARTER}};
 const std::vector<std::pair<const char*, ssao_method>> kMethods = {
     {"kernel", SSAO_METHOD_KERNEL}, {"visibility", SSAO_METHOD_VISIBILITY}};
 const std::vector<std::pair<const char*, DepthFormat>> kDepths = {
@@ -81,6 +83,7 @@ const char* name(ssao_rotation v) { return choice_name(v, kRotations); }
 const char* name(ssao_blur v) { return choice_name(v, kBlurs); }
 const char* name(ssao_output_format v) { return choice_name(v, kOutputs); }
 const char* name(ssao_method v) { return choice_name(v, kMethods); }
+const char* name(ssao_resolution v) { return choice_name(v, kResolutions); }
 const char* name(DepthFormat v) { return choice_name(v, kDepths); }
 
 std::optional<ssao_blur> parse_blur(const std::string& s) {
@@ -200,6 +203,7 @@ void settings_flags(flags::Valued& table, Options& o) {
              o.blur_tolerance = ranged(f, v, 0, true, 1, false);
          }},
         {"--output-format", [&](const std::string& f, const std::string& v) { o.output_format = parse_choice(f, v, kOutputs); }},
+        {"--resolution", [&](const std::string& f, const std::string& v) { o.resolution = parse_choice(f, v, kResolutions); }},
         {"--method", [&](const std::string& f, const std::string& v) { o.method = parse_choice(f, v, kMethods); }},
         {"--thickness", [&](const std::string& f, const std::string& v) { o.thickness = ranged(f, v, 0, true, kBig, false); }},
         {"--steps", [&](const std::string& f, const std::string& v) {
@@ -317,8 +321,9 @@ std::string help_text(const ssao_settings* d, const std::string& default_scene, 
          "  --radius R              sampling radius in scene units, > 0 (default: scene hint, else 0.05 x the\n"
          "                          scene's bounding-box diagonal; plugin's own default "
       << def([&](const ssao_settings& s) { return num(s.radius); }) << ")\n"
-         "  --bias B                depth bias in scene units, >= 0 (default 0.025 x radius"
-      << (d ? ", i.e. " + num(d->bias) + " at radius " + num(d->radius) : std::string()) << ")\n"
+         "  --bias B                depth bias in scene units, >= 0 (default "
+      << (d ? num(d->bias / d->radius) + " x radius, i.e. " + num(d->bias) + " at radius " + num(d->radius)
+            : std::string("a fraction of the radius")) << ")\n"
          "  --depth-step-bias K     multiple of the depth format's step, [0, " << num(SSAO_MAX_DEPTH_STEP_BIAS) << "] (default "
       << def([&](const ssao_settings& s) { return num(s.depth_step_bias); }) << ")\n"
          "  --power P               exponent on the AO, (0, " << num(SSAO_MAX_POWER) << "] (default " << def([&](const ssao_settings& s) { return num(s.power); }) << ")\n"
@@ -346,6 +351,8 @@ std::string help_text(const ssao_settings* d, const std::string& default_scene, 
       << def([&](const ssao_settings& s) { return s.max_step_texels > 0.0f ? num(s.max_step_texels) : std::string("off"); })
       << ")\n"
          "  --output-format r8|r16f plugin output texture format (default " << def([](const ssao_settings& s) { return std::string(name(s.output_format)); }) << ")\n"
+         "  --resolution full|half|quarter  the grid the AO is estimated on, upsampled to the viewport below full\n"
+         "                          (default " << def([](const ssao_settings& s) { return std::string(name(s.resolution)); }) << ")\n"
          "  --fade-start D          distance fade: view depth where AO starts fading to 1, >= 0 (default: scene\n"
          "                          hint, else 0); needs a fade end\n"
          "  --fade-end D            view depth beyond which AO is 1, > fade start; 0 = no fade (default: scene\n"

@@ -56,6 +56,7 @@ struct Options {
     std::optional<int> blur_radius;
     std::optional<float> blur_sigma, blur_tolerance;
     std::optional<ssao_output_format> output_format;
+    std::optional<ssao_resolution> resolution;
     std::optional<ssao_method> method;
     std::optional<float> thickness;  // visibility: view units
     std::optional<int> steps;        // visibility: steps per direction
@@ -96,6 +97,7 @@ const char* name(ssao_kernel_distribution v);
 const char* name(ssao_rotation v);
 const char* name(ssao_blur v);
 const char* name(ssao_output_format v);
+const char* name(ssao_resolution v);
 const char* name(ssao_method v);
 const char* name(DepthFormat v);
 // Parses a --blur name ("depth-aware", "box", "gaussian", "none"); used for

@@ -123,11 +123,12 @@ std::string suggestion(const std::string& unknown, const std::vector<std::string
     const bool nested = std::all_of(prefixed.begin(), prefixed.end(),
                                     [&](const std::string& k) { return !prefixed.empty() && k.rfind(prefixed[0], 0) == 0; });
     if (!prefixed.empty() && nested && unknown.size() > 2) return prefixed[0];
-    size_t best = 3;
+    size_t best = 2;  // within two edits, as the docs promise
     std::vector<std::string> closest;
     for (const auto& k : known) {
         const size_t d = edit_distance(unknown, k);
-        if (d < best) {
+        if (d > best) continue;
+        if (d < best || closest.empty()) {
             best = d;
             closest = {k};
         } else if (d == best) {
@@ -167,6 +168,7 @@ Outcome walk(int argc, const char* const* argv, const Valued& valued, const Swit
                 arg = arg.substr(0, eq);
                 has_value = true;
             }
+            if (arg == "--help" || arg == "--version") fail(arg + " takes no value");
             if (auto s = switches.find(arg); s != switches.end()) {
                 if (has_value) fail(arg + " takes no value");
                 s->second();

@@ -94,6 +94,7 @@ ssao_settings build_settings(const ssao_api& api, const cli::Options& o, const s
     if (o.blur_sigma) s.blur_sigma = *o.blur_sigma;
     if (o.blur_tolerance) s.blur_depth_tolerance = *o.blur_tolerance;
     if (o.output_format) s.output_format = *o.output_format;
+    if (o.resolution) s.resolution = *o.resolution;
     if (o.method) s.method = *o.method;
     if (o.thickness) s.thickness = *o.thickness;
     if (o.steps) s.step_count = static_cast<uint32_t>(*o.steps);

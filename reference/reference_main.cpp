@@ -49,7 +49,8 @@ using flags::quoted;
 
 float positive(const std::string& flag, const std::string& text) {
     const double v = flags::number(flag, text);
-    if (!(v > 0.0) || v > 1e30) fail(flag + " " + text + " must be greater than 0");
+    if (!(v > 0.0)) fail(flag + " " + text + " must be greater than 0");
+    if (v > 1e30) fail(flag + " " + text + " is out of range (0, 1e+30]");  // as ssao-host words it
     flags::check_normal_float(flag, text, v);
     return float(v);
 }
@@ -224,7 +225,11 @@ Setup load(Options& o) {
     limits.allow_outside_files = o.allow_outside_files;
     if (!scene::load(o.scene_path, s.sc, error, limits)) throw Failure(error);
     const float aspect = float(o.width) / float(o.height);
-    s.cam = camera::initial(s.sc, aspect, o.cam, bundled_scene, &s.camera_source);
+    try {
+        s.cam = camera::initial(s.sc, aspect, o.cam, bundled_scene, &s.camera_source);
+    } catch (const camera::Error& e) {
+        throw Failure(e.what());
+    }
     // --radius, else the scene's hint, else 0.05 x the bounding-box diagonal
     // (else the plugin's default 0.5).
     if (o.radius) {

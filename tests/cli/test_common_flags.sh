@@ -30,6 +30,9 @@ for tool in "$host" "$reference" "$error" "$bench"; do
   check "$name --bogus: the line starts '$name: error: '" bash -c '"$1" --bogus 2>&1 >/dev/null | grep -q "^$2: error: unknown flag"' _ "$tool" "$name"
   check "$name --verison: did you mean --version?" expect_usage_error "$tool" "unknown flag '--verison'; did you mean --version?" --verison
   check "$name --hel: did you mean --help? (a unique prefix)" expect_usage_error "$tool" "did you mean --help?" --hel
+  check "$name --bogus: no guess three edits away (--out)" bash -c '! "$1" --bogus 2>&1 | grep -q "did you mean"' _ "$tool"
+  check "$name --version=1: --version takes no value" expect_usage_error "$tool" "--version takes no value" --version=1
+  check "$name --help=1: --help takes no value" expect_usage_error "$tool" "--help takes no value" --help=1
 done
 # A misspelling of each tool's own flags (within two edits, or a unique prefix).
 check "ssao-host --radus: did you mean --radius?" expect_usage_error "$host" "did you mean --radius?" --radus 0.3

@@ -556,7 +556,7 @@ TEST_CASE("--help lists every flag with the plugin's own defaults") {
           "--normals", "--normal-format", "--samples", "--radius", "--bias", "--depth-step-bias", "--power",
           "--strength", "--kernel", "--distribution", "--rotation", "--seed", "--blur", "--blur-radius",
           "--blur-sigma", "--blur-tolerance", "--output-format", "--preset", "--frames", "--only", "--sheet",
-          "--gl33", "--out", "--method", "--thickness", "--steps", "--max-step-texels"})
+          "--gl33", "--out", "--method", "--thickness", "--steps", "--max-step-texels", "--resolution"})
         CHECK_MESSAGE(r.out.find(flag) != std::string::npos, flag);
     // The defaults shown are the plugin's resolved zeroed settings.
     plugin::Library lib;
@@ -588,6 +588,38 @@ TEST_CASE("--help lists every flag with the plugin's own defaults") {
     std::ostringstream thickness;
     thickness << "(default radius x (0.5 + 1.5 / steps): " << d.thickness / d.radius << " x radius)";
     CHECK(r.out.find(thickness.str()) != std::string::npos);
+    std::ostringstream bias;  // the fraction and the value agree with the plugin's (the fraction once read 10x)
+    bias << "(default " << d.bias / d.radius << " x radius, i.e. " << d.bias << " at radius " << d.radius << ")";
+    CHECK(line_of("--bias").find(bias.str()) != std::string::npos);
+    const char* grid = d.resolution == SSAO_RESOLUTION_FULL ? "full" : d.resolution == SSAO_RESOLUTION_HALF ? "half" : "quarter";
+    CHECK(r.out.find("(default " + std::string(grid) + ")", r.out.find("  --resolution ")) < r.out.find("  --fade-start"));
+}
+
+TEST_CASE("--resolution reaches the plugin: the default's grid gives the default's image, another grid another") {
+    auto render = [&](const std::string& name, const std::vector<std::string>& extra) {
+        const std::string dir = fresh_dir(name);
+        std::vector<std::string> args = {"--width", "64", "--height", "48", "--only", "ao", "--out", dir};
+        args.insert(args.end(), extra.begin(), extra.end());
+        const Run r = run_host(args);
+        INFO("stdout: " << r.out << "\nstderr: " << r.err);
+        REQUIRE(r.exit_code == 0);
+        return std::make_pair(load_exr(dir + "/ao.exr"), r.out);
+    };
+    const auto plain = render("resolution_default", {});
+    const auto half = render("resolution_half", {"--resolution", "half"});
+    const auto full = render("resolution_full", {"--resolution", "full"});
+    const auto quarter = render("resolution_quarter", {"--resolution", "quarter"});
+    CHECK(plain.second.find(", half resolution, ") != std::string::npos);  // DEFAULT runs at half
+    CHECK(compare(plain.first, half.first).max == 0.0);
+    CHECK(full.second.find(", full resolution, ") != std::string::npos);
+    CHECK(quarter.second.find(", quarter resolution, ") != std::string::npos);
+    CHECK(compare(full.first, half.first).max > 0.0);
+    CHECK(compare(quarter.first, half.first).max > 0.0);
+    const Run bad = run_host({"--resolution", "eighth"});
+    CHECK(bad.exit_code == 2);
+    const auto lines = bad.own_error_lines();
+    REQUIRE(lines.size() == 1);
+    CHECK(lines[0].find("--resolution expects one of full|half|quarter") != std::string::npos);
 }
 
 TEST_CASE("usage errors of the estimator flags exit with status 2 and one line naming the flag") {
@@ -603,6 +635,27 @@ TEST_CASE("usage errors of the estimator flags exit with status 2 and one line n
         const auto lines = r.own_error_lines();
         REQUIRE(lines.size() == 1);
         CHECK(lines[0].find(args[0]) != std::string::npos);
+    }
+}
+
+TEST_CASE("a --near or --far that the fitted other plane contradicts is an error naming it, not replaced") {
+    // The framed camera's planes hug the scene: a far plane inside it, or a
+    // near plane beyond it, given alone, used to be moved silently.
+    const std::pair<std::vector<std::string>, std::string> cases[] = {
+        {{"--far", "0.001"}, "--far 0.001 is not beyond the near plane fitted to the scene"},
+        {{"--near", "1000"}, "--near 1000 is not in front of the far plane fitted to the scene"},
+    };
+    for (const auto& [flags_, expect] : cases) {
+        CAPTURE(expect);
+        std::vector<std::string> args = {"--width", "16", "--height", "12", "--only", "ao", "--out",
+                                         fresh_dir("clip_planes")};
+        args.insert(args.end(), flags_.begin(), flags_.end());
+        const Run r = run_host(args);
+        CAPTURE(r.err);
+        CHECK(r.exit_code == 1);
+        const auto lines = r.own_error_lines();
+        REQUIRE(lines.size() == 1);
+        CHECK(lines[0].find(expect) != std::string::npos);
     }
 }
 
