@@ -101,7 +101,10 @@ std::optional<int> parse_args(int argc, char** argv, Args& a) {
         {"--ref-stderr", [&](const std::string&, const std::string& v) { a.stderr_path = v; }},
         {"--ref-depth", [&](const std::string&, const std::string& v) { a.depth_path = v; }},
         {"--limit", [&](const std::string&, const std::string& v) { a.limit_path = v; }},
-        {"--csv", [&](const std::string&, const std::string& v) { a.csv_path = v; }},
+        {"--csv", [&](const std::string& f, const std::string& v) {
+             if (v.empty()) flags::fail(f + " expects a file");
+             a.csv_path = v;
+         }},
         {"--label", [&](const std::string&, const std::string& v) { a.label = v; }},
         {"--band", [&](const std::string& f, const std::string& v) { a.band = int(flags::integer(f, v, 0, 256)); }},
     };
@@ -296,12 +299,19 @@ void print_report(const Args& a, const Images& im, const Results& r, const std::
     }
 }
 
-void append_csv(const Args& a, const Images& im, const Results& r) {
-    const bool fresh = !is_file(a.csv_path);
+// --csv's file, opened for appending before anything is compared or printed,
+// so that a path it cannot write fails first, with the reason; fresh: it is new.
+std::ofstream open_csv(const Args& a, bool& fresh) {
+    fresh = !is_file(a.csv_path);
     std::ofstream csv(a.csv_path, std::ios::app);
-    if (!csv) throw Failure("cannot write " + a.csv_path + ".");
+    if (!csv) throw Failure("cannot write " + a.csv_path + " (" + std::strerror(errno) + ").");
+    return csv;
+}
+
+void append_csv(std::ofstream& csv, bool fresh, const Args& a, const Images& im, const Results& r) {
     if (fresh) csv << metrics::csv_header();
     csv << (im.limit.empty() ? metrics::csv_rows(r.stats, a.label) : metrics::csv_rows(r.split, a.label));
+    csv.flush();
     if (!csv) throw Failure("cannot write " + a.csv_path + ".");
 }
 
@@ -312,9 +322,12 @@ int run(int argc, char** argv) {
     try {
         const Images im = read_images(a);
         const std::vector<std::string> bare = check_provenance(a);
+        bool fresh = false;
+        std::ofstream csv;
+        if (!a.csv_path.empty()) csv = open_csv(a, fresh);
         const Results r = compare(a, im);
         print_report(a, im, r, bare);
-        if (!a.csv_path.empty()) append_csv(a, im, r);
+        if (csv.is_open()) append_csv(csv, fresh, a, im, r);
     } catch (const Failure& f) {
         std::fprintf(stderr, "ssao-error: error: %s\n", f.what());
         return 1;

@@ -279,6 +279,15 @@ TEST_CASE("a tiny reference run, compared with itself by ssao-error") {
     const Run band = run(kErr + " a.exr b.exr --band x");
     CHECK(band.code != 0);
     CHECK(band.output.find("--band") != std::string::npos);
+    // A CSV it cannot write fails before the table, with the reason; an empty path is a usage error.
+    const Run unwritable = run(kErr + " " + out + "/reference_ao.exr " + out + " --csv " + out + "/no/such/dir/e.csv");
+    CHECK(unwritable.code == 1);
+    CHECK(unwritable.output.find("ssao-error: error: cannot write") == 0);
+    CHECK(unwritable.output.find("No such file or directory") != std::string::npos);
+    CHECK(std::count(unwritable.output.begin(), unwritable.output.end(), '\n') == 1);
+    const Run empty_csv = run(kErr + " " + out + "/reference_ao.exr " + out + " --csv ''");
+    CHECK(empty_csv.code == 2);
+    CHECK(empty_csv.output.find("--csv expects a file") != std::string::npos);
 }
 
 TEST_CASE("ssao-error refuses images that are not AO, and a reference with nothing to compare") {
