@@ -645,7 +645,9 @@ TEST_CASE("a --near or --far that the fitted other plane contradicts is an error
         {{"--far", "0.001"}, "--far 0.001 is not beyond the near plane fitted to the scene"},
         {{"--near", "1000"}, "--near 1000 is not in front of the far plane fitted to the scene"},
     };
-    for (const auto& [flags_, expect] : cases) {
+    for (const auto& entry : cases) {
+        const std::vector<std::string>& flags_ = entry.first;
+        const std::string expect = entry.second;
         CAPTURE(expect);
         std::vector<std::string> args = {"--width", "16", "--height", "12", "--only", "ao", "--out",
                                          fresh_dir("clip_planes")};

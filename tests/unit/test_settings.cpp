@@ -232,7 +232,9 @@ TEST_CASE("settings: the header's bounds are the accepted maxima") {
         {"depth_step_bias", &ssao_settings::depth_step_bias},
         {"max_step_texels", &ssao_settings::max_step_texels},
     };
-    for (const auto& [name, field] : fields) {
+    for (const auto& entry : fields) {
+        const std::string name = entry.first;  // a plain variable: CAPTURE's lambda cannot take a structured binding
+        const auto field = entry.second;
         CAPTURE(name);
         ssao_settings bad = in;
         bad.*field = above(in.*field);
