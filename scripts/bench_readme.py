@@ -157,6 +157,9 @@ def main():
         blocks["step_length_summary"] = step_length_summary(d + "/step_length/full_texels4.csv", rows)
     if os.path.exists(d + "/upsample/taps2x2_dirs8.csv"):
         blocks["upsample"] = upsample_table(d + "/upsample")
+    if os.path.exists(d + "/thickness_every_view/base0.5_k2.csv"):
+        blocks["thickness_every_view"] = thickness_every_view_table(d + "/thickness_every_view",
+                                                                    d + "/upsample/taps2x2_dirs8.csv")
     if os.path.exists(d + "/cell_pattern/cell_pattern.csv"):
         blocks["cell_pattern"] = cell_pattern_table(d + "/cell_pattern/cell_pattern.csv")
     if os.path.exists(d + "/gpu/bench.csv"):
@@ -337,6 +340,31 @@ def upsample_table(d):
             taps, dirs, f(mean(r["psnr"] for r in med)), within, len(med), cells, len(med),
             f(median(r["x_textbook_cpu"] for r in med), 3), f(mean(r["psnr"] for r in low)),
             f(median(r["x_textbook_cpu"] for r in low), 3)))
+    return "\n".join(lines)
+
+
+def thickness_every_view_table(d, shipped):
+    """The thickness rule T = R (base + k / steps) over every scene, view and radius: one quick run per rule
+    (DIR/base*_k*.csv; the shipped rule's run is `shipped`), each preset's mean PSNR, and MEDIUM's cases within
+    3 dB of the limit and its bias (mean over the cases, and the worst)."""
+    runs = [(0.5, 1.5, shipped)] + [(b, k, d + "/" + name) for b, k, name in
+                                    ((0.375, 1.5, "base0.375_k1.5.csv"), (0.625, 1.5, "base0.625_k1.5.csv"),
+                                     (0.5, 2.0, "base0.5_k2.csv"), (0.75, 1.0, "base0.75_k1.csv"))]
+    lines = ["| T = R (base + k / steps) | T at 4 steps (MEDIUM, HIGH) | T at 8 steps (LOW, ULTRA) | LOW | MEDIUM | "
+             "HIGH | ULTRA | MEDIUM within 3 dB of the limit | MEDIUM bias: mean, worst |",
+             "|---|---:|---:|---:|---:|---:|---:|---:|---:|"]
+    for base, k, path in runs:
+        rows = [r for r in load(path) if r["width"] == 320]
+        limit = {case_name(r): r for r in rows if r["kind"] == "limit"}
+        means = []
+        for _, config, _ in PRESETS:
+            means.append(f(mean(r["psnr"] for r in rows if r["config"] == config and r["psnr"] == r["psnr"])))
+        med = [r for r in rows if r["config"] == PRESETS[1][1] and r["psnr"] == r["psnr"]]
+        within = sum(1 for r in med if limit[case_name(r)]["psnr"] - r["psnr"] <= 3.0)
+        label = "%g + %g / steps%s" % (base, k, " (shipped)" if path == shipped else "")
+        lines.append("| %s | %.3g R | %.3g R | %s | %d of %d | %s, %s |" % (
+            label, base + k / 4, base + k / 8, " | ".join(means), within, len(med),
+            signed(mean(r["bias"] for r in med)), signed(max(r["bias"] for r in med), 3)))
     return "\n".join(lines)
 
 
