@@ -185,6 +185,10 @@ Outcome walk(int argc, const char* const* argv, const Valued& valued, const Swit
             }
             if (!has_value) {
                 if (i + 1 >= argc) fail(arg + " needs a value");
+                // "--out --gl33" forgot the value: the next flag is not taken as
+                // one (a negative number has one dash; --flag=--x still passes).
+                const std::string next = argv[i + 1];
+                if (next.size() > 2 && next.rfind("--", 0) == 0) fail(arg + " needs a value, got the flag " + quoted(next));
                 value = argv[++i];
             }
             h->second(arg, value);

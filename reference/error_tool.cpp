@@ -78,7 +78,7 @@ bool is_file(const std::string& p) {
 }
 
 int usage_error(const std::string& m) {
-    std::fprintf(stderr, "ssao-error: error: %s (see --help).\n", m.c_str());
+    flags::print_error("ssao-error", m + " (see --help)");
     return 2;
 }
 
@@ -114,7 +114,7 @@ std::optional<int> parse_args(int argc, char** argv, Args& a) {
         case flags::Outcome::Help: std::fputs(kHelp, stdout); return 0;
         case flags::Outcome::Version: std::printf("%s\n", flags::version_line("ssao-error").c_str()); return 0;
         case flags::Outcome::Error:
-            std::fprintf(stderr, "ssao-error: error: %s.\n", error.c_str());  // the message names --help already
+            flags::print_error("ssao-error", error);  // the message names --help already
             return 2;
         case flags::Outcome::Run: break;
     }

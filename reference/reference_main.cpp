@@ -409,7 +409,7 @@ static int run(int argc, char** argv) {
     switch (parse(argc, argv, o, error)) {
         case Parse::Help: std::fputs(help_text().c_str(), stdout); return 0;
         case Parse::Version: std::printf("%s\n", flags::version_line("ssao-reference").c_str()); return 0;
-        case Parse::Error: std::fprintf(stderr, "ssao-reference: error: %s.\n", error.c_str()); return 2;
+        case Parse::Error: flags::print_error("ssao-reference", error); return 2;
         case Parse::Run: break;
     }
     try {

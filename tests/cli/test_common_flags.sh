@@ -33,6 +33,10 @@ for tool in "$host" "$reference" "$error" "$bench"; do
   check "$name --bogus: no guess three edits away (--out)" bash -c '! "$1" --bogus 2>&1 | grep -q "did you mean"' _ "$tool"
   check "$name --version=1: --version takes no value" expect_usage_error "$tool" "--version takes no value" --version=1
   check "$name --help=1: --help takes no value" expect_usage_error "$tool" "--help takes no value" --help=1
+  valued=--out
+  [ "$name" = ssao-error ] && valued=--label
+  check "$name $valued --bogus: a flag is not taken as $valued's value" \
+    expect_usage_error "$tool" "$valued needs a value, got the flag '--bogus'" "$valued" --bogus
 done
 # A misspelling of each tool's own flags (within two edits, or a unique prefix).
 check "ssao-host --radus: did you mean --radius?" expect_usage_error "$host" "did you mean --radius?" --radus 0.3

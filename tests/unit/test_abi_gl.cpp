@@ -731,6 +731,21 @@ TEST_CASE("abi: create_context with the host's program flagged for deletion keep
     CHECK(api().destroy_context(second) == SSAO_OK);
 }
 
+// Runs this test program as a child whose loader hands back NULL for `name`
+// (test_abi_main.cpp child_missing_function: create_context's status where
+// it fails, else 0 when one execute succeeded) and checks that it exits with
+// `code`, not by a crash.
+namespace {
+void check_child_without(const char* name, int code) {
+    const std::string what_ = name;
+    CAPTURE(what_);
+    const testgl::ChildResult child = testgl::run_self("unit_abi", {"--unit-child-missing", name});
+    CAPTURE(child.code);
+    CHECK_FALSE(child.crashed);
+    CHECK(child.code == code);
+}
+}  // namespace
+
 TEST_CASE("abi: create_context is GL_LOAD when one GL 3.3 function is missing") {
     // Each run is a fresh process (a NULL function pointer called by the
     // plugin would crash it); the child exits with create_context's status.
@@ -738,15 +753,7 @@ TEST_CASE("abi: create_context is GL_LOAD when one GL 3.3 function is missing") 
                            "glGenSamplers",      "glSamplerParameteri", "glGenVertexArrays",
                            "glUniformBlockBinding", "glDrawArrays",     "glBindBufferBase",
                            "glCheckFramebufferStatus", "glClearBufferfv", "glDeleteTextures"};
-    for (const char* name : names) {
-        const std::string what_ = name;
-        CAPTURE(what_);
-        const testgl::ChildResult child = testgl::run_self("unit_abi", {"--unit-child-missing", name});
-        CAPTURE(child.crashed);
-        CAPTURE(child.code);
-        CHECK_FALSE(child.crashed);
-        CHECK(child.code == SSAO_ERROR_GL_LOAD);
-    }
+    for (const char* name : names) check_child_without(name, SSAO_ERROR_GL_LOAD);
 }
 
 TEST_CASE("abi: a loader without an optional GL function gets a context that executes without it") {
@@ -758,14 +765,7 @@ TEST_CASE("abi: a loader without an optional GL function gets a context that exe
                            "glViewportIndexedfv",          "glScissorIndexedv",       "glQueryCounter",
                            "glGetQueryObjectui64v",        "glPushDebugGroup",        "glObjectLabel",
                            "glGetObjectLabel",             "glProgramUniform1i"};
-    for (const char* name : names) {
-        const std::string what_ = name;
-        CAPTURE(what_);
-        const testgl::ChildResult child = testgl::run_self("unit_abi", {"--unit-child-missing", name});
-        CAPTURE(child.code);
-        CHECK_FALSE(child.crashed);
-        CHECK(child.code == 0);
-    }
+    for (const char* name : names) check_child_without(name, 0);
 }
 
 TEST_CASE("abi: frame info reports what execute read from the projection") {
