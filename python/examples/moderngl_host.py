@@ -105,8 +105,9 @@ def mean_around(image, x, y, r=1):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    parser.add_argument("--plugin", help="libssao.so to load (default: where ssao.Library() finds it: beside the "
-                        "package, the build tree, the install prefix, $SSAO_PLUGIN, the system's libssao.so.1)")
+    parser.add_argument("--plugin", help="libssao.so to load (default: where ssao.Library() finds it from this "
+                        "checkout's python/: beside the package, the install prefix, $SSAO_PLUGIN, the system's "
+                        "libssao.so.1)")
     parser.add_argument("--size", type=int, default=96, help="image size in pixels (default 96)")
     args = parser.parse_args()
     size = args.size
@@ -167,6 +168,15 @@ def main():
         except ssao.Error as e:
             check(e.status == ssao.SSAO_ERROR_INVALID_TEXTURE and e.last_error,
                   "execute with depth texture 0 raises ssao.Error(%s, %r)" % (e.status.name, e.last_error))
+        # An ssao_inputs struct is checked as the keywords are: a bad enum is named with the choices.
+        bad = ssao.make_inputs(depth_texture=depth.glo, normal_texture=normals.glo, projection=column_major(proj))
+        bad.normal_packing = 77
+        try:
+            ctx.execute(bad)
+            check(False, "an ssao_inputs with normal_packing 77 raises ssao.Error")
+        except ssao.Error as e:
+            check(e.status == ssao.SSAO_ERROR_INVALID_ENUM and "77" in str(e) and "SSAO_NORMAL_PACKING_UNORM" in str(e),
+                  "an ssao_inputs with normal_packing 77 names it and the choices: %s" % e)
 
         # The AO: the floor in the crease against open floor.
         image = np.frombuffer(ao.read(), dtype=np.uint8).reshape(size, size, 4)[:, :, 0] / 255.0

@@ -49,6 +49,7 @@ from __future__ import annotations
 
 import ctypes
 import enum
+import operator
 import os
 import re
 import sys
@@ -458,15 +459,22 @@ def _members(kind: Type[enum.IntEnum]) -> str:
 
 
 def _check_enum(function: str, what: str, kind: Type[enum.IntEnum], value: Any) -> int:
-    """int(value) when it is one of `kind`'s members, else ssao.Error(INVALID_ENUM) naming it."""
+    """int(value) when it is one of `kind`'s members, else ssao.Error(INVALID_ENUM) naming it.
+    Only integers count: a float or a bool is refused, not truncated (2.9 is not MEDIUM)."""
     try:
-        number = int(value)
-    except (TypeError, ValueError):
+        number = None if isinstance(value, bool) else operator.index(value)
+    except TypeError:
         number = None
     if number is None or number not in kind._value2member_map_ or kind(number).name.endswith("_MAX_ENUM"):
         raise Error(function, SSAO_ERROR_INVALID_ENUM,
                     "%s %r is not an %s; one of %s" % (what, value, kind.__name__, _members(kind)))
     return number
+
+
+def _check_struct(function: str, struct: Any, kind: Type[ctypes.Structure]) -> None:
+    """TypeError naming the function unless `struct` is a `kind` (a dict or None would fail deeper, unclearly)."""
+    if not isinstance(struct, kind):
+        raise TypeError("%s expects an %s, not %s" % (function, kind.__name__, type(struct).__name__))
 
 
 def _check_enum_fields(function: str, struct: ctypes.Structure) -> None:
@@ -519,8 +527,30 @@ def _vector(value: Any, count: int, name: str, ctype: Any, convert: Callable[[An
         raise ValueError("%s must be %d numbers; got %d" % (name, count, len(items)))
     try:
         return (ctype * count)(*[convert(v) for v in items])
+    except OverflowError as e:
+        raise ValueError("%s: %s" % (name, e)) from None
     except (TypeError, ValueError):
         raise TypeError("%s holds something that is not a number: %r" % (name, items)) from None
+
+
+def _int32(value: Any) -> int:
+    number = operator.index(value)
+    if not -2**31 <= number < 2**31:  # OverflowError: _vector names the vector
+        raise OverflowError("%d does not fit a 32-bit int" % number)
+    return number
+
+
+def _uint32(value: Any, name: str) -> int:
+    """An unsigned 32-bit field's value: an integer in range, else TypeError or ValueError naming it."""
+    try:
+        number = None if isinstance(value, bool) else operator.index(value)
+    except TypeError:
+        number = None
+    if number is None:
+        raise TypeError("%s must be an integer, not %s" % (name, type(value).__name__))
+    if not 0 <= number < 2**32:
+        raise ValueError("%s %d does not fit an unsigned 32-bit field" % (name, number))
+    return number
 
 
 def make_inputs(**fields: Any) -> ssao_inputs:
@@ -532,12 +562,14 @@ def make_inputs(**fields: Any) -> ssao_inputs:
         if name in ("projection", "view_matrix"):
             value = matrix16(value, name)
         elif name == "viewport":
-            value = _vector(value, 4, name, ctypes.c_int32, int)
+            value = _vector(value, 4, name, ctypes.c_int32, _int32)
         elif name in _ENUM_FIELDS:
             value = _check_enum("execute", "ssao_inputs." + name, _ENUM_FIELDS[name], value)
         elif name == "size" or not hasattr(inputs, name):
             raise TypeError("ssao_inputs has no field %r (fields: %s)" %
                             (name, ", ".join(n for n, _ in ssao_inputs._fields_ if n != "size")))
+        else:
+            value = _uint32(value, "ssao_inputs." + name)  # ctypes would wrap 2**40 + 5 to 5
         setattr(inputs, name, value)
     return inputs
 
@@ -571,7 +603,7 @@ def _prefix_libdirs(package_dir: str) -> List[str]:
 
 def search_order(path: Optional[Union[str, "os.PathLike[str]"]] = None) -> List[str]:
     """Where Library(path) looks, in order (see the module's docstring)."""
-    if path:
+    if path is not None:
         return [os.fspath(path)]
     here = _package_dir()
     order = [os.path.join(here, SONAME)]
@@ -606,11 +638,13 @@ class Library:
     .path is the file it loaded, .version the interface version (major, minor)."""
 
     def __init__(self, path: Optional[Union[str, "os.PathLike[str]"]] = None) -> None:
+        if path is not None and not os.fspath(path):
+            raise OSError("cannot load the SSAO plugin: the path given is empty")
         errors = []
         self._dll = None
         for candidate in search_order(path):
             # A path that is not there is skipped quietly unless it was the one asked for.
-            if os.sep in candidate and not os.path.exists(candidate) and not path:
+            if os.sep in candidate and not os.path.exists(candidate) and path is None:
                 errors.append("%s: not there" % candidate)
                 continue
             try:
@@ -630,7 +664,10 @@ class Library:
         self.version = (self.api.version >> 16, self.api.version & 0xFFFF)
 
     def status_string(self, status: int) -> str:
-        return _text(self.api.status_string(int(status)))
+        number = operator.index(status)
+        if not -2**31 <= number < 2**31:  # ctypes would wrap 2**40 to 0, "success"
+            raise ValueError("status %d does not fit an ssao_status" % number)
+        return _text(self.api.status_string(number))
 
     def _check(self, function: str, status: int, message: Optional[str] = None) -> None:
         if status != SSAO_OK:
@@ -639,6 +676,7 @@ class Library:
     def resolve_settings(self, settings: Optional[ssao_settings] = None) -> ssao_settings:
         """Every zero (default) field resolved; raises Error on an invalid value."""
         settings = settings if settings is not None else ssao_settings()
+        _check_struct("resolve_settings", settings, ssao_settings)
         _check_enum_fields("resolve_settings", settings)
         out = ssao_settings()
         self._check("resolve_settings", self.api.resolve_settings(ctypes.byref(settings), ctypes.byref(out)))
@@ -656,7 +694,13 @@ class Library:
         """A Context on the GL context current on this thread. get_proc_address(user, name)
         returns a GL function's address (default: eglGetProcAddress); log(level, message)
         receives the library's messages."""
+        # ctypes would take an int as a function's address and the library would call it.
+        if get_proc_address is not None and not callable(get_proc_address):
+            raise TypeError("create_context: get_proc_address must be callable, not %s" % type(get_proc_address).__name__)
+        if log is not None and not callable(log):
+            raise TypeError("create_context: log must be callable, not %s" % type(log).__name__)
         if settings is not None:
+            _check_struct("create_context", settings, ssao_settings)
             _check_enum_fields("create_context", settings)
         return Context(self, get_proc_address or egl_get_proc_address(), settings, log)
 
@@ -699,6 +743,7 @@ class Context:
             raise Error(function, status, self.last_error() or self._lib.status_string(status))
 
     def set_settings(self, settings: ssao_settings) -> None:
+        _check_struct("set_settings", settings, ssao_settings)
         _check_enum_fields("set_settings", settings)
         self._check("set_settings", self._api.set_settings(self._ctx, ctypes.byref(settings)))
 
@@ -715,6 +760,9 @@ class Context:
             inputs = make_inputs(**fields)
         elif fields:
             raise TypeError("give an ssao_inputs or its fields, not both")
+        else:
+            _check_struct("execute", inputs, ssao_inputs)
+            _check_enum_fields("execute", inputs)
         out = ssao_output()
         self._check("execute", self._api.execute(self._ctx, ctypes.byref(inputs), ctypes.byref(out)))
         return out
@@ -734,7 +782,10 @@ class Context:
         if self._ctx:
             status = self._api.destroy_context(self._ctx)
             self._ctx = _ctx_p()
-            self._check("destroy_context", status)
+            # The context is gone: its sentence came through the log, if at all.
+            if status != SSAO_OK:
+                raise Error("destroy_context", status,
+                            self._messages[-1] if self._messages else self._lib.status_string(status))
 
     def __enter__(self) -> "Context":
         return self

@@ -100,6 +100,35 @@ def main():
     ok, e = raises(lambda: lib.resolve_settings(s), ssao.Error)
     check(ok and "ssao_settings.blur 42" in str(e), "a settings blur of 42 is named: %s" % e)
     check(lib.preset_settings(ssao.SSAO_PRESET_HIGH).sample_count > 0, "a valid preset still works")
+    # Only integers are enum values: 2.9 is not truncated to MEDIUM (2), True is not 1.
+    ok, e = raises(lambda: lib.preset_settings(2.9), ssao.Error)
+    check(ok and e.status == ssao.SSAO_ERROR_INVALID_ENUM and "2.9" in str(e), "preset_settings(2.9) is refused: %s" % e)
+    ok, e = raises(lambda: ssao.make_inputs(normal_packing=True), ssao.Error)
+    check(ok and "True" in str(e), "normal_packing=True is refused: %s" % e)
+    check(ssao.make_inputs(normal_packing=np.int64(2)).normal_packing == 2, "a numpy integer is an integer")
+
+    # Integer fields are range-checked, not wrapped to 32 bits by ctypes.
+    ok, e = raises(lambda: ssao.make_inputs(depth_texture=2**40 + 5), ValueError)
+    check(ok and "depth_texture" in str(e), "depth_texture 2**40 + 5 is refused, not taken as 5: %s" % e)
+    ok, e = raises(lambda: ssao.make_inputs(depth_texture=-1), ValueError)
+    check(ok and "depth_texture" in str(e), "depth_texture -1 is refused: %s" % e)
+    ok, e = raises(lambda: ssao.make_inputs(frame_index=1.5), TypeError)
+    check(ok and "frame_index" in str(e), "frame_index 1.5 is refused: %s" % e)
+    ok, e = raises(lambda: ssao.make_inputs(viewport=[0, 0, 2**32 + 16, 16]), ValueError)
+    check(ok and "viewport" in str(e) and "32-bit" in str(e), "a viewport width of 2**32 + 16 is refused, not taken as 16: %s" % e)
+    check(ssao.make_inputs(depth_texture=2**32 - 1).depth_texture == 2**32 - 1, "the largest GL name is taken")
+    ok, e = raises(lambda: lib.status_string(2**40), ValueError)
+    check(ok, "status_string(2**40) is refused, not read as 0 ('success'): %s" % e)
+
+    # Structs of the wrong type and callbacks that are not callable are TypeErrors naming the function.
+    for what, fn in (("resolve_settings({})", lambda: lib.resolve_settings({})),
+                     ("create_context(settings={})", lambda: lib.create_context(settings={})),
+                     ("create_context(get_proc_address=5)", lambda: lib.create_context(get_proc_address=5)),
+                     ("create_context(log=5)", lambda: lib.create_context(log=5))):
+        ok, e = raises(fn, TypeError)
+        check(ok and what.split("(")[0] in str(e), "%s raises TypeError naming it: %s" % (what, e))
+    ok, e = raises(lambda: ssao.Library(""), OSError)
+    check(ok and "empty" in str(e), "Library('') is refused, not a search: %s" % e)
     check(isinstance(ssao.__version__, str) and ssao.__version__.count(".") == 2, "__version__ %r" % ssao.__version__)
 
     print("test_inputs: %s" % ("all checks passed" if not failures else "%d FAILED" % len(failures)))

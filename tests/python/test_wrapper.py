@@ -64,6 +64,19 @@ def main():
         check(e.status in (ssao.SSAO_ERROR_GL_VERSION, ssao.SSAO_ERROR_GL_LOAD) and e.last_error,
               "create_context without a current GL context raises %s: %r" % (e.status.name, e.last_error))
 
+    # destroy() after the library freed the context (WRONG_CONTEXT): the message is the one the
+    # log carried, not last_error(NULL)'s "no context". A stand-in table, so no second GL context is needed.
+    class Table:
+        @staticmethod
+        def destroy_context(_ctx):
+            return ssao.SSAO_ERROR_WRONG_CONTEXT
+    context = ssao.Context.__new__(ssao.Context)
+    context._lib, context._api, context._ctx = lib, Table(), ctypes.c_void_p(1)
+    context._messages = ["destroy_context: another GL context is current"]
+    ok, e = raises(context.destroy, ssao.SSAO_ERROR_WRONG_CONTEXT)
+    check(ok and "another GL context" in e.last_error, "destroy() reports the logged sentence: %r" % (e,))
+    check(not context._ctx, "destroy() forgets the freed context")
+
     try:
         ssao.Library("/nonexistent/libssao.so")
         check(False, "a missing library raises OSError")
