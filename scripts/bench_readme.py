@@ -18,6 +18,7 @@ typed by hand.
 usage: scripts/bench_readme.py [DIR] [DOC...]   (default: README.md docs/*.md)
 """
 import csv
+import glob
 import os
 import re
 import sys
@@ -160,6 +161,8 @@ def main():
     if os.path.exists(d + "/thickness_every_view/base0.5_k2.csv"):
         blocks["thickness_every_view"] = thickness_every_view_table(d + "/thickness_every_view",
                                                                     d + "/upsample/taps2x2_dirs8.csv")
+    if os.path.exists(d + "/march_cost/shipped_1.csv"):
+        blocks["march_cost"] = march_cost_table(d + "/march_cost", d + "/upsample/taps2x2_dirs8.csv")
     if os.path.exists(d + "/cell_pattern/cell_pattern.csv"):
         blocks["cell_pattern"] = cell_pattern_table(d + "/cell_pattern/cell_pattern.csv")
     if os.path.exists(d + "/gpu/bench.csv"):
@@ -365,6 +368,37 @@ def thickness_every_view_table(d, shipped):
         lines.append("| %s | %.3g R | %.3g R | %s | %d of %d | %s, %s |" % (
             label, base + k / 4, base + k / 8, " | ".join(means), within, len(med),
             signed(mean(r["bias"] for r in med)), signed(max(r["bias"] for r in med), 3)))
+    return "\n".join(lines)
+
+
+def march_cost_table(d, shipped_quick):
+    """Where a march step's time goes: DEFAULT's CPU time over the textbook pass for builds that each drop one part of
+    the step (DIR/NAME_PASS.csv, ssao-bench --time-only over three passes; the median per scene, and its change
+    against the shipped build's), beside MEDIUM's mean PSNR over every case where a quick run was made
+    (DIR/quick_NAME.csv; the shipped build's is `shipped_quick`)."""
+    variants = [("shipped", "the shipped march"), ("nostepz", "no per-step depth-format bias"),
+                ("nocross", "no crossing test"), ("nosnap", "no snap for grazing or unusable texels"),
+                ("pointfb", "those texels read as a point"), ("zonly", "every texel read as a point (no tangent plane)")]
+    ratio = {}
+    for name, _ in variants:
+        for path in sorted(glob.glob("%s/%s_[0-9].csv" % (d, name))):
+            for r in load(path):
+                if r["config"] == PRESETS[1][1]:
+                    ratio.setdefault((name, r["scene"]), []).append(r["x_textbook_cpu"])
+    scenes = sorted(set(scene for _, scene in ratio))
+    lines = ["| build | " + " | ".join("DEFAULT x textbook, %s" % sc for sc in scenes) + " | MEDIUM PSNR (quick, mean) |",
+             "|---|" + "---:|" * (len(scenes) + 1)]
+    for name, what in variants:
+        cells = []
+        for sc in scenes:
+            m, base = median(ratio[(name, sc)]), median(ratio[("shipped", sc)])
+            cells.append("%s (%+.1f%%)" % (f(m, 3), 100.0 * (m / base - 1.0)) if name != "shipped" else f(m, 3))
+        quick = shipped_quick if name == "shipped" else "%s/quick_%s.csv" % (d, name)
+        psnr = "-"
+        if os.path.exists(quick):
+            psnr = f(mean(r["psnr"] for r in load(quick)
+                          if r["width"] == 320 and r["config"] == PRESETS[1][1] and r["psnr"] == r["psnr"]))
+        lines.append("| %s | %s | %s |" % (what, " | ".join(cells), psnr))
     return "\n".join(lines)
 
 
