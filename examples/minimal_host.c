@@ -63,7 +63,7 @@ static void make_gbuffer(float proj[16], float* depth, float* normals) {
 }
 
 int main(int argc, char** argv) {
-    const char* plugin_path = argc > 1 ? argv[1] : "libssao.so";
+    const char* plugin_path = argc > 1 ? argv[1] : "libssao.so.1";
 
     /* 1. A headless GL 4.5 core context (Mesa's surfaceless platform). */
     PFNEGLGETPLATFORMDISPLAYEXTPROC get_display =
@@ -84,7 +84,7 @@ int main(int argc, char** argv) {
     GladGLContext gl = {0};
     if (!gladLoadGLContext(&gl, glad_proc)) return 1;
 
-    /* 2. The plugin: dlopen, one dlsym, negotiate version 1.0. */
+    /* 2. The plugin: dlopen, one dlsym, negotiate this header's interface version. */
     void* lib = dlopen(plugin_path, RTLD_NOW | RTLD_LOCAL);
     void* symbol = lib ? dlsym(lib, "ssao_get_api") : NULL;
     PFN_ssao_get_api get_api = NULL;
