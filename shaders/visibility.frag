@@ -122,7 +122,8 @@ bool step_surface(vec3 s, float sn, vec2 spf, ivec2 spx, Surface sf, StepSetup s
     prev_in_front = plane.w * abs(r_prev) > 1e-3 ? (sf.ortho ? z + g_prev : z / r_prev) - prev_z : 1e30;
     // Grazing or unusable: the snap. Rare, so a branch: a GPU warp where no
     // texel needs it skips it (llvmpipe runs it masked for every batch, 4-8%
-    // of DEFAULT's time there: docs/benchmark.md, "Where a march step's time goes").
+    // of DEFAULT's time there, and no hard case yet isolates a grazing texel
+    // with a usable normal: docs/benchmark.md, "Where a march step's time goes").
     if (!(plane.w * abs(r) > 1e-3)) {
         float l = dot(st.a, u0) + st.k;
         float qn = sf.ortho ? l : z * l + st.e;  // perspective: n.Q; orthographic: n.xy . Q.xy
