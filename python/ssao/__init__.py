@@ -458,13 +458,20 @@ def _members(kind: Type[enum.IntEnum]) -> str:
     return ", ".join("%s (%d)" % (m.name, m.value) for m in kind if not m.name.endswith("_MAX_ENUM"))
 
 
-def _check_enum(function: str, what: str, kind: Type[enum.IntEnum], value: Any) -> int:
-    """int(value) when it is one of `kind`'s members, else ssao.Error(INVALID_ENUM) naming it.
-    Only integers count: a float or a bool is refused, not truncated (2.9 is not MEDIUM)."""
+def _integer(value: Any) -> Optional[int]:
+    """value as an int when it is an integer (a Python or numpy int, an IntEnum member), else None:
+    a float or a bool is not one, so it is refused rather than truncated (2.9 is not MEDIUM)."""
+    if isinstance(value, bool):
+        return None
     try:
-        number = None if isinstance(value, bool) else operator.index(value)
+        return operator.index(value)
     except TypeError:
-        number = None
+        return None
+
+
+def _check_enum(function: str, what: str, kind: Type[enum.IntEnum], value: Any) -> int:
+    """int(value) when it is one of `kind`'s members (_integer), else ssao.Error(INVALID_ENUM) naming it."""
+    number = _integer(value)
     if number is None or number not in kind._value2member_map_ or kind(number).name.endswith("_MAX_ENUM"):
         raise Error(function, SSAO_ERROR_INVALID_ENUM,
                     "%s %r is not an %s; one of %s" % (what, value, kind.__name__, _members(kind)))
@@ -541,11 +548,8 @@ def _int32(value: Any) -> int:
 
 
 def _uint32(value: Any, name: str) -> int:
-    """An unsigned 32-bit field's value: an integer in range, else TypeError or ValueError naming it."""
-    try:
-        number = None if isinstance(value, bool) else operator.index(value)
-    except TypeError:
-        number = None
+    """An unsigned 32-bit field's value: an integer in range (_integer), else TypeError or ValueError naming it."""
+    number = _integer(value)
     if number is None:
         raise TypeError("%s must be an integer, not %s" % (name, type(value).__name__))
     if not 0 <= number < 2**32:
