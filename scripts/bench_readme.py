@@ -165,6 +165,11 @@ def main():
                                                                     d + "/upsample/taps2x2_dirs8.csv")
     if os.path.exists(d + "/march_cost/shipped_1.csv"):
         blocks["march_cost"] = march_cost_table(d + "/march_cost", d + "/upsample/taps2x2_dirs8.csv")
+    if os.path.exists(d + "/march_cost/h200/shipped_1.csv"):
+        blocks["march_cost_gpu"] = march_cost_table(d + "/march_cost/h200", field="median_ms",
+                                                    what="DEFAULT GPU ms, 1920x1080")
+    if os.path.exists(d + "/march_cost/point_read/h200/old_1.csv"):
+        blocks["point_read"] = point_read_table(d + "/march_cost/point_read")
     if os.path.exists(d + "/cell_pattern/cell_pattern.csv"):
         blocks["cell_pattern"] = cell_pattern_table(d + "/cell_pattern/cell_pattern.csv")
     if os.path.exists(d + "/gpu/bench.csv"):
@@ -373,35 +378,65 @@ def thickness_every_view_table(d, shipped):
     return "\n".join(lines)
 
 
-def march_cost_table(d, shipped_quick):
-    """Where a march step's time goes: DEFAULT's CPU time over the textbook pass for builds that each drop one part of
-    the step (DIR/NAME_PASS.csv, ssao-bench --time-only over three passes; the median per scene, and its change
-    against the shipped build's), beside MEDIUM's mean PSNR over every case where a quick run was made
-    (DIR/quick_NAME.csv; the shipped build's is `shipped_quick`)."""
-    variants = [("shipped", "the shipped march"), ("nostepz", "no per-step depth-format bias"),
-                ("nocross", "no crossing test"), ("nosnap", "no snap for grazing or unusable texels"),
-                ("pointfb", "those texels read as a point"), ("zonly", "every texel read as a point (no tangent plane)")]
-    ratio = {}
-    for name, _ in variants:
+MARCH_VARIANTS = [("shipped", "the march with the snap"), ("nostepz", "no per-step depth-format bias"),
+                  ("nocross", "no crossing test"), ("nosnap", "no snap for grazing or unusable texels"),
+                  ("pointfb", "those texels read as a point"),
+                  ("zonly", "every texel read as a point (no tangent plane)")]
+
+
+def default_medians(d, names, field):
+    """DEFAULT's `field` per (build, scene), median over DIR/NAME_PASS.csv (ssao-bench --time-only, builds in turn
+    over passes)."""
+    values = {}
+    for name in names:
         for path in sorted(glob.glob("%s/%s_[0-9].csv" % (d, name))):
             for r in load(path):
                 if r["config"] == PRESETS[1][1]:
-                    ratio.setdefault((name, r["scene"]), []).append(r["x_textbook_cpu"])
-    scenes = sorted(set(scene for _, scene in ratio))
-    lines = ["| build | " + " | ".join("DEFAULT x textbook, %s" % sc for sc in scenes) + " | MEDIUM PSNR (quick, mean) |",
-             "|---|" + "---:|" * (len(scenes) + 1)]
-    for name, what in variants:
-        cells = []
-        for sc in scenes:
-            m, base = median(ratio[(name, sc)]), median(ratio[("shipped", sc)])
-            cells.append("%s (%+.1f%%)" % (f(m, 3), 100.0 * (m / base - 1.0)) if name != "shipped" else f(m, 3))
-        quick = shipped_quick if name == "shipped" else "%s/quick_%s.csv" % (d, name)
-        psnr = "-"
-        if os.path.exists(quick):
-            psnr = f(mean(r["psnr"] for r in load(quick)
-                          if r["width"] == 320 and r["config"] == PRESETS[1][1] and r["psnr"] == r["psnr"]))
-        lines.append("| %s | %s | %s |" % (what, " | ".join(cells), psnr))
+                    values.setdefault((name, r["scene"]), []).append(r[field])
+    return {k: median(v) for k, v in values.items()}, sorted(set(scene for _, scene in values))
+
+
+def march_cost_table(d, shipped_quick=None, field="x_textbook_cpu", what="DEFAULT x textbook", digits=3):
+    """Where a march step's time goes: DEFAULT's `field` (CPU time over the textbook pass; on a GPU its timer ms) for
+    builds that each drop one part of the step (DIR/NAME_PASS.csv; the median per scene, and its change against the
+    build with everything), beside MEDIUM's mean PSNR over every case where a quick run was made (DIR/quick_NAME.csv;
+    the full build's is `shipped_quick`; no column without it)."""
+    m, scenes = default_medians(d, [n for n, _ in MARCH_VARIANTS], field)
+    lines = ["| build | " + " | ".join("%s, %s" % (what, sc) for sc in scenes) +
+             (" | MEDIUM PSNR (quick, mean) |" if shipped_quick else " |"),
+             "|---|" + "---:|" * (len(scenes) + (1 if shipped_quick else 0))]
+    for name, label in MARCH_VARIANTS:
+        cells = [f(m[(name, sc)], digits) if name == "shipped" else
+                 "%s (%+.1f%%)" % (f(m[(name, sc)], digits), 100.0 * (m[(name, sc)] / m[("shipped", sc)] - 1.0))
+                 for sc in scenes]
+        if shipped_quick:
+            quick = shipped_quick if name == "shipped" else "%s/quick_%s.csv" % (d, name)
+            psnr = "-"
+            if os.path.exists(quick):
+                psnr = f(mean(r["psnr"] for r in load(quick)
+                              if r["width"] == 320 and r["config"] == PRESETS[1][1] and r["psnr"] == r["psnr"]))
+            cells.append(psnr)
+        lines.append("| %s | %s |" % (label, " | ".join(cells)))
     return "\n".join(lines)
+
+
+def point_read_table(d):
+    """The shipped march against one that reads grazing and unusable texels as a point
+    (DIR/{llvmpipe,h200}/{old,new}_PASS.csv, the two builds in turn over three passes): DEFAULT's CPU time over the
+    textbook pass on llvmpipe, its GPU-timer ms at 1920x1080 on the GPU (DIR/h200/machine.txt)."""
+    machine = open(d + "/h200/machine.txt").read().strip().split(",")[0]
+    rows = []
+    for sub, what, field, digits in (("llvmpipe", "llvmpipe (1 thread), 320x180: x textbook (CPU time)", "x_textbook_cpu", 3),
+                                     ("h200", "%s, 1920x1080: GPU ms" % machine, "median_ms", 3)):
+        m, scenes = default_medians(d + "/" + sub, ["old", "new"], field)
+        for name, label in (("old", "with the snap (shipped)"),
+                            ("new", "grazing and unusable texels read as a point (not shipped)")):
+            rows.append("| %s | %s | %s |" % (what if name == "old" else "", label, " | ".join(
+                f(m[(name, sc)], digits) if name == "old" else
+                "%s (%+.1f%%)" % (f(m[(name, sc)], digits), 100.0 * (m[(name, sc)] / m[("old", sc)] - 1.0))
+                for sc in scenes)))
+    return "\n".join(["| machine, DEFAULT's time | march | " + " | ".join(scenes) + " |",
+                      "|---|---|" + "---:|" * len(scenes)] + rows)
 
 
 def cell_pattern_table(path):

@@ -120,10 +120,11 @@ bool step_surface(vec3 s, float sn, vec2 spf, ivec2 spx, Surface sf, StepSetup s
     float g_prev = dot(plane.yz, prev_spf - u0);
     float r_prev = sf.ortho ? 1.0 : 1.0 + g_prev;
     prev_in_front = plane.w * abs(r_prev) > 1e-3 ? (sf.ortho ? z + g_prev : z / r_prev) - prev_z : 1e30;
-    // Grazing or unusable: the snap. Rare, so a branch: a GPU warp where no
-    // texel needs it skips it (llvmpipe runs it masked for every batch, 4-8%
-    // of DEFAULT's time there, and no hard case yet isolates a grazing texel
-    // with a usable normal: docs/benchmark.md, "Where a march step's time goes").
+    // Grazing or unusable: the snap. Rare, so a branch; it still costs 4-8%
+    // of DEFAULT's time on llvmpipe (which runs it masked for every batch)
+    // and 7% on an H200. Reading these texels as a point instead takes the
+    // converged estimator further from the limit on spot, past the bound of
+    // reference.limit_convergence (docs/benchmark.md, "What the snap buys").
     if (!(plane.w * abs(r) > 1e-3)) {
         float l = dot(st.a, u0) + st.k;
         float qn = sf.ortho ? l : z * l + st.e;  // perspective: n.Q; orthographic: n.xy . Q.xy
