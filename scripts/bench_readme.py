@@ -101,6 +101,30 @@ def gpu_table(d):
     return "\n".join(lines)
 
 
+def gpu_line(d, width=1920):
+    """The README's GPU figures from ssao-bench --time-only on a GPU (DIR/bench.csv, DIR/machine.txt): each preset's
+    and the textbook pass's GPU-timer ms at `width` (mean over the cases), and the range over sizes of DEFAULT's
+    median ratio to the textbook pass."""
+    rows = load(d + "/bench.csv")
+    card = open(d + "/machine.txt").read().strip().split(",")[0] if os.path.exists(d + "/machine.txt") else "a GPU"
+    at = [r for r in rows if r["width"] == width]
+    ms = lambda pick: mean(r["median_ms"] for r in at if pick(r))
+    presets = ", ".join("%s %s ms" % (label, f(ms(lambda r, n=name: r["config"] == n)))
+                        for label, name in (("LOW", "preset low"), ("DEFAULT", "preset medium (= default)"),
+                                            ("HIGH", "preset high"), ("ULTRA", "preset ultra")))
+    ratios = []
+    for w in sorted({r["width"] for r in rows}):
+        tb = {case_name(r): r["median_ms"] for r in rows if r["width"] == w and r["kind"] == "textbook"}
+        ratios.append(median([r["median_ms"] / tb[case_name(r)] for r in rows
+                              if r["width"] == w and r["config"] == "preset medium (= default)"]))
+    return ("On an %s, by its GPU timers (mean over %d cases at %dx%d): %s, the textbook pass %s ms. There DEFAULT "
+            "costs %s-%sx the textbook pass (the median over the cases at each size, %d sizes from %dx%d to %dx%d)." % (
+                card, len({case_name(r) for r in at}), width, at[0]["height"], presets,
+                f(ms(lambda r: r["kind"] == "textbook")), f(min(ratios)), f(max(ratios)), len(ratios),
+                min(r["width"] for r in rows), min(rows, key=lambda r: r["width"])["height"],
+                max(r["width"] for r in rows), max(rows, key=lambda r: r["width"])["height"]))
+
+
 def main():
     d = sys.argv[1] if len(sys.argv) > 1 else "docs/bench"
     docs = sys.argv[2:] or DEFAULT_DOCS
@@ -174,6 +198,7 @@ def main():
         blocks["cell_pattern"] = cell_pattern_table(d + "/cell_pattern/cell_pattern.csv")
     if os.path.exists(d + "/gpu/bench.csv"):
         blocks["gpu"] = gpu_table(d + "/gpu")
+        blocks["gpu_line"] = gpu_line(d + "/gpu")
     write_blocks(blocks, docs, "bench_readme")
     print("bench_readme: %d blocks written from %s" % (len(blocks), d))
 
