@@ -193,7 +193,11 @@ def main():
         blocks["march_cost_gpu"] = march_cost_table(d + "/march_cost/h200", field="median_ms",
                                                     what="DEFAULT GPU ms, 1920x1080")
     if os.path.exists(d + "/march_cost/point_read/h200/old_1.csv"):
-        blocks["point_read"] = point_read_table(d + "/march_cost/point_read")
+        blocks["point_read"] = ab_table(d + "/march_cost/point_read", "with the snap (shipped)",
+                                        "grazing and unusable texels read as a point (not shipped)")
+    if os.path.exists(d + "/march_cost/bias_once/llvmpipe/old_1.csv"):
+        blocks["bias_once"] = ab_table(d + "/march_cost/bias_once", "the texel's depth step at every step (shipped)",
+                                       "one bound per pixel (not shipped)")
     if os.path.exists(d + "/cell_pattern/cell_pattern.csv"):
         blocks["cell_pattern"] = cell_pattern_table(d + "/cell_pattern/cell_pattern.csv")
     if os.path.exists(d + "/gpu/bench.csv"):
@@ -450,20 +454,23 @@ def march_cost_table(d, shipped_quick=None, field="x_textbook_cpu", what="DEFAUL
     return "\n".join(lines)
 
 
-def point_read_table(d):
-    """The shipped march against one that reads grazing and unusable texels as a point
-    (DIR/{llvmpipe,h200}/{old,new}_PASS.csv, the two builds in turn over three passes): DEFAULT's CPU time over the
-    textbook pass on llvmpipe, its GPU-timer ms at 1920x1080 on the GPU (DIR/h200/machine.txt)."""
-    machine = open(d + "/h200/machine.txt").read().strip().split(",")[0]
-    rows = []
-    for sub, what, field, digits in (("llvmpipe", "llvmpipe (1 thread), 320x180: x textbook (CPU time)", "x_textbook_cpu", 3),
-                                     ("h200", "%s, 1920x1080: GPU ms" % machine, "median_ms", 3)):
+def ab_table(d, old_label, new_label):
+    """Two builds timed in turn over three passes (DIR/{llvmpipe,h200}/{old,new}_PASS.csv, each machine where its
+    folder exists): DEFAULT's CPU time over the textbook pass on llvmpipe, its GPU-timer ms at 1920x1080 on the GPU
+    (DIR/h200/machine.txt)."""
+    rows, scenes = [], []
+    for sub, field in (("llvmpipe", "x_textbook_cpu"), ("h200", "median_ms")):
+        if not os.path.isdir(d + "/" + sub):
+            continue
+        if sub == "llvmpipe":
+            what = "llvmpipe (1 thread), 320x180: x textbook (CPU time)"
+        else:
+            what = "%s, 1920x1080: GPU ms" % open(d + "/h200/machine.txt").read().strip().split(",")[0]
         m, scenes = default_medians(d + "/" + sub, ["old", "new"], field)
-        for name, label in (("old", "with the snap (shipped)"),
-                            ("new", "grazing and unusable texels read as a point (not shipped)")):
+        for name, label in (("old", old_label), ("new", new_label)):
             rows.append("| %s | %s | %s |" % (what if name == "old" else "", label, " | ".join(
-                f(m[(name, sc)], digits) if name == "old" else
-                "%s (%+.1f%%)" % (f(m[(name, sc)], digits), 100.0 * (m[(name, sc)] / m[("old", sc)] - 1.0))
+                f(m[(name, sc)], 3) if name == "old" else
+                "%s (%+.1f%%)" % (f(m[(name, sc)], 3), 100.0 * (m[(name, sc)] / m[("old", sc)] - 1.0))
                 for sc in scenes)))
     return "\n".join(["| machine, DEFAULT's time | march | " + " | ".join(scenes) + " |",
                       "|---|---|" + "---:|" * len(scenes)] + rows)
