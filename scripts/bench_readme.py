@@ -74,28 +74,43 @@ def case_name(r):
     return "%s/%s/%gR" % (r["scene"], r["view"], r["radius_scale"])
 
 
+# The presets as the GPU tables name them (MEDIUM is the DEFAULT pass).
+GPU_PASSES = [("DEFAULT" if name == PRESETS[1][1] else label, name) for label, name, _ in PRESETS]
+
+
+def card_name(d):
+    """The GPU's name from DIR/machine.txt (its first comma-separated field), "a GPU" without the file."""
+    return open(d + "/machine.txt").read().strip().split(",")[0] if os.path.exists(d + "/machine.txt") else "a GPU"
+
+
+def default_over(at, kind):
+    """DEFAULT's GPU-timer ms over the anchor pass `kind` (textbook, floor) of the same case, for every case in `at`
+    (one size's rows)."""
+    anchor = {case_name(r): r["median_ms"] for r in at if r["kind"] == kind}
+    return [r["median_ms"] / anchor[case_name(r)] for r in at if r["config"] == PRESETS[1][1]]
+
+
+def with_change(v, base, digits=3):
+    """v, and its change against base in percent: "0.213 (-5.5%)"."""
+    return "%s (%+.1f%%)" % (f(v, digits), 100.0 * (v / base - 1.0))
+
+
 def gpu_table(d):
     """ssao-bench --time-only on a GPU (DIR/bench.csv, DIR/machine.txt): per size, each pass's GPU-timer ms
     (mean over the cases: every scene and view at 1x radius) and DEFAULT over the anchors by GPU timer."""
     rows = load(d + "/bench.csv")
     machine = open(d + "/machine.txt").read().strip() if os.path.exists(d + "/machine.txt") else "?"
-    passes = [("LOW", "preset low"), ("DEFAULT", "preset medium (= default)"), ("HIGH", "preset high"),
-              ("ULTRA", "preset ultra")]
     lines = ["Machine: %s. GPU timer ms per frame, mean over %d cases (every scene and view at 1x radius)." % (
                  machine, len({case_name(r) for r in rows})), "",
              "| size | %s | textbook pass | floor | DEFAULT / textbook: median, worst | DEFAULT / floor: median, worst |"
-             % " | ".join(p for p, _ in passes), "|---|" + "---:|" * (len(passes) + 4)]
+             % " | ".join(p for p, _ in GPU_PASSES), "|---|" + "---:|" * (len(GPU_PASSES) + 4)]
     for w in sorted({r["width"] for r in rows}):
         at = [r for r in rows if r["width"] == w]
         h = at[0]["height"]
         ms = lambda pick: mean(r["median_ms"] for r in at if pick(r))
-        anchor = lambda kind: {case_name(r): r["median_ms"] for r in at if r["kind"] == kind}
-        tb, fl = anchor("textbook"), anchor("floor")
-        dflt = [r for r in at if r["config"] == passes[1][1]]
-        to_tb = [r["median_ms"] / tb[case_name(r)] for r in dflt]
-        to_fl = [r["median_ms"] / fl[case_name(r)] for r in dflt]
+        to_tb, to_fl = default_over(at, "textbook"), default_over(at, "floor")
         lines.append("| %dx%d | %s | %s | %s | %s, %s | %s, %s |" % (
-            w, h, " | ".join(f(ms(lambda r, n=n: r["config"] == n)) for _, n in passes),
+            w, h, " | ".join(f(ms(lambda r, n=n: r["config"] == n)) for _, n in GPU_PASSES),
             f(ms(lambda r: r["kind"] == "textbook")), f(ms(lambda r: r["kind"] == "floor")),
             f(median(to_tb), 3), f(max(to_tb), 3), f(median(to_fl), 1), f(max(to_fl), 1)))
     return "\n".join(lines)
@@ -106,17 +121,12 @@ def gpu_line(d, width=1920):
     and the textbook pass's GPU-timer ms at `width` (mean over the cases), and the range over sizes of DEFAULT's
     median ratio to the textbook pass."""
     rows = load(d + "/bench.csv")
-    card = open(d + "/machine.txt").read().strip().split(",")[0] if os.path.exists(d + "/machine.txt") else "a GPU"
+    card = card_name(d)
     at = [r for r in rows if r["width"] == width]
     ms = lambda pick: mean(r["median_ms"] for r in at if pick(r))
-    presets = ", ".join("%s %s ms" % (label, f(ms(lambda r, n=name: r["config"] == n)))
-                        for label, name in (("LOW", "preset low"), ("DEFAULT", "preset medium (= default)"),
-                                            ("HIGH", "preset high"), ("ULTRA", "preset ultra")))
-    ratios = []
-    for w in sorted({r["width"] for r in rows}):
-        tb = {case_name(r): r["median_ms"] for r in rows if r["width"] == w and r["kind"] == "textbook"}
-        ratios.append(median([r["median_ms"] / tb[case_name(r)] for r in rows
-                              if r["width"] == w and r["config"] == "preset medium (= default)"]))
+    presets = ", ".join("%s %s ms" % (label, f(ms(lambda r, n=name: r["config"] == n))) for label, name in GPU_PASSES)
+    ratios = [median(default_over([r for r in rows if r["width"] == w], "textbook"))
+              for w in sorted({r["width"] for r in rows})]
     return ("On an %s, by its GPU timers (mean over %d cases at %dx%d): %s, the textbook pass %s ms. There DEFAULT "
             "costs %s-%sx the textbook pass (the median over the cases at each size, %d sizes from %dx%d to %dx%d)." % (
                 card, len({case_name(r) for r in at}), width, at[0]["height"], presets,
@@ -430,7 +440,7 @@ def default_medians(d, names, field):
     return {k: median(v) for k, v in values.items()}, sorted(set(scene for _, scene in values))
 
 
-def march_cost_table(d, shipped_quick=None, field="x_textbook_cpu", what="DEFAULT x textbook", digits=3):
+def march_cost_table(d, shipped_quick=None, field="x_textbook_cpu", what="DEFAULT x textbook"):
     """Where a march step's time goes: DEFAULT's `field` (CPU time over the textbook pass; on a GPU its timer ms) for
     builds that each drop one part of the step (DIR/NAME_PASS.csv; the median per scene, and its change against the
     build with everything), beside MEDIUM's mean PSNR over every case where a quick run was made (DIR/quick_NAME.csv;
@@ -440,8 +450,7 @@ def march_cost_table(d, shipped_quick=None, field="x_textbook_cpu", what="DEFAUL
              (" | MEDIUM PSNR (quick, mean) |" if shipped_quick else " |"),
              "|---|" + "---:|" * (len(scenes) + (1 if shipped_quick else 0))]
     for name, label in MARCH_VARIANTS:
-        cells = [f(m[(name, sc)], digits) if name == "shipped" else
-                 "%s (%+.1f%%)" % (f(m[(name, sc)], digits), 100.0 * (m[(name, sc)] / m[("shipped", sc)] - 1.0))
+        cells = [f(m[(name, sc)], 3) if name == "shipped" else with_change(m[(name, sc)], m[("shipped", sc)])
                  for sc in scenes]
         if shipped_quick:
             quick = shipped_quick if name == "shipped" else "%s/quick_%s.csv" % (d, name)
@@ -465,13 +474,11 @@ def ab_table(d, old_label, new_label):
         if sub == "llvmpipe":
             what = "llvmpipe (1 thread), 320x180: x textbook (CPU time)"
         else:
-            what = "%s, 1920x1080: GPU ms" % open(d + "/h200/machine.txt").read().strip().split(",")[0]
+            what = "%s, 1920x1080: GPU ms" % card_name(d + "/h200")
         m, scenes = default_medians(d + "/" + sub, ["old", "new"], field)
         for name, label in (("old", old_label), ("new", new_label)):
             rows.append("| %s | %s | %s |" % (what if name == "old" else "", label, " | ".join(
-                f(m[(name, sc)], 3) if name == "old" else
-                "%s (%+.1f%%)" % (f(m[(name, sc)], 3), 100.0 * (m[(name, sc)] / m[("old", sc)] - 1.0))
-                for sc in scenes)))
+                f(m[(name, sc)], 3) if name == "old" else with_change(m[(name, sc)], m[("old", sc)]) for sc in scenes)))
     return "\n".join(["| machine, DEFAULT's time | march | " + " | ".join(scenes) + " |",
                       "|---|---|" + "---:|" * len(scenes)] + rows)
 
