@@ -104,13 +104,12 @@ bool step_to_texel(StepSetup st, vec4 c, out ivec2 texel, out vec2 spf) {
 // (the texel's, scaled to the step's ray) is 1e-3 or less; alpha 0 marks a
 // texel whose normal is unusable. The snap in its place (StepSetup): the
 // step's plane s.n = sn met by the texel's ray, perspective at view z
-// z sn / n.Q, orthographic (sn - n.xy Q.xy) / n.z. False for the sky;
-// q_step: the view-z change of one depth-format step at the texel.
+// z sn / n.Q, orthographic (sn - n.xy Q.xy) / n.z. False for the sky.
 // prev_in_front: the same plane's view z under the previous point (viewport
 // position prev_spf, view z prev_z) minus prev_z, for the crossing test; a
 // huge value where the plane is grazing or unusable there (no crossing).
 bool step_surface(vec3 s, float sn, vec2 spf, ivec2 spx, Surface sf, StepSetup st, vec2 prev_spf, float prev_z,
-                  out float in_front, out float q_step, out float prev_in_front) {
+                  out float in_front, out float prev_in_front) {
     vec4 plane = texelFetch(u_depth_tex, spx, 0);
     float z = plane.x;
     vec2 u0 = vec2(grid_pixel(st.g, spx)) + 0.5;
@@ -133,7 +132,6 @@ bool step_surface(vec3 s, float sn, vec2 spf, ivec2 spx, Surface sf, StepSetup s
         in_front = z - (snap ? q : s.z);
         prev_in_front = 1e30;
     }
-    q_step = depth_step_z(st.ds, z);  // read only for a surface
     return z != SKY_Z;
 }
 
@@ -180,9 +178,16 @@ void main() {
     StepSetup st = step_setup(sf);
     mat4 proj = consts.proj;
     vec4 clip_p = step_clip(st, proj * vec4(sf.P, 1.0));
-    // The bias's part that is the pixel's own; each step adds its texel's depth step.
-    float bias_p = consts.bias * sf.radius_scale + consts.depth_step_bias * sf.step;
-    float step_bias = consts.depth_step_bias;
+    // The bias: the settings' part, and depth_step_bias steps of the depth
+    // format at P and at the depth where the format's step is largest among
+    // the surfaces that can block a step (in front of it by at most the
+    // thickness, so within P.z - radius .. P.z + radius + thickness): the far
+    // end in perspective, where the step grows with distance, and either end
+    // in orthographic projections, where it is a convex function of view z.
+    // One bound per pixel, nothing computed per step.
+    float far_step = depth_step_z(st.ds, sf.P.z - radius);
+    float near_step = sf.ortho ? depth_step_z(st.ds, sf.P.z + radius + thickness) : 0.0;
+    float bias = consts.bias * sf.radius_scale + consts.depth_step_bias * (sf.step + max(far_step, near_step));
     for (int i = 0; i < count; ++i) {
         vec3 dir = sf.TBN * kernel.vectors[i].xyz;
         vec4 clip_dir = step_clip(st, proj * vec4(dir, 0.0));
@@ -203,10 +208,8 @@ void main() {
             ivec2 spx;
             vec2 spf;
             bool on_screen = step_to_texel(st, clip_p + clip_dir * t, spx, spf);
-            float in_front, q_step, prev_in_front;  // in_front > 0: the surface hides the step
-            bool surface = step_surface(s, st.pn + dn * t, spf, spx, sf, st, prev_spf, prev_z, in_front, q_step,
-                                        prev_in_front);
-            float bias = bias_p + step_bias * q_step;
+            float in_front, prev_in_front;  // in_front > 0: the surface hides the step
+            bool surface = step_surface(s, st.pn + dn * t, spf, spx, sf, st, prev_spf, prev_z, in_front, prev_in_front);
             bool crossed = prev_in_front < bias;  // the previous point lay in front of this step's surface
             blocked = on_screen && surface && in_front >= bias && (in_front <= thickness || crossed);
             prev_spf = spf;

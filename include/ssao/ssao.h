@@ -338,8 +338,9 @@ typedef struct ssao_settings {
                                     (for no constant bias give a tiny value such as 1e-30).
                                     A bias proportional to the depth buffer's step at each
                                     pixel (depth_step_bias) is always added. */
-    float depth_step_bias;       /**< multiple of the depth format's step at the pixel's depth,
-                                    (0, 1e6]; default 2 */
+    float depth_step_bias;       /**< multiple of the depth format's step at the pixel's depth
+                                    (visibility: plus as many where that step is largest
+                                    among the surfaces a step can meet), (0, 1e6]; default 2 */
     float power;                 /**< exponent applied to the result, (0, 16]; default 1 */
     float strength;              /**< occlusion multiplier, [0, 8]; default 1.
                                     ao = pow(1 - strength * occlusion, power), clamped to [0,1].

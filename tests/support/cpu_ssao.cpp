@@ -115,6 +115,17 @@ float ao(const Input& in, const ssao_settings& s, int x, int y) {
         // that lies behind the depth buffer by [bias, thickness], or further
         // behind a surface that the segment from the previous point crossed.
         const auto dirs = ssao_impl::make_directions(s);
+        // The bias as the pass takes it: depth-format steps at P and where the
+        // format's step is largest among the surfaces that can block a step
+        // (view z P.z - radius .. P.z + radius + thickness): the far end in
+        // perspective, either end in orthographic projections.
+        auto step_at_z = [&](double z) {
+            const glm::dvec4 c = p.proj * glm::dvec4(P.x, P.y, z, 1.0);
+            return step(x, y, p.ndc_per_depth == 2.0 ? c.z / c.w * 0.5 + 0.5 : c.z / c.w);
+        };
+        const double step_bound = std::max(step_at_z(P.z - radius),
+                                           p.orthographic ? step_at_z(P.z + radius + s.thickness) : 0.0);
+        const double bias = s.bias + s.depth_step_bias * (step_p + step_bound);
         const double jitter = ssao_impl::step_jitter(s.rotation, static_cast<uint32_t>(x), static_cast<uint32_t>(y), s.seed);
         // How far the plane through Q with normal nq lies in front of point sp
         // along sp's eye ray (orthographic: the view axis), in view z; nullopt
@@ -164,7 +175,6 @@ float ao(const Input& in, const ssao_settings& s, int x, int y) {
                 const bool trusted = decode_normal(sx, sy, nq) && glm::dot(nq, to_eye_q) > 0.0;
                 const std::optional<double> through_plane = trusted ? plane_in_front(sp, Q, nq) : std::nullopt;
                 const double in_front = through_plane ? *through_plane : Q.z - snap(sp, Q).z;
-                const double bias = s.bias + s.depth_step_bias * (step_p + step(sx, sy, sd));
                 // The crossing: the previous point lay in front of the same plane.
                 const std::optional<double> before_in_front = through_plane ? plane_in_front(before, Q, nq) : std::nullopt;
                 const bool crossed = before_in_front && *before_in_front < bias;
