@@ -12,7 +12,9 @@ one build, fixed.csv with --max-step-texels 1e6, which keeps every step count,
 and texels4.csv with 4; and a full run with 4, full_texels4.csv, beside DIR's),
 the step-length tables and, from upsample/ (four quick runs: the upsample's 2x2 or 3x3 taps, MEDIUM's
 directions), the upsample table and, from cell_pattern/ (a quick run's cell_pattern.csv), the shared-pattern
-table. Time is process CPU time (ssao-bench, LP_NUM_THREADS=1). Every number in those blocks comes from the run; nothing is
+table, and from grid_study/ (scripts/grid-study.sh, and the A/B and quick runs of the plane-fit upsample) the
+grid-study tables. The preset-rule lines compare presets.txt's picks with the shipped table. Time is process CPU
+time (ssao-bench, LP_NUM_THREADS=1). Every number in those blocks comes from the run; nothing is
 typed by hand.
 
 usage: scripts/bench_readme.py [DIR] [DOC...]   (default: README.md docs/*.md)
@@ -183,6 +185,10 @@ def main():
             s, f(lim_std[k]["psnr"]), f(tb_std[k]["psnr"]), f(dflt_std[k]["psnr"]), f(ultra_std[k]["psnr"]),
             "%s dB (%s)" % (f(best["psnr"]), best["config"]) if best else "-"))
     blocks["summary"] = "\n".join(lines)
+    blocks["preset_rule"] = preset_rule(d, rows)
+    floor = [r["cpu_ms"] for r in of(base, kind="floor").values()]
+    blocks["floor_time"] = ("In this run the bandwidth floor took %s ms of CPU time per frame at %dx%d (median over the "
+                            "%d cases)." % (f(median(floor)), base[0]["width"], base[0]["height"], len(floor)))
     blocks["targets"] = "\n".join(targets(d, rows, base, widths, height, limit, of))
     blocks["cases"] = cases_table(base, limit, of)
     blocks["time"] = time_table(rows, widths, height, of)
@@ -192,6 +198,7 @@ def main():
     if os.path.exists(d + "/step_length/fixed.csv"):
         blocks["step_length"] = step_length_table(d + "/step_length", rows)
         blocks["step_length_summary"] = step_length_summary(d + "/step_length/full_texels4.csv", rows)
+        blocks["step_length_standard"] = step_length_standard(d + "/step_length/full_texels4.csv", rows)
     if os.path.exists(d + "/upsample/taps2x2_dirs8.csv"):
         blocks["upsample"] = upsample_table(d + "/upsample")
     if os.path.exists(d + "/thickness_every_view/base0.5_k2.csv"):
@@ -206,8 +213,16 @@ def main():
         blocks["point_read"] = ab_table(d + "/march_cost/point_read", "with the snap (shipped)",
                                         "grazing and unusable texels read as a point (not shipped)")
     if os.path.exists(d + "/march_cost/bias_once/llvmpipe/old_1.csv"):
-        blocks["bias_once"] = ab_table(d + "/march_cost/bias_once", "the texel's depth step at every step (shipped)",
-                                       "one bound per pixel (not shipped)")
+        blocks["bias_once"] = ab_table(d + "/march_cost/bias_once", "the texel's depth step at every step (before)",
+                                       "one bound per pixel (shipped)")
+    if os.path.exists(d + "/grid_study/grid_study.csv"):
+        blocks["grid_study"] = grid_study_table(d + "/grid_study")
+    if os.path.exists(d + "/grid_study/plane_fit/llvmpipe/old_1.csv"):
+        blocks["plane_fit_time"] = ab_table(d + "/grid_study/plane_fit", "the weighted mean (shipped)",
+                                            "the plane fit (not shipped)", "upsample")
+        blocks["plane_fit_quick"] = ("Quick runs of every case (the build before the once-per-pixel bias, without "
+                                     "and with the fit): " + quick_means(d + "/upsample/taps2x2_dirs8.csv",
+                                                                          d + "/grid_study/plane_fit/quick_new.csv") + ".")
     if os.path.exists(d + "/cell_pattern/cell_pattern.csv"):
         blocks["cell_pattern"] = cell_pattern_table(d + "/cell_pattern/cell_pattern.csv")
     if os.path.exists(d + "/gpu/bench.csv"):
@@ -463,7 +478,7 @@ def march_cost_table(d, shipped_quick=None, field="x_textbook_cpu", what="DEFAUL
     return "\n".join(lines)
 
 
-def ab_table(d, old_label, new_label):
+def ab_table(d, old_label, new_label, what_changed="march"):
     """Two builds timed in turn over three passes (DIR/{llvmpipe,h200}/{old,new}_PASS.csv, each machine where its
     folder exists): DEFAULT's CPU time over the textbook pass on llvmpipe, its GPU-timer ms at 1920x1080 on the GPU
     (DIR/h200/machine.txt)."""
@@ -479,8 +494,45 @@ def ab_table(d, old_label, new_label):
         for name, label in (("old", old_label), ("new", new_label)):
             rows.append("| %s | %s | %s |" % (what if name == "old" else "", label, " | ".join(
                 f(m[(name, sc)], 3) if name == "old" else with_change(m[(name, sc)], m[("old", sc)]) for sc in scenes)))
-    return "\n".join(["| machine, DEFAULT's time | march | " + " | ".join(scenes) + " |",
+    return "\n".join(["| machine, DEFAULT's time | %s | " % what_changed + " | ".join(scenes) + " |",
                       "|---|---|" + "---:|" * len(scenes)] + rows)
+
+
+GRID_STUDY = [("DEFAULT", "DEFAULT"), ("DEFAULT converged", "converged (64 frame indices)"),
+              ("full resolution converged", "converged, full resolution"),
+              ("32 steps converged", "32 steps, converged"),
+              ("32 steps full resolution converged", "32 steps, converged, full resolution")]
+GRID_STUDY_BUILDS = [("plane_fit", "plane-fit upsample"), ("fixed_pick", "one fixed pixel per block"),
+                     ("full_planes", "steps read full-resolution planes")]
+
+
+def grid_study_table(d):
+    """Where DEFAULT's error comes from (scripts/grid-study.sh): PSNR against the depth-only limit per scene, standard
+    view at the scene's radius, for DEFAULT and the configurations that each take one part away (DIR/grid_study.csv),
+    then DEFAULT and DEFAULT converged of each variant build run there (DIR/grid_study_NAME.csv); one row each, the
+    mean over the scenes last."""
+    runs = [("shipped", load(d + "/grid_study.csv"), GRID_STUDY)]
+    for name, label in GRID_STUDY_BUILDS:
+        if os.path.exists("%s/grid_study_%s.csv" % (d, name)):
+            runs.append((label, load("%s/grid_study_%s.csv" % (d, name)), GRID_STUDY[:2]))
+    scenes = [r["scene"] for r in runs[0][1] if r["config"] == GRID_STUDY[0][0]]
+    lines = ["| build | configuration | " + " | ".join(scenes) + " | mean |", "|---|---|" + "---:|" * (len(scenes) + 1)]
+    for build, rows, configs in runs:
+        for i, (config, label) in enumerate(configs):
+            v = {r["scene"]: r["psnr_vs_limit"] for r in rows if r["config"] == config}
+            lines.append("| %s | %s | %s | %s |" % (build if i == 0 else "", label, " | ".join(f(v[sc]) for sc in scenes),
+                                                   f(mean(v[sc] for sc in scenes))))
+    return "\n".join(lines)
+
+
+def quick_means(old, new):
+    """Each preset's mean PSNR over every case in two quick runs of builds that differ in one change (ssao-bench
+    --quick --sweep presets), as "LOW a -> b dB, ..."."""
+    def means(path):
+        rows = [r for r in load(path) if r["width"] == 320 and r["psnr"] == r["psnr"]]
+        return {label: mean(r["psnr"] for r in rows if r["config"] == name) for label, name, _ in PRESETS}
+    a, b = means(old), means(new)
+    return ", ".join("%s %s -> %s dB" % (label, f(a[label]), f(b[label])) for label, _, _ in PRESETS)
 
 
 def cell_pattern_table(path):
@@ -526,6 +578,19 @@ def step_length_summary(path, main_rows):
     return "\n".join(lines)
 
 
+def step_length_standard(path, main_rows):
+    """DEFAULT on the standard views at each scene's radius (what the preset rule reads) with max_step_texels off
+    (DIR's run) and 4 (path): its mean CPU time over the textbook pass and its mean PSNR against V_R, 320x180."""
+    def at(rows):
+        c = [r for r in rows if r["config"] == PRESETS[1][1] and r["width"] == 320 and r["view"] == "standard" and
+             r["radius_scale"] == 1.0]
+        return mean(r["x_textbook_cpu"] for r in c), mean(r["psnr"] for r in c), len(c)
+    off, on = at(main_rows), at(load(path))
+    return ("On the standard views at each scene's radius, which the preset rule reads, DEFAULT with 4 texels cost "
+            "%s× the textbook pass against %s× with it off and read %s dB against %s (means over the %d scenes of the "
+            "two full runs)." % (f(on[0], 3), f(off[0], 3), f(on[1]), f(off[1]), off[2]))
+
+
 def resolution_table(standard, scenes):
     """Half and quarter against full resolution: every sweep configuration the
     run measured at all three on every scene (standard view), CPU-time ratios."""
@@ -554,6 +619,45 @@ def resolution_table(standard, scenes):
             name, f(mean(full[s]["cpu_ms"] for s in scenes)), f(rt(half)), f(rt(quarter)),
             f(mean(full[s]["psnr"] for s in scenes)), f(mean(half[s]["psnr"] for s in scenes)),
             f(mean(quarter[s]["psnr"] for s in scenes))))
+    return "\n".join(lines)
+
+
+def sweep_name(words):
+    """The sweep's name for a preset's configuration as ssao-host --help words it ("visibility, 8 directions x 4
+    steps, half resolution, no blur" -> "visibility 8x4, half res, blur none")."""
+    m = re.match(r"visibility, (\d+) directions x (\d+) steps, (full|half|quarter) resolution, (.*)$", words)
+    if not m:
+        return None
+    parts = ["visibility %sx%s" % (m.group(1), m.group(2))]
+    if m.group(3) != "full":
+        parts.append("%s res" % m.group(3))
+    parts.append("blur none" if m.group(4) == "no blur" else "blur " + m.group(4).replace(" blur", ""))
+    return ", ".join(parts)
+
+
+def preset_rule(d, rows):
+    """What the preset rule picks in this run (DIR/presets.txt) against the shipped table, each with its mean CPU time
+    over the textbook pass and mean PSNR on the standard views at each scene's radius, 320x180."""
+    words = help_presets()
+    std = [r for r in rows if r["width"] == 320 and r["view"] == "standard" and r["radius_scale"] == 1.0]
+
+    def figures(config):
+        c = [r for r in std if r["config"] == config]
+        return "x%s, %s dB" % (f(mean(r["x_textbook_cpu"] for r in c), 3), f(mean(r["psnr"] for r in c)))
+    lines = []
+    for line in open(d + "/presets.txt"):
+        m = re.match(r"^(low|medium|high|ultra)\b[^:]*: (.*) \(x[0-9.]+, [0-9.]+ dB\)$", line.strip())
+        if not m:
+            continue
+        label, pick, shipped = m.group(1).upper(), m.group(2), sweep_name(words[m.group(1)])
+        if pick == shipped:
+            lines.append("- %s: the table's %s (%s)." % (label, pick, figures(pick)))
+        else:
+            lines.append("- %s: %s (%s), where the table has %s (%s)." % (label, pick, figures(pick), shipped,
+                                                                        figures(shipped)))
+    twin = sweep_name(words["medium"])
+    lines.append("- The same configuration timed twice in this run: DEFAULT's row %s, the sweep's %s row %s." % (
+        figures(PRESETS[1][1]).split(",")[0], twin, figures(twin).split(",")[0]))
     return "\n".join(lines)
 
 
