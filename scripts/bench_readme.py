@@ -641,9 +641,11 @@ def preset_rule(d, rows):
     words = help_presets()
     std = [r for r in rows if r["width"] == 320 and r["view"] == "standard" and r["radius_scale"] == 1.0]
 
+    def time(config):
+        return "x" + f(mean(r["x_textbook_cpu"] for r in std if r["config"] == config), 3)
+
     def figures(config):
-        c = [r for r in std if r["config"] == config]
-        return "x%s, %s dB" % (f(mean(r["x_textbook_cpu"] for r in c), 3), f(mean(r["psnr"] for r in c)))
+        return "%s, %s dB" % (time(config), f(mean(r["psnr"] for r in std if r["config"] == config)))
     lines = []
     for line in open(d + "/presets.txt"):
         m = re.match(r"^(low|medium|high|ultra)\b[^:]*: (.*) \(x[0-9.]+, [0-9.]+ dB\)$", line.strip())
@@ -657,7 +659,7 @@ def preset_rule(d, rows):
                                                                         figures(shipped)))
     twin = sweep_name(words["medium"])
     lines.append("- The same configuration timed twice in this run: DEFAULT's row %s, the sweep's %s row %s." % (
-        figures(PRESETS[1][1]).split(",")[0], twin, figures(twin).split(",")[0]))
+        time(PRESETS[1][1]), twin, time(twin)))
     return "\n".join(lines)
 
 
