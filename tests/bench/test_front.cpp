@@ -18,7 +18,7 @@ TEST_CASE("a sweep configuration both faster and more accurate takes another off
     CHECK(on_front(p, 2));  // slower but more accurate: on it
 }
 
-TEST_CASE("a tie in both stays on the front; better in one of the two is enough to dominate") {
+TEST_CASE("a tie in both stays on the front, better in one of the two is enough to dominate") {
     const std::vector<FrontPoint> tie = {{0.2, 27.0, true}, {0.2, 27.0, true}};
     CHECK(on_front(tie, 0));
     CHECK(on_front(tie, 1));

@@ -66,7 +66,7 @@ TEST_CASE("normals view: with a G-buffer it shows the decoded normal texture (vi
     CHECK(fx.gl_errors().empty());
 }
 
-TEST_CASE("normals view: depth only it is the reconstructed view; the reconstructed view ignores a G-buffer") {
+TEST_CASE("normals view: depth only it is the reconstructed view, the reconstructed view ignores a G-buffer") {
     testgl::Fixture fx;
     const auto proj = analytic::perspective(hc::kFov, double(kW) / kH, 0.1, 100.0);
     const GBuffer g = crease_scene(proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE);
@@ -158,7 +158,7 @@ TEST_CASE("normals view: a host output texture without blue is refused (UNSUPPOR
     CHECK(fx.gl_errors().empty());
 }
 
-TEST_CASE("depth-only input: normal_texture 0 ignores normal space, packing and view matrix; a bad depth texture is still refused") {
+TEST_CASE("depth-only input: normal_texture 0 ignores normal space, packing and view matrix, a bad depth texture is still refused") {
     testgl::Fixture fx;
     auto& gl = fx.gl();
     const auto proj = analytic::perspective(hc::kFov, double(kW) / kH, 0.1, 100.0);

@@ -54,7 +54,7 @@ Expected fresh_results() {
 
 }  // namespace
 
-TEST_CASE("deleted output: the host deletes the library's output; the next execute makes a new one, same size or not") {
+TEST_CASE("deleted output: the host deletes the library's output, the next execute makes a new one, same size or not") {
     const Expected expected = fresh_results();
     testgl::Fixture fx;
     auto& gl = fx.gl();

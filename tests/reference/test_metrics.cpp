@@ -92,7 +92,7 @@ TEST_CASE("the split by the limit: ours vs V_R, limit vs V_R, ours vs limit over
     CHECK(err.find("non-finite") != std::string::npos);
 }
 
-TEST_CASE("too dark gives a negative mean error; identical images give infinite PSNR") {
+TEST_CASE("too dark gives a negative mean error, identical images give infinite PSNR") {
     std::vector<float> ref(16, 0.8f), dark(16, 0.6f);
     std::vector<uint8_t> all(16, 1);
     const auto s = metrics::stats_over(dark, ref, all, nullptr, "all");
@@ -294,7 +294,7 @@ TEST_CASE("cell spread: a pattern that repeats every 8 pixels, against noise-fre
     CHECK(metrics::cell_spread(tiled, ref, half, w, h) == doctest::Approx(0.0).epsilon(1e-9));
 }
 
-TEST_CASE("cell pattern: the tile's centred means, NaN where a position has no pixel; the common part of several") {
+TEST_CASE("cell pattern: the tile's centred means, NaN where a position has no pixel, the common part of several") {
     const int w = 64, h = 48;
     const size_t n = size_t(w) * size_t(h);
     const std::vector<float> ref(n, 0.5f);

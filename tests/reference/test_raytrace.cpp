@@ -95,7 +95,7 @@ TEST_CASE("radius limits occlusion: a far wall does not occlude") {
     CHECK(t.ao_at({0, 0, 0}, {0, 1, 0}, 10.0f, 4096, 1).visibility < 0.9);
 }
 
-TEST_CASE("same seed, same result; another seed, within the noise") {
+TEST_CASE("same seed, same result, another seed, within the noise") {
     scene::Mesh m;
     testgeo::add_floor(m, 50.0f);
     testgeo::add_quad(m, {0.4f, -1, 50}, {0.4f, -1, -50}, {0.4f, 50, -50}, {0.4f, 50, 50});

@@ -203,7 +203,7 @@ TEST_CASE("nested node hierarchy: TRS and matrix, any index type, camera, hints"
     CHECK_FALSE(sc.hints.bias.has_value());
 }
 
-TEST_CASE("given normals are transformed with the inverse transpose; mirroring keeps faces outward") {
+TEST_CASE("given normals are transformed with the inverse transpose, mirroring keeps faces outward") {
     TempDir dir;
     TriangleBuffer tb;
     Bytes b = tb.b;
@@ -314,7 +314,7 @@ TEST_CASE("indices out of range") {
     CHECK(err.find("index 7 out of range") != std::string::npos);
 }
 
-TEST_CASE("points and lines are errors; strips and fans become triangles") {
+TEST_CASE("points and lines are errors, strips and fans become triangles") {
     TempDir dir;
     for (int mode : {0, 1, 2, 3}) {
         const std::string mesh = "[{\"primitives\":[{\"attributes\":{\"POSITION\":0},\"mode\":" + std::to_string(mode) + "}]}]";

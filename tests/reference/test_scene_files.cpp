@@ -143,7 +143,7 @@ TEST_CASE("a FIFO, a device or a directory as the scene fails at once with one s
     CHECK(r.error == dir.path.string() + ": not a regular file but a directory.");
 }
 
-TEST_CASE("a buffer file in the scene's folder loads; a missing one is one sentence") {
+TEST_CASE("a buffer file in the scene's folder loads, a missing one is one sentence") {
     Folder dir("inside");
     dir.write("tri.bin", triangle_bytes());
     dir.write("sub/tri.bin", triangle_bytes());
@@ -242,7 +242,7 @@ TEST_CASE("buffer URIs that leave the scene's folder are refused, naming the URI
     CHECK(load(dir.write("scene/ok2.gltf", triangle_gltf(outside)), outside_allowed()).ok);
 }
 
-TEST_CASE("a symbolic link in the folder that leads out is refused; one that stays in loads") {
+TEST_CASE("a symbolic link in the folder that leads out is refused, one that stays in loads") {
     Folder dir("links");
     dir.write("outside.bin", triangle_bytes());
     dir.write("scene/real.bin", triangle_bytes());

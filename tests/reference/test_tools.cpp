@@ -162,7 +162,7 @@ TEST_CASE("ssao-reference --help") {
     CHECK(r.output.find("--thickness") != std::string::npos);
 }
 
-TEST_CASE("ssao-reference --limit: limit_ao.exr laid out as reference_ao.exr, sky 1, deterministic; ssao-error splits") {
+TEST_CASE("ssao-reference --limit: limit_ao.exr laid out as reference_ao.exr, sky 1, deterministic, ssao-error splits") {
     TempDir dir;
     const std::string a = (dir.path / "a").string(), b = (dir.path / "b").string();
     const std::string args = " " + kModel + " --width 40 --height 24 --samples 16 --limit --limit-directions 64 --quiet";
@@ -430,7 +430,7 @@ TEST_CASE("ssao-reference: a file that is not glTF is named as such, not as a JS
     }
 }
 
-TEST_CASE("ssao-error refuses images made with another camera, radius or size, naming the field; --allow-mismatch compares") {
+TEST_CASE("ssao-error refuses images made with another camera, radius or size, naming the field, --allow-mismatch compares") {
     TempDir dir;
     auto reference = [&](const std::string& name, const std::string& flags) {
         const std::string out = (dir.path / name).string();

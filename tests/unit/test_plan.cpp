@@ -209,7 +209,7 @@ TEST_CASE("plan: intermediates are viewport-sized RG32F, odd sizes kept exactly,
     }
 }
 
-TEST_CASE("plan: the owned output's format follows the settings; a host output is written in place") {
+TEST_CASE("plan: the owned output's format follows the settings, a host output is written in place") {
     ssao_settings s = resolved(SSAO_BLUR_NONE);
     CHECK(plan_frame(s, inputs(0, 0, 8, 8)).output_format == TexFormat::r8);
     s.output_format = SSAO_OUTPUT_R16F;
@@ -282,7 +282,7 @@ TEST_CASE("pass table: one row per pass, with distinct debug groups, the public 
     CHECK(uint32_t(SSAO_PASS_DOWNSAMPLE) == uint32_t(SSAO_PASS_GRID));
 }
 
-TEST_CASE("plan: the method picks the estimator's program; the visibility march always reads the grid") {
+TEST_CASE("plan: the method picks the estimator's program, the visibility march always reads the grid") {
     const AnalysedInputs in = inputs(0, 0, 64, 48);
     for (ssao_resolution res : {SSAO_RESOLUTION_FULL, SSAO_RESOLUTION_HALF}) {
         CAPTURE(res);
@@ -419,11 +419,15 @@ TEST_CASE("plan: reduced resolution for every blur, both methods, quarter too, a
     }
 }
 
-TEST_CASE("plan: full resolution plans no downsample or upsample; strength off stays one clear at any resolution") {
+TEST_CASE("plan: full resolution plans no upsample and every pass at scale 1, strength off stays one clear at any resolution") {
     const AnalysedInputs in = inputs(0, 0, 64, 48);
     for (ssao_blur blur : {SSAO_BLUR_NONE, SSAO_BLUR_BOX_4X4, SSAO_BLUR_DEPTH_AWARE}) {
+        CAPTURE(blur);
         const FramePlan p = plan_frame(at_resolution(blur, SSAO_RESOLUTION_FULL), in);
-        CHECK((p.passes_run() & uint32_t(SSAO_PASS_GRID | SSAO_PASS_UPSAMPLE)) == 0u);
+        CHECK((p.passes_run() & uint32_t(SSAO_PASS_UPSAMPLE)) == 0u);
+        // The kernel reads the host's textures directly; the grid pass (at
+        // full resolution) only for the depth-aware blur's tangent planes.
+        CHECK(((p.passes_run() & uint32_t(SSAO_PASS_GRID)) != 0u) == (blur == SSAO_BLUR_DEPTH_AWARE));
         for (int i = 0; i < p.pass_count; ++i) {
             CHECK(p.passes[i].scale == 1);
             CHECK_FALSE(p.passes[i].depth_aware);  // the blur kind alone decides at full resolution

@@ -112,7 +112,7 @@ TEST_CASE("frame noise offsets: frame 0 is no offset, frame n is fract(n / g, n 
     }
 }
 
-TEST_CASE("plan: max_step_texels > 0 makes STEP_TEXELS a variant of the visibility pass only; 0 (off) never does") {
+TEST_CASE("plan: max_step_texels > 0 makes STEP_TEXELS a variant of the visibility pass only, 0 (off) never does") {
     for (ssao_method method : {SSAO_METHOD_KERNEL, SSAO_METHOD_VISIBILITY})
         for (float texels : {0.0f, 4.0f}) {
             CAPTURE(method);
@@ -129,7 +129,7 @@ TEST_CASE("plan: max_step_texels > 0 makes STEP_TEXELS a variant of the visibili
         }
 }
 
-TEST_CASE("plan: a unorm depth (D16, D24) makes UNORM_DEPTH a sampling-pass variant; a float depth never does") {
+TEST_CASE("plan: a unorm depth (D16, D24) makes UNORM_DEPTH a sampling-pass variant, a float depth never does") {
     for (ssao_method method : {SSAO_METHOD_KERNEL, SSAO_METHOD_VISIBILITY})
         for (ssao_resolution res : {SSAO_RESOLUTION_FULL, SSAO_RESOLUTION_HALF, SSAO_RESOLUTION_QUARTER}) {
             CAPTURE(method);

@@ -85,7 +85,7 @@ TEST_CASE("MULTIPLY: exactly the pass that writes the output blends, whatever th
             }
 }
 
-TEST_CASE("MULTIPLY with strength off runs no pass (multiplying by 1); overwrite clears to 1") {
+TEST_CASE("MULTIPLY with strength off runs no pass (multiplying by 1), overwrite clears to 1") {
     AnalysedInputs in = host_output_inputs();
     in.multiply_output = true;
     const FramePlan plan =

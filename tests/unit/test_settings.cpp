@@ -510,7 +510,7 @@ TEST_CASE("settings: a preset plus a radius derives bias and thickness from that
     }
 }
 
-TEST_CASE("settings: the derived thickness follows the step count the settings resolve to; a set one is kept") {
+TEST_CASE("settings: the derived thickness follows the step count the settings resolve to, a set one is kept") {
     for (uint32_t steps : {0u, 1u, 4u, 8u, 16u, 32u}) {
         CAPTURE(steps);
         ssao_settings in = zeroed();

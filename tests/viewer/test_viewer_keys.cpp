@@ -237,7 +237,7 @@ TEST_CASE("1..4 pick the plugin's presets with the scene's radius, 0 the default
     CHECK_FALSE(c.state().preset);
 }
 
-TEST_CASE("B steps through every blur and back; V, O, F12 and Esc") {
+TEST_CASE("B steps through every blur and back, V, O, F12 and Esc") {
     Fixture f;
     viewer::Controls c = f.controls();
     std::vector<ssao_blur> seen = {c.state().settings.blur};
