@@ -158,7 +158,13 @@ void plan_sampling(Builder& b, const ssao_settings& s, const AnalysedInputs& in,
     up.inputs[SSAO_UNIT_DEPTH] = TexRef::of(Source::depth);
     up.inputs[SSAO_UNIT_AO] = low_ao;
     up.scale = scale;
-    up.variant = host_input_variant(in);
+    // A host that averages frames (a moving frame index) averages the grid's
+    // noise away and would see what the weighted mean leaves: the picked
+    // pixels' checkerboard puts the four taps on a skewed quad, whose mean
+    // reads a soft gradient at the wrong place, a diagonal stripe every two
+    // blocks. A plane through the taps reads it at the pixel; for one frame
+    // the noise hides the stripes and the fit would buy nothing for its time.
+    up.variant = host_input_variant(in) | (in.frame_index != 0 ? variant::upsample_plane_fit : 0u);
     up.sample_index = in.sample_index;
 }
 
@@ -185,7 +191,7 @@ bool plan_ao_debug_view(Builder& b, const ssao_settings& s, const AnalysedInputs
     plan_sampling(b, planned, in, output, final_rect);
     for (int i = 0; i < plan.pass_count; ++i) {
         Pass& p = plan.passes[i];
-        if (p.kind == PassKind::upsample) p.variant |= variant::upsample_nearest;
+        if (p.kind == PassKind::upsample) p.variant = (p.variant & ~variant::upsample_plane_fit) | variant::upsample_nearest;
         if (p.kind == PassKind::blur_x || p.kind == PassKind::blur_y) p.variant |= variant::blur_weights;
     }
     return true;

@@ -71,7 +71,9 @@ constexpr uint32_t unorm_depth = 1u << 8;         // UNORM_DEPTH: the host's dep
                                                   // step is the format's fixed step, not a float's ulp
 constexpr uint32_t step_texels = 1u << 9;         // STEP_TEXELS: the visibility march's step count follows the
                                                   // radius on screen (max_step_texels)
-constexpr int kBits = 10;
+constexpr uint32_t upsample_plane_fit = 1u << 10; // UPSAMPLE_PLANE_FIT: the upsample fits a plane through its taps
+                                                  // (frame_index != 0: a TAA host's mean shows no checkerboard)
+constexpr int kBits = 11;
 }  // namespace variant
 
 // Formats of the textures the plan renders into.

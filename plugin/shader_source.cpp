@@ -11,7 +11,7 @@ namespace {
 // Indexed by bit number (plan.h, namespace variant).
 const char* const kVariantNames[] = {
     "GRID_INPUT", "MULTISAMPLE", "NORMALS_FROM_DEPTH", "FADE", "RADIUS_PIXELS", "FRAME_NOISE", "BLUR_WEIGHTS",
-    "UPSAMPLE_NEAREST", "UNORM_DEPTH", "STEP_TEXELS",
+    "UPSAMPLE_NEAREST", "UNORM_DEPTH", "STEP_TEXELS", "UPSAMPLE_PLANE_FIT",
 };
 static_assert(sizeof kVariantNames / sizeof kVariantNames[0] == static_cast<size_t>(variant::kBits),
               "one name per variant bit");

@@ -11,11 +11,47 @@
 // the tolerance (a feature thinner than a block), the tap nearest in depth is
 // taken. Sky pixels are exactly 1.
 //
+// Variant UPSAMPLE_PLANE_FIT (a moving frame index, plan.cpp says why): a
+// weighted least-squares plane through the taps (the same weights; offsets
+// in grid texels, its slope damped as the blur's line is), read at the
+// pixel, in place of their weighted mean.
+//
 // Variant UPSAMPLE_NEAREST (debug views RAW_AO and BLUR_WEIGHTS): a pixel
 // takes the value of its own block's grid texel, no depth weights, so the
 // view shows what the grid holds.
 
-// The depth-weighted bilinear AO of the 2x2 grid texels around pixel p at view z z0.
+#ifdef SSAO_UPSAMPLE_PLANE_FIT
+// The weighted moments of the taps a plane fit needs, offsets k from the pixel in grid texels.
+struct Moments {
+    vec2 k;    // sum w k
+    vec3 kk;   // sum w (kx kx, kx ky, ky ky)
+    vec2 ka;   // sum w k ao
+};
+
+void add_moments(inout Moments m, float w, vec2 k, float ao) {
+    m.k += w * k;
+    m.kk += w * vec3(k.x * k.x, k.x * k.y, k.y * k.y);
+    m.ka += w * k * ao;
+}
+
+// The fitted plane's value at the pixel (offset 0): the weighted mean moved
+// along the slope from the taps' weighted centre. SSAO_BLUR_SLOPE_DAMPING
+// on the diagonal keeps the slope small where the taps span little (two
+// taps left by the depth test, or taps on a line).
+float plane_at_pixel(Moments m, float sum, float weight) {
+    float mean = sum / weight;
+    vec2 km = m.k / weight;
+    float cxx = m.kk.x / weight - km.x * km.x + SSAO_BLUR_SLOPE_DAMPING;
+    float cxy = m.kk.y / weight - km.x * km.y;
+    float cyy = m.kk.z / weight - km.y * km.y + SSAO_BLUR_SLOPE_DAMPING;
+    vec2 cka = m.ka / weight - km * mean;
+    vec2 slope = vec2(cyy * cka.x - cxy * cka.y, cxx * cka.y - cxy * cka.x) / (cxx * cyy - cxy * cxy);
+    return clamp(mean - dot(km, slope), 0.0, 1.0);
+}
+#endif
+
+// The depth-weighted AO of the 2x2 grid texels around pixel p at view z z0:
+// their weighted mean, or the plane through them (UPSAMPLE_PLANE_FIT).
 float depth_weighted(ivec2 p, float z0) {
     // Floored as in the blur: an orthographic surface may sit at view z = 0.
     float inv_tolerance = 1.0 / max(kPlaneTolerance * consts.blur_depth_tolerance * abs(z0), 1e-30);
@@ -29,6 +65,9 @@ float depth_weighted(ivec2 p, float z0) {
     // twice, which keeps the result a weighted mean of the texels there.
     ivec2 t0 = ivec2(floor((vec2(p) + float(g.scale - g.scale / 2)) * g.inv_scale)) - 1;
     float sum = 0.0, weight = 0.0;
+#ifdef SSAO_UPSAMPLE_PLANE_FIT
+    Moments m = Moments(vec2(0.0), vec3(0.0), vec2(0.0));
+#endif
     float nearest = 1.0, nearest_dz = 3.4e38;
     for (int k = 0; k < 4; ++k) {
         ivec2 t = clamp(t0 + ivec2(k & 1, k >> 1), ivec2(0), last);
@@ -45,8 +84,16 @@ float depth_weighted(ivec2 p, float z0) {
         float w = tent.x * tent.y * clamp(1.0 - dz * inv_tolerance, 0.0, 1.0);
         sum += tap.r * w;
         weight += w;
+#ifdef SSAO_UPSAMPLE_PLANE_FIT
+        add_moments(m, w, (u0 - u) * g.inv_scale, tap.r);
+#endif
     }
-    return weight > 0.0 ? weighted_mean(sum, weight) : nearest;
+    if (!(weight > 0.0)) return nearest;
+#ifdef SSAO_UPSAMPLE_PLANE_FIT
+    return plane_at_pixel(m, sum, weight);
+#else
+    return weighted_mean(sum, weight);
+#endif
 }
 
 void main() {

@@ -150,3 +150,36 @@ TEST_CASE("plan: a unorm depth (D16, D24) makes UNORM_DEPTH a sampling-pass vari
             }
         }
 }
+
+TEST_CASE("plan: a moving frame index gives the upsample its plane fit (UPSAMPLE_PLANE_FIT), and no other pass, RAW_AO keeps the nearest texel") {
+    for (ssao_method method : {SSAO_METHOD_KERNEL, SSAO_METHOD_VISIBILITY})
+        for (ssao_resolution res : {SSAO_RESOLUTION_FULL, SSAO_RESOLUTION_HALF, SSAO_RESOLUTION_QUARTER})
+            for (ssao_blur blur : {SSAO_BLUR_NONE, SSAO_BLUR_DEPTH_AWARE})
+                for (uint32_t frame : {0u, 1u, 0xffffffffu}) {
+                    CAPTURE(method);
+                    CAPTURE(res);
+                    CAPTURE(blur);
+                    CAPTURE(frame);
+                    const FramePlan p = plan_frame(plan_test::resolve(plan_test::request(method, res, blur)), inputs(frame));
+                    int upsamples = 0;
+                    for (int i = 0; i < p.pass_count; ++i) {
+                        const bool fit = (p.passes[i].variant & variant::upsample_plane_fit) != 0;
+                        if (p.passes[i].kind != PassKind::upsample) {
+                            CHECK_FALSE(fit);
+                            continue;
+                        }
+                        ++upsamples;
+                        CHECK(fit == (frame != 0));
+                    }
+                    CHECK(upsamples == (res == SSAO_RESOLUTION_FULL ? 0 : 1));
+                    // The raw view shows the grid's own texels, never a fit of them.
+                    const FramePlan raw = plan_frame(
+                        plan_test::resolve(plan_test::request(method, res, blur, 0.0f, SSAO_DEBUG_VIEW_RAW_AO)),
+                        inputs(frame));
+                    for (int i = 0; i < raw.pass_count; ++i)
+                        if (raw.passes[i].kind == PassKind::upsample) {
+                            CHECK((raw.passes[i].variant & variant::upsample_nearest) != 0);
+                            CHECK((raw.passes[i].variant & variant::upsample_plane_fit) == 0);
+                        }
+                }
+}
