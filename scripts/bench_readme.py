@@ -224,6 +224,11 @@ def main():
         blocks["plane_fit_quick"] = ("Quick runs of every case (the build before the once-per-pixel bias, without "
                                      "and with the fit): " + quick_means(d + "/upsample/taps2x2_dirs8.csv",
                                                                           d + "/grid_study/plane_fit/quick_new.csv") + ".")
+    if os.path.exists(d + "/grid_study/block_plane/llvmpipe/old_1.csv"):
+        blocks["block_plane_time"] = ab_table(d + "/grid_study/block_plane", "every texel's plane (shipped)",
+                                              "a plane past an edge read through the snap (not shipped)", "grid")
+        blocks["block_plane_quick"] = ("Quick runs of every case (without and with the check): " + quick_means(
+            d + "/grid_study/block_plane/quick_old.csv", d + "/grid_study/block_plane/quick_new.csv") + ".")
     if os.path.exists(d + "/cell_pattern/cell_pattern.csv"):
         blocks["cell_pattern"] = cell_pattern_table(d + "/cell_pattern/cell_pattern.csv")
     if os.path.exists(d + "/gpu/bench.csv"):
