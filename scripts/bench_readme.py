@@ -229,6 +229,10 @@ def main():
                                               "a plane past an edge read through the snap (not shipped)", "grid")
         blocks["block_plane_quick"] = ("Quick runs of every case (without and with the check): " + quick_means(
             d + "/grid_study/block_plane/quick_old.csv", d + "/grid_study/block_plane/quick_new.csv") + ".")
+    if os.path.exists(d + "/step_length/steps_by_elevation.csv"):
+        blocks["steps_by_elevation"] = ("Quick runs of every case (the shipped march, then steps by elevation): " +
+                                        quick_means(d + "/grid_study/block_plane/quick_old.csv",
+                                                    d + "/step_length/steps_by_elevation.csv") + ".")
     if os.path.exists(d + "/cell_pattern/cell_pattern.csv"):
         blocks["cell_pattern"] = cell_pattern_table(d + "/cell_pattern/cell_pattern.csv")
     if os.path.exists(d + "/gpu/bench.csv"):
