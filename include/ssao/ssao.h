@@ -491,9 +491,11 @@ typedef struct ssao_inputs {
                                     per-pixel rotation and step jitter move along a low-discrepancy sequence
                                     indexed by it, so a host's TAA averages the noise away: pass the frame
                                     number (any uint32; a fixed index gives bit-identical output). With
-                                    rotation NONE the whole kernel turns from frame to frame. The first
-                                    execute with a nonzero index compiles the variant that does this
-                                    (a one-time cost; SHADER if the driver cannot compile it) */
+                                    rotation NONE the whole kernel turns from frame to frame. Below full
+                                    resolution the upsample then fits a plane through its taps, so the
+                                    averaged AO keeps no pattern of the grid's picked pixels. The first
+                                    execute with a nonzero index compiles the variants that do this
+                                    (a one-time cost; SHADER if the driver cannot compile them) */
 } ssao_inputs;
 
 /** sizeof(ssao_inputs) as interfaces 1.0 and 1.1 defined it; the library accepts it. */
