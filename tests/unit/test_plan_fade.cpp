@@ -1,8 +1,11 @@
 // test_plan_fade.cpp - fade, radius in pixels and the frame index in the frame plan (no GL):
 // the sampling pass gets the FADE, RADIUS_PIXELS and FRAME_NOISE variant bits
 // only when asked for (fade_end > 0, radius_pixels > 0, frame_index != 0),
-// no other pass ever does and no pass is added, so a frame without them runs
-// exactly today's programs; and frame_noise_offsets walks the R2 sequence.
+// no other pass gets them and no pass is added, so a frame without them runs
+// exactly today's programs; a nonzero frame index also gives the upsample
+// (below full resolution) UPSAMPLE_PLANE_FIT; STEP_TEXELS and UNORM_DEPTH
+// follow their settings and inputs; and frame_noise_offsets walks the R2
+// sequence.
 #include "kernel.h"
 #include "pass_table.h"
 #include "plan.h"
