@@ -10,6 +10,10 @@
 #define SSAO_NOISE_SIZE 4           /* the noise texture is 4x4 */
 #define SSAO_BLUR_MAX_TAPS 16       /* = SSAO_MAX_BLUR_RADIUS of the ABI */
 #define SSAO_MARCH_MAX_STEPS 32     /* = SSAO_MAX_STEPS of the ABI */
+/* A march of N steps with jitter u in [0, 1) places step j at
+ * (j + u) R / (N - SSAO_MARCH_STRETCH (1 - u)): the last step lands between
+ * (N - 1) / (N - SSAO_MARCH_STRETCH) R and R (visibility.frag says why). */
+#define SSAO_MARCH_STRETCH 0.5
 /* The depth tests against a tangent plane (the blur's, the upsample's) accept
  * this share of the blur's relative depth tolerance (ao_texture.glsl). */
 #define SSAO_PLANE_TOLERANCE 0.2

@@ -2,7 +2,7 @@
 // within the radius, as far as one depth layer can show it. Each of
 // consts.sample_count directions (cosine-distributed, in the kernel block) is marched
 // from P to the radius in consts.step_count steps or more (direction_steps),
-// offset per pixel; a step is
+// offset per pixel (march_step_length); a step is
 // blocked when the depth layer (read through the texel's tangent plane) lies
 // in front of it by at least the bias and at most the thickness (a thin object does not shadow what lies far behind
 // it), and a direction is blocked by its first blocked step. Sky, off-screen
@@ -135,6 +135,19 @@ bool step_surface(vec3 s, float sn, vec2 spf, ivec2 spx, Surface sf, StepSetup s
     return z != SKY_Z;
 }
 
+// The length of a step, N steps with jitter u: steps at (j + u) R / N, the
+// even spacing, end at (N - 1 + u) R / N, short of the radius by R / (2N) on
+// average, and miss what a segment meets only past the last step: a surface
+// approached late in the march (the far part of a contact shadow or a
+// crease's falloff, which read too light). Stretched so that the last step
+// reaches R at u = 1, the steps lie further apart and pass over more thin
+// occluders. SSAO_MARCH_STRETCH = 0.5, halfway, read best in quick runs of
+// every benchmark case against 0, 0.25, 0.75 and 1 (docs/benchmark.md,
+// "Where the steps land").
+float march_step_length(float radius, int steps, float jitter) {
+    return radius / (float(steps) - SSAO_MARCH_STRETCH * (1.0 - jitter));
+}
+
 // Steps along one direction: consts.step_count, or, where max_step_texels is
 // set (> 0), more where the march spans more than that many
 // consts.max_step_texels on screen: as many as keep each step within it, up
@@ -168,9 +181,11 @@ void main() {
     float thickness = consts.thickness * sf.radius_scale;
 #ifndef SSAO_STEP_TEXELS
     int steps = consts.step_count;
-    float step_length = radius / float(steps);
 #endif
     float jitter = step_jitter(sf.vpx);
+#ifndef SSAO_STEP_TEXELS
+    float step_length = march_step_length(radius, steps, jitter);
+#endif
     int count = consts.sample_count;
     float open = 0.0;
     // Projection is linear: a step's clip coordinates are those of P plus
@@ -194,7 +209,7 @@ void main() {
         float dn = dot(dir, sf.n);
 #ifdef SSAO_STEP_TEXELS
         int steps = direction_steps(st, clip_p, clip_dir, radius);
-        float step_length = radius / float(steps);
+        float step_length = march_step_length(radius, steps, jitter);
 #endif
         bool blocked = false;
         vec2 prev_spf = clip_p.xy / clip_p.w;  // the previous point: P, then each step

@@ -3,6 +3,7 @@
 #include "kernel.h"
 #include "projection.h"
 #include "settings.h"
+#include "uniforms.h"  // SSAO_MARCH_STRETCH (shaders/ssao_constants.h)
 
 #include <algorithm>
 #include <cmath>
@@ -159,7 +160,7 @@ float ao(const Input& in, const ssao_settings& s, int x, int y) {
             bool blocked = false;
             glm::dvec3 prev = P;
             for (uint32_t j = 0; j < steps && !blocked; ++j) {
-                const glm::dvec3 sp = P + dir * (radius * (j + jitter) / steps);
+                const glm::dvec3 sp = P + dir * (radius * (j + jitter) / (steps - SSAO_MARCH_STRETCH * (1.0 - jitter)));
                 const glm::dvec3 before = prev;
                 prev = sp;
                 int sx = 0, sy = 0;

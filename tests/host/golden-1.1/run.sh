@@ -34,6 +34,8 @@
 # 13. the full-resolution depth-aware blur reads each tap's own tangent plane
 #     under the centre too (two ways: ultra-*, high-reverse-z-teapot,
 #     kernel-depth-aware-corner).
+# 14. the visibility march's steps stretch with the jitter so that the last
+#     reaches the radius at the jitter's top (every visibility case).
 # The chapter cases are still 1.1's. On a renderer other than llvmpipe the
 # check is skipped (exit 77) and make refuses. The header's other
 # attributes (ssao-host records the scene and camera there) are not part of
