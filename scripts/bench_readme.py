@@ -230,9 +230,11 @@ def main():
         blocks["block_plane_quick"] = ("Quick runs of every case (without and with the check): " + quick_means(
             d + "/grid_study/block_plane/quick_old.csv", d + "/grid_study/block_plane/quick_new.csv") + ".")
     if os.path.exists(d + "/step_length/steps_by_elevation.csv"):
-        blocks["steps_by_elevation"] = ("Quick runs of every case (the shipped march, then steps by elevation): " +
+        blocks["steps_by_elevation"] = ("Quick runs of every case (the evenly spaced march, then steps by elevation): " +
                                         quick_means(d + "/grid_study/block_plane/quick_old.csv",
                                                     d + "/step_length/steps_by_elevation.csv") + ".")
+    if os.path.exists(d + "/step_length/stretch/stretch_0.5.csv"):
+        blocks["march_stretch"] = stretch_table(d)
     if os.path.exists(d + "/cell_pattern/cell_pattern.csv"):
         blocks["cell_pattern"] = cell_pattern_table(d + "/cell_pattern/cell_pattern.csv")
     if os.path.exists(d + "/gpu/bench.csv"):
@@ -574,6 +576,29 @@ def quick_means(old, new):
         return {label: mean(r["psnr"] for r in rows if r["config"] == name) for label, name, _ in PRESETS}
     a, b = means(old), means(new)
     return ", ".join("%s %s -> %s dB" % (label, f(a[label]), f(b[label])) for label, _, _ in PRESETS)
+
+
+def stretch_table(d):
+    """Quick runs of every case with the march's steps at (j + u) R / (N - s (1 - u)) for stretch s from 0 (the
+    even spacing, the block-plane study's run of the build before) to 1: each preset's mean PSNR against V_R and
+    DEFAULT's bias."""
+    runs = [("0 (before)", d + "/grid_study/block_plane/quick_old.csv")] + [
+        (s, d + "/step_length/stretch/stretch_%s.csv" % s) for s in ("0.25", "0.5", "0.75", "1")]
+    lines = ["| stretch s | LOW | MEDIUM | HIGH | ULTRA | MEDIUM per case against s = 0: worst, best | "
+             "MEDIUM mean bias | MEDIUM cases with abs(bias) <= 0.003 |", "|---|---:|---:|---:|---:|---:|---:|---:|"]
+    key = lambda r: (r["scene"], r["view"], r["radius_scale"])
+    before = None
+    for label, path in runs:
+        rows = [r for r in load(path) if r["width"] == 320 and r["psnr"] == r["psnr"]]
+        psnr = [f(mean(r["psnr"] for r in rows if r["config"] == name)) for _, name, _ in PRESETS]
+        medium = {key(r): r for r in rows if r["config"] == PRESETS[1][1]}
+        before = before or medium
+        change = [r["psnr"] - before[k]["psnr"] for k, r in medium.items()]
+        lines.append("| %s | %s | %s | %s | %d of %d |" % (
+            label, " | ".join(psnr), "-" if medium is before else "%+.2f, %+.2f dB" % (min(change), max(change)),
+            signed(mean(r["bias"] for r in medium.values())),
+            sum(abs(r["bias"]) <= 0.003 for r in medium.values()), len(medium)))
+    return "\n".join(lines)
 
 
 def cell_pattern_table(path):

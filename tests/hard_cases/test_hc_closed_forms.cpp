@@ -11,6 +11,7 @@
 
 #include "hc_util.h"
 #include "kernel.h"
+#include "uniforms.h"  // SSAO_MARCH_STRETCH (shaders/ssao_constants.h)
 
 #include <algorithm>
 #include <cmath>
@@ -333,12 +334,13 @@ TEST_CASE("closed forms: a coarse march blocks where its segment crosses the wal
     // down: most steps that pass the wall land further behind it (in view
     // depth) than the thickness, so a point test alone would call them open.
     // The crossing test blocks them, so every direction whose segment meets
-    // the wall before the last step is blocked: with no rotation the last
-    // step stands at (4 - 0.5) / 4 R for every pixel, and the GPU must land
-    // on V within that distance (exact ray casts), as the converged march
-    // lands on V_R above.
+    // the wall before the last step is blocked: with no rotation the jitter
+    // is 0.5 and the last step stands at (4 - 0.5) / (4 - 0.5 stretch) R for
+    // every pixel (SSAO_MARCH_STRETCH), and the GPU must land on V within
+    // that distance (exact ray casts), as the converged march lands on V_R
+    // above.
     testgl::Fixture fx;
-    const double R = 1.5, last = 3.5 / 4.0 * R;
+    const double R = 1.5, last = 3.5 / (4.0 - 0.5 * SSAO_MARCH_STRETCH) * R;
     ssao_settings s = hc::make(64, SSAO_BLUR_NONE, SSAO_ROTATION_NONE, static_cast<float>(R), SSAO_METHOD_VISIBILITY);
     s.step_count = 4;
     s.thickness = static_cast<float>(0.1 * R);
