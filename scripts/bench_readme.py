@@ -9,7 +9,8 @@ every case, the time-against-pixels table, the half/quarter-resolution
 ratios, from thickness.csv (scripts/thickness-sweep.sh) the thickness
 table and, from step_length/ (two ssao-bench --quick --sweep presets runs of
 one build, fixed.csv with --max-step-texels 1e6, which keeps every step count,
-and texels4.csv with 4; and a full run with 4, full_texels4.csv, beside DIR's),
+and texels4.csv with 4; and full runs with 4, full_texels4.csv, and off, full_even_steps.csv, of the build
+before the march's stretch),
 the step-length tables and, from upsample/ (four quick runs: the upsample's 2x2 or 3x3 taps, MEDIUM's
 directions), the upsample table and, from cell_pattern/ (a quick run's cell_pattern.csv), the shared-pattern
 table, and from grid_study/ (scripts/grid-study.sh, and the A/B and quick runs of the plane-fit upsample) the
@@ -196,9 +197,12 @@ def main():
     if os.path.exists(d + "/thickness.csv"):
         blocks["thickness"] = thickness_table(d + "/thickness.csv")
     if os.path.exists(d + "/step_length/fixed.csv"):
-        blocks["step_length"] = step_length_table(d + "/step_length", rows)
-        blocks["step_length_summary"] = step_length_summary(d + "/step_length/full_texels4.csv", rows)
-        blocks["step_length_standard"] = step_length_standard(d + "/step_length/full_texels4.csv", rows)
+        # The full run with 4 texels was made on the build before the march's stretch; that build's full run
+        # with it off (full_even_steps.csv) is its baseline, not this page's.
+        even = load(d + "/step_length/full_even_steps.csv")
+        blocks["step_length"] = step_length_table(d + "/step_length", even)
+        blocks["step_length_summary"] = step_length_summary(d + "/step_length/full_texels4.csv", even)
+        blocks["step_length_standard"] = step_length_standard(d + "/step_length/full_texels4.csv", even)
     if os.path.exists(d + "/upsample/taps2x2_dirs8.csv"):
         blocks["upsample"] = upsample_table(d + "/upsample")
     if os.path.exists(d + "/thickness_every_view/base0.5_k2.csv"):
@@ -235,6 +239,11 @@ def main():
                                                     d + "/step_length/steps_by_elevation.csv") + ".")
     if os.path.exists(d + "/step_length/stretch/stretch_0.5.csv"):
         blocks["march_stretch"] = stretch_table(d)
+    if os.path.exists(d + "/step_length/stretch/stretch_0.5_thickness_1.0.csv"):
+        blocks["stretch_thickness"] = "Quick runs of every case at stretch 0.5, T = R (0.5 + k / steps): " + "; ".join(
+            "k %s -> k %s: %s" % (a, b, quick_means(d + "/step_length/stretch/" + old, d + "/step_length/stretch/" + new))
+            for a, b, old, new in (("1.5 (shipped)", "1.0", "stretch_0.5.csv", "stretch_0.5_thickness_1.0.csv"),
+                                   ("1.5 (shipped)", "2.0", "stretch_0.5.csv", "stretch_0.5_thickness_2.0.csv"))) + "."
     if os.path.exists(d + "/cell_pattern/cell_pattern.csv"):
         blocks["cell_pattern"] = cell_pattern_table(d + "/cell_pattern/cell_pattern.csv")
     if os.path.exists(d + "/gpu/bench.csv"):
@@ -382,7 +391,7 @@ def step_length_table(d, main_rows):
             lines.append("| %s | %s | %s | %d of %d (%g dB) | %s, %s | %s |" % (
                 label, title, f(mean(r["psnr"] for r in c)), within, len(c), margin, signed(mean(r["bias"] for r in c)),
                 signed(max(r["bias"] for r in c), 3), f(median(r["x_textbook_cpu"] for r in c), 3)))
-    full = [("off (this page's run)", main_rows), ("4", load(d + "/full_texels4.csv"))]
+    full = [("off", main_rows), ("4", load(d + "/full_texels4.csv"))]
     widths = sorted({r["width"] for r in main_rows})
     lines += ["", "Full runs (errors at 320x180; x textbook: CPU time, median over the cases at each size):", "",
               "| preset | max_step_texels | PSNR (mean) | within the limit's margin | bias: worst | %s |" % " | ".join(
@@ -514,9 +523,10 @@ GRID_STUDY = [("DEFAULT", "DEFAULT"), ("DEFAULT converged", "converged (64 frame
               ("full resolution converged", "converged, full resolution"),
               ("32 steps converged", "32 steps, converged"),
               ("32 steps full resolution converged", "32 steps, converged, full resolution")]
-GRID_STUDY_BUILDS = [("weighted_mean", "before: the weighted mean in every frame"),
-                     ("fixed_pick", "one fixed pixel per block (weighted mean)"),
-                     ("full_planes", "steps read full-resolution planes (weighted mean)")]
+GRID_STUDY_BUILDS = [("even_steps", "before: evenly spaced steps"),
+                     ("weighted_mean", "before that: the weighted mean in every frame"),
+                     ("fixed_pick", "one fixed pixel per block (weighted mean, even steps)"),
+                     ("full_planes", "steps read full-resolution planes (weighted mean, even steps)")]
 
 
 def grid_study_table(d):
@@ -539,9 +549,9 @@ def grid_study_table(d):
 
 
 def grid_study_summary(d):
-    """The grid study's findings in figures (DIR/grid_study.csv and the weighted-mean build's run beside it): what
-    averaging frame indices, full resolution and 32 steps each buy on the mean over the scenes, and what the plane
-    fit buys a TAA host's mean."""
+    """The grid study's findings in figures (DIR/grid_study.csv and the earlier builds' runs beside it): what
+    averaging frame indices, full resolution and 32 steps each buy on the mean over the scenes, what the march's
+    stretch buys, and what the plane fit buys a TAA host's mean."""
     rows = load(d + "/grid_study.csv")
     scenes = [r["scene"] for r in rows if r["config"] == "DEFAULT"]
 
@@ -560,11 +570,15 @@ def grid_study_summary(d):
            % grid[:3],
            "- 32 steps instead of 4 on the grid, converged: %+.1f dB on the mean (%+.1f to %+.1f per scene); at full "
            "resolution 32 steps converged read %.1f dB against the limit." % (steps[:3] + (mean(s32_full.values()),))]
-    if os.path.exists(d + "/grid_study_weighted_mean.csv"):
-        before = v("DEFAULT converged", load(d + "/grid_study_weighted_mean.csv"))
-        fit = gain(before, conv)
-        out.append("- The plane fit against the weighted mean, converged: %+.2f dB on the mean (%+.2f to %+.2f per "
-                   "scene)." % fit[:3])
+    if os.path.exists(d + "/grid_study_even_steps.csv"):
+        even = load(d + "/grid_study_even_steps.csv")
+        one, many = gain(v("DEFAULT", even), single), gain(v("DEFAULT converged", even), conv)
+        out.append("- The stretched steps against evenly spaced ones: %+.2f dB on the mean in one frame (%+.2f to %+.2f "
+                   "per scene), %+.2f dB converged (%+.2f to %+.2f)." % (one[:3] + many[:3]))
+        if os.path.exists(d + "/grid_study_weighted_mean.csv"):
+            fit = gain(v("DEFAULT converged", load(d + "/grid_study_weighted_mean.csv")), v("DEFAULT converged", even))
+            out.append("- The plane fit against the weighted mean, converged (both with evenly spaced steps): %+.2f dB "
+                       "on the mean (%+.2f to %+.2f per scene)." % fit[:3])
     return "\n".join(out)
 
 
