@@ -328,17 +328,14 @@ public:
     // The scene budget, checked before anything is flattened: nodes that
     // repeat a mesh multiply its triangles, and nodes shared as children
     // multiply whole subtrees (a chain of nodes with two children each
-    // doubles per level). So each node's flattened triangles and node
-    // instances are summed once (memoised over the node graph, saturating),
-    // from the accessors' counts alone; visit() checks everything else.
+    // doubles per level). So each node's flattened triangles, node and
+    // primitive instances and vertices are summed once (memoised over the
+    // node graph, saturating), from the accessors' counts alone; visit()
+    // checks everything else.
     bool within_budget(const std::vector<int>& roots) {
         memo_.assign(model_.nodes.size(), Cost{});
         Cost total;
-        for (int r : roots) {
-            const Cost c = cost(r, 0);
-            total.triangles = saturating_add(total.triangles, c.triangles);
-            total.instances = saturating_add(total.instances, c.instances);
-        }
+        for (int r : roots) total.add(cost(r, 0));
         if (total.instances > limits_.max_node_instances)
             return fail("has more than " + std::to_string(limits_.max_node_instances) +
                         " node instances once flattened (nodes shared as children repeat their subtrees); "
@@ -347,29 +344,48 @@ public:
             return fail("has more than " + std::to_string(limits_.max_triangles) +
                         " triangles once its nodes are flattened (meshes repeated by nodes count each time); "
                         "this is the scene budget");
+        if (total.primitives > limits_.max_primitive_instances)
+            return fail("has more than " + std::to_string(limits_.max_primitive_instances) +
+                        " primitive instances once its nodes are flattened (meshes repeated by nodes count each "
+                        "time); this is the scene budget");
+        if (total.vertices > limits_.max_vertices)
+            return fail("has more than " + std::to_string(limits_.max_vertices) +
+                        " vertices once its nodes are flattened (meshes repeated by nodes count each time); "
+                        "this is the scene budget");
         return true;
     }
 
-    struct Cost {
-        uint64_t triangles = 0, instances = 0;
-        int state = 0;  // 0 not yet, 1 in progress (a cycle if met again), 2 done
-    };
     static uint64_t saturating_add(uint64_t a, uint64_t b) {
         return a > std::numeric_limits<uint64_t>::max() - b ? std::numeric_limits<uint64_t>::max() : a + b;
     }
-    uint64_t mesh_triangles(int mesh_index) const {
-        if (mesh_index < 0 || size_t(mesh_index) >= model_.meshes.size()) return 0;
-        uint64_t n = 0;
-        for (const tinygltf::Primitive& prim : model_.meshes[size_t(mesh_index)].primitives) {
-            int counted = prim.indices;
-            if (counted < 0) {
-                const auto pos = prim.attributes.find("POSITION");
-                counted = pos == prim.attributes.end() ? -1 : pos->second;
-            }
-            if (counted >= 0 && size_t(counted) < model_.accessors.size())
-                n = saturating_add(n, triangles_of(prim.mode, model_.accessors[size_t(counted)].count));
+    // What flattening a node (or a subtree, or a mesh) makes.
+    struct Cost {
+        uint64_t triangles = 0, instances = 0, primitives = 0, vertices = 0;
+        int state = 0;  // 0 not yet, 1 in progress (a cycle if met again), 2 done
+        void add(const Cost& o) {
+            triangles = saturating_add(triangles, o.triangles);
+            instances = saturating_add(instances, o.instances);
+            primitives = saturating_add(primitives, o.primitives);
+            vertices = saturating_add(vertices, o.vertices);
         }
-        return n;
+    };
+    // A mesh's triangles, primitives and POSITION vertices, from the accessors' counts alone.
+    Cost mesh_cost(int mesh_index) const {
+        Cost c;
+        if (mesh_index < 0 || size_t(mesh_index) >= model_.meshes.size()) return c;
+        auto count_of = [&](int accessor) -> uint64_t {
+            return accessor >= 0 && size_t(accessor) < model_.accessors.size() ? model_.accessors[size_t(accessor)].count
+                                                                               : 0;
+        };
+        for (const tinygltf::Primitive& prim : model_.meshes[size_t(mesh_index)].primitives) {
+            const auto pos = prim.attributes.find("POSITION");
+            const uint64_t vertices = pos == prim.attributes.end() ? 0 : count_of(pos->second);
+            const uint64_t drawn = prim.indices >= 0 ? count_of(prim.indices) : vertices;
+            c.triangles = saturating_add(c.triangles, triangles_of(prim.mode, drawn));
+            c.primitives = saturating_add(c.primitives, 1);
+            c.vertices = saturating_add(c.vertices, vertices);
+        }
+        return c;
     }
     // Invalid nodes, cycles and overdeep trees cost nothing here: visit()
     // reports them (it stops at the first failure, so they cost it little).
@@ -380,14 +396,9 @@ public:
         if (memo.state == 1) return Cost{};
         memo.state = 1;
         const tinygltf::Node& node = model_.nodes[size_t(node_index)];
-        Cost c;
-        c.triangles = mesh_triangles(node.mesh);
+        Cost c = mesh_cost(node.mesh);
         c.instances = 1;
-        for (int child : node.children) {
-            const Cost k = cost(child, depth + 1);
-            c.triangles = saturating_add(c.triangles, k.triangles);
-            c.instances = saturating_add(c.instances, k.instances);
-        }
+        for (int child : node.children) c.add(cost(child, depth + 1));
         c.state = 2;
         memo_[size_t(node_index)] = c;  // memo_ is not resized during the walk
         return c;

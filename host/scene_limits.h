@@ -1,6 +1,6 @@
 // scene_limits.h - what a scene file may cost before loading gives up with a
-// sentence: file size, JSON nesting depth and triangles after flattening,
-// and which files its URIs may reach.
+// sentence: file size, JSON nesting depth, what flattening makes (triangles,
+// node and primitive instances, vertices) and which files its URIs may reach.
 // Scenes come from anywhere; each limit stops one way a small hostile file
 // turns into a crash or an unbounded amount of work.
 #pragma once
@@ -35,6 +35,16 @@ struct Limits {
     // subtrees, so 30 levels of two children each are 2^30 instances even
     // without a single triangle.
     uint64_t max_node_instances = 1'000'000;
+    // Primitive instances once flattened: each one reads its accessors and
+    // allocates whether it draws a triangle or not, so 1,900 nodes that
+    // repeat a mesh of 1,900 primitives of two vertices (no triangle) make
+    // 3.6 million primitive loads from a 64 KB file.
+    uint64_t max_primitive_instances = 1'000'000;
+    // Vertices read once flattened (each primitive instance's POSITION
+    // count): a primitive may read a large POSITION accessor and index two of
+    // its vertices. 24 million is the unindexed vertices of max_triangles,
+    // ~600 MB of positions and normals.
+    uint64_t max_vertices = 24'000'000;
 };
 
 // The deepest nesting of [ ] and { } in the JSON text (brackets inside

@@ -35,6 +35,8 @@ scene::Limits fuzz_limits() {
     scene::Limits l;
     l.max_bytes = 1 << 20;
     l.max_triangles = 200000;
+    l.max_primitive_instances = 20000;
+    l.max_vertices = 600000;
     return l;
 }
 
