@@ -143,7 +143,7 @@ bool step_surface(vec3 s, float sn, vec2 spf, ivec2 spx, Surface sf, StepSetup s
 // reaches R at u = 1, the steps lie further apart and pass over more thin
 // occluders. SSAO_MARCH_STRETCH = 0.5, halfway, read best in quick runs of
 // every benchmark case against 0, 0.25, 0.75 and 1 (docs/benchmark.md,
-// "Where the steps land").
+// "Where the last step lands").
 float march_step_length(float radius, int steps, float jitter) {
     return radius / (float(steps) - SSAO_MARCH_STRETCH * (1.0 - jitter));
 }
