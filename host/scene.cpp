@@ -340,18 +340,17 @@ public:
             return fail("has more than " + std::to_string(limits_.max_node_instances) +
                         " node instances once flattened (nodes shared as children repeat their subtrees); "
                         "this is the scene budget");
-        if (total.triangles > limits_.max_triangles)
-            return fail("has more than " + std::to_string(limits_.max_triangles) +
-                        " triangles once its nodes are flattened (meshes repeated by nodes count each time); "
-                        "this is the scene budget");
-        if (total.primitives > limits_.max_primitive_instances)
-            return fail("has more than " + std::to_string(limits_.max_primitive_instances) +
-                        " primitive instances once its nodes are flattened (meshes repeated by nodes count each "
-                        "time); this is the scene budget");
-        if (total.vertices > limits_.max_vertices)
-            return fail("has more than " + std::to_string(limits_.max_vertices) +
-                        " vertices once its nodes are flattened (meshes repeated by nodes count each time); "
-                        "this is the scene budget");
+        const struct {
+            uint64_t count, limit;
+            const char* what;
+        } per_mesh[] = {{total.triangles, limits_.max_triangles, "triangles"},
+                        {total.primitives, limits_.max_primitive_instances, "primitive instances"},
+                        {total.vertices, limits_.max_vertices, "vertices"}};
+        for (const auto& b : per_mesh)
+            if (b.count > b.limit)
+                return fail("has more than " + std::to_string(b.limit) + " " + b.what +
+                            " once its nodes are flattened (meshes repeated by nodes count each time); "
+                            "this is the scene budget");
         return true;
     }
 
