@@ -28,9 +28,10 @@ constexpr float kDefaultBlurTolerance = 0.05f;
 // apart misses blocked intervals shorter than a step, which a thicker slab
 // makes up for; with many steps the march approaches the one-plane read, and
 // there R/2 is best. Read off scripts/thickness-sweep.sh (docs/bench/
-// thickness.csv: the best T over six scenes and three radii fell from 0.875 R
-// at 4 steps to 0.5 R at 32), and still best with the march's stretch in
-// quick runs of every case (docs/benchmark.md, "Where the last step lands").
+// thickness.csv: the best T over six scenes and three radii falls from
+// 0.75-0.875 R at 4 steps to 0.5 R at 32); over every view, quick runs of
+// every case keep 1.5 / steps against 1 and 2 (docs/benchmark.md, "Where the
+// last step lands").
 constexpr float kThicknessBaseOfRadius = 0.5f;
 constexpr float kThicknessStepsOfRadius = 1.5f;
 inline float default_thickness(float radius, uint32_t step_count) {
