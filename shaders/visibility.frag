@@ -179,11 +179,9 @@ void main() {
 
     float radius = sf.radius;  // the step length scales with the per-pixel radius (RADIUS_PIXELS)
     float thickness = consts.thickness * sf.radius_scale;
-#ifndef SSAO_STEP_TEXELS
-    int steps = consts.step_count;
-#endif
     float jitter = step_jitter(sf.vpx);
 #ifndef SSAO_STEP_TEXELS
+    int steps = consts.step_count;
     float step_length = march_step_length(radius, steps, jitter);
 #endif
     int count = consts.sample_count;
