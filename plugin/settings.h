@@ -52,7 +52,8 @@ ssao_status resolve_settings(const ssao_settings& in, ssao_settings& out, std::s
 // value a C caller passes is checked before it is read as an ssao_preset.
 ssao_status preset_settings(uint32_t raw_preset, ssao_settings& out, std::string& why);
 
-// Viewport pixels per reduced-grid texel along each axis: 1, 2 or 4.
+// Viewport pixels per reduced-grid texel along each axis: 1, 2 or 4 (the
+// shaders shift by its logarithm, shaders/common.glsl scale_log2).
 inline int resolution_scale(const ssao_settings& resolved) {
     return resolved.resolution == SSAO_RESOLUTION_QUARTER ? 4 : resolved.resolution == SSAO_RESOLUTION_HALF ? 2 : 1;
 }

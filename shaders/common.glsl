@@ -26,9 +26,15 @@ uniform int u_scale;
 // The host's depth at viewport pixel vpx.
 float input_depth(ivec2 vpx) { return SSAO_INPUT_TEXEL(u_depth_tex, vpx).r; }
 
+// u_scale is 1, 2 or 4 (plugin/settings.h resolution_scale), so u_scale >> 1
+// is its base-2 logarithm, and a shift by it divides by u_scale. No shader
+// divides an integer by u_scale: llvmpipe has no SIMD integer division and
+// divides lane by lane, which cost the upsample a sixth of its time.
+int scale_log2() { return u_scale >> 1; }
+
 // The grid: ceil(viewport / scale) texels, so an odd size's last block is
 // partial and still has its texel.
-ivec2 grid_size() { return (consts.viewport_size + u_scale - 1) / u_scale; }
+ivec2 grid_size() { return (consts.viewport_size + u_scale - 1) >> scale_log2(); }
 
 // How viewport pixels and grid texels map, with the uniforms read once: a
 // loop that maps many points (the march) takes grid_map() before it, since
@@ -49,7 +55,7 @@ GridMap grid_map() {
     g.scale = u_scale;
     g.inv_scale = 1.0 / float(u_scale);
     g.checker = u_scale > 1 ? 1 : 0;
-    g.pick = u_scale > 1 ? u_scale / 2 - 1 : 0;
+    g.pick = u_scale > 1 ? (u_scale >> 1) - 1 : 0;
     return g;
 }
 

@@ -63,7 +63,7 @@ float depth_weighted(ivec2 p, float z0) {
     // side of p's half of the block (exact in float for a power-of-two
     // scale), clamped into the grid: at the border a texel may be taken
     // twice, which keeps the result a weighted mean of the texels there.
-    ivec2 t0 = ivec2(floor((vec2(p) + float(g.scale - g.scale / 2)) * g.inv_scale)) - 1;
+    ivec2 t0 = ivec2(floor((vec2(p) + float(g.scale - (g.scale >> 1))) * g.inv_scale)) - 1;
     float sum = 0.0, weight = 0.0;
 #ifdef SSAO_UPSAMPLE_PLANE_FIT
     Moments m = Moments(vec2(0.0), vec3(0.0), vec2(0.0));
@@ -105,7 +105,7 @@ void main() {
         return;
     }
 #ifdef SSAO_UPSAMPLE_NEAREST
-    float ao = texelFetch(u_ao_tex, p / u_scale, 0).r;
+    float ao = texelFetch(u_ao_tex, p >> scale_log2(), 0).r;
 #else
     // Beyond the distance fade's end the AO is exactly 1, as the sampling
     // pass makes it on the grid: a tap whose plane continues a receding
