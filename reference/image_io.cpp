@@ -116,6 +116,36 @@ struct LoadedExr {
     LoadedExr& operator=(const LoadedExr&) = delete;
 };
 
+// The value tinyexr takes from a single-part header's "type" attribute (the
+// last one with a value), or "" when there is none: the attributes from byte
+// 8 on, each a NUL-terminated name and type name, a 4-byte little-endian size
+// and the value, read as tinyexr reads them (at most 1024, a string value up
+// to its first NUL). Where tinyexr would refuse the header itself, the scan
+// stops and leaves that to it.
+std::string type_attribute(const std::vector<unsigned char>& bytes) {
+    constexpr int kMaxAttributes = 1024;  // tinyexr's TINYEXR_MAX_HEADER_ATTRIBUTES
+    std::string type;
+    size_t pos = 8;
+    for (int n = 0; n < kMaxAttributes && pos < bytes.size() && bytes[pos] != 0; ++n) {
+        const char* p = reinterpret_cast<const char*>(bytes.data()) + pos;
+        const size_t left = bytes.size() - pos;
+        const size_t name_len = strnlen(p, left);
+        if (name_len == left) break;
+        const size_t type_at = name_len + 1;
+        const size_t type_len = strnlen(p + type_at, left - type_at);
+        if (type_len == left - type_at) break;
+        size_t at = type_at + type_len + 1;
+        if (left - at < 4) break;
+        const auto* s = reinterpret_cast<const unsigned char*>(p + at);
+        const uint32_t size = uint32_t(s[0]) | uint32_t(s[1]) << 8 | uint32_t(s[2]) << 16 | uint32_t(s[3]) << 24;
+        at += 4;
+        if (left - at < size || (size == 0 && std::string(p + type_at, type_len) != "string")) break;
+        if (size > 0 && std::string(p, name_len) == "type" && p[at] != '\0') type.assign(p + at, strnlen(p + at, size));
+        pos += at + size;
+    }
+    return type;
+}
+
 bool parse_header(const std::string& path, LoadedExr& x, std::string& error) {
     if (!input_file::read(path, kMaxExrBytes, x.bytes, error)) return false;
     EXRVersion version;
@@ -125,6 +155,19 @@ bool parse_header(const std::string& path, LoadedExr& x, std::string& error) {
     }
     if (version.multipart || version.non_image) {
         error = path + ": multi-part and deep EXR files are not supported.";
+        return false;
+    }
+    // Refused before tinyexr parses the header, which asserts (aborts the
+    // program) on a tiled file's "tiles" attribute of any size but 9 bytes
+    // and on a "type" attribute that is not one of its four, or that
+    // contradicts the version's tiled flag (found by fuzz_exr).
+    if (version.tiled) {
+        error = path + ": tiled EXR files are not supported.";
+        return false;
+    }
+    const std::string type = type_attribute(x.bytes);
+    if (!type.empty() && type != "scanlineimage") {
+        error = path + ": only scanline EXR images are supported (the header's type attribute names another kind).";
         return false;
     }
     const char* err = nullptr;
@@ -169,10 +212,6 @@ bool read_channel(const std::string& path, const std::vector<std::string>& prefe
                   int& width, int& height, std::string& error, std::string* used) {
     LoadedExr x;
     if (!parse_header(path, x, error)) return false;
-    if (x.header.tiled) {
-        error = path + ": tiled EXR files are not supported.";
-        return false;
-    }
     // tinyexr sizes its buffers from the data window without checking it: a
     // window from INT_MIN asks for exabytes (found by fuzz_exr). Our images
     // are at most 16384 pixels a side; 65536 leaves room.

@@ -1,4 +1,4 @@
-// Metrics on images whose answers are known.
+// Metrics on images whose answers are known, and the EXR reader on files it must refuse.
 #include "image_io.h"
 #include "metrics.h"
 
@@ -268,6 +268,41 @@ TEST_CASE("a truncated EXR is refused with a sentence, and nothing it allocated 
     CHECK_FALSE(refio::read_exr_channel(path, {"Y"}, back, w, h, err));
     CHECK(err.find("cut.exr") != std::string::npos);
     CHECK(err.find("data window") != std::string::npos);
+    std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("an EXR that tinyexr would abort on is refused with a sentence: a foreign type attribute, a tiled file") {
+    // tinyexr asserts (the program aborts) on a "type" attribute outside its
+    // four kinds or against the tiled flag, and on a tiled file's "tiles"
+    // attribute of any size but 9 bytes (found by fuzz_exr).
+    const auto dir = std::filesystem::temp_directory_path() / ("ssao_metrics_type_" + std::to_string(getpid()));
+    std::filesystem::create_directories(dir);
+    const std::string path = (dir / "t.exr").string();
+    std::vector<float> y(16, 0.25f), back;
+    int w = 0, h = 0;
+    std::string err;
+    for (const std::string type : {"deeptile", "tiledimage", "deepscanline", "anything"}) {
+        CAPTURE(type);
+        REQUIRE(refio::write_exr(path, 4, 4, {{"Y", &y}}, err, {{"type", type}}));
+        err.clear();
+        CHECK_FALSE(refio::read_exr_channel(path, {"Y"}, back, w, h, err));
+        CHECK(err.find(path + ": only scanline EXR images are supported") == 0);
+        CHECK_FALSE(refio::exr_has_channel(path, "Y"));
+    }
+    // The one kind it reads, named or not: the same pixels.
+    REQUIRE(refio::write_exr(path, 4, 4, {{"Y", &y}}, err, {{"type", "scanlineimage"}}));
+    REQUIRE(refio::read_exr_channel(path, {"Y"}, back, w, h, err));
+    CHECK(back == y);
+    // The version's tiled bit (byte 5, 0x2) set on a scanline file.
+    std::string bytes;
+    {
+        std::ifstream in(path, std::ios::binary);
+        bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    }
+    bytes[5] = char(bytes[5] | 0x2);
+    std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes;
+    CHECK_FALSE(refio::read_exr_channel(path, {"Y"}, back, w, h, err));
+    CHECK(err == path + ": tiled EXR files are not supported.");
     std::filesystem::remove_all(dir);
 }
 
