@@ -80,7 +80,8 @@ void main() {
     ivec2 vpx = ivec2(gl_FragCoord.xy) - u_target_origin;
     ivec2 size = u_pass_size;
     int kind = consts.blur_kind;
-    vec4 c = texelFetch(u_ao_tex, vpx, 0);
+    vec2 inv_size = inv_size_of(u_ao_tex);
+    vec4 c = owned_texel(u_ao_tex, vpx, inv_size);
     float centre = c.r, z0 = c.g;
     vec2 g0 = c.ba;  // the centre's plane gradient, handed on to the upsample
     if (z0 == SKY_Z) { o_ao = result(1.0, SKY_Z); return; }  // the sky stays exactly 1
@@ -104,7 +105,7 @@ void main() {
         for (int y = -2; y < 2; ++y)
             for (int x = -2; x < 2; ++x) {
                 ivec2 t = clamp(vpx + ivec2(x, y), ivec2(0), size - 1);
-                vec4 tap = texelFetch(u_ao_tex, t, 0);
+                vec4 tap = owned_texel(u_ao_tex, t, inv_size);
                 if (tap.g == SKY_Z) continue;
                 vec2 du = vec2(grid_pixel(grid, t) - u0);
                 float w = u_depth_aware ? depth_weight(tap.g, tap.ba, du, z0, g0, tolerance, two_way) : 1.0;
@@ -139,7 +140,7 @@ void main() {
         ivec2 t = vpx + u_blur_dir * k;
         if (any(lessThan(t, ivec2(0))) || any(greaterThanEqual(t, size))) continue;  // no clamped repeats at borders
         float w = exp(-float(k * k) * inv2s2);
-        vec4 tap = texelFetch(u_ao_tex, t, 0);
+        vec4 tap = owned_texel(u_ao_tex, t, inv_size);
         if (tap.g == SKY_Z) continue;
 #ifdef SSAO_BLUR_WEIGHTS
         gaussian += w;

@@ -26,6 +26,27 @@ uniform int u_scale;
 // The host's depth at viewport pixel vpx.
 float input_depth(ivec2 vpx) { return SSAO_INPUT_TEXEL(u_depth_tex, vpx).r; }
 
+// Texel t of a single-sample texture the library made (the grid's textures,
+// the AO texture, the noise tile), inv_size = 1 / its size (inv_size_of):
+// sampled at the texel's centre at level 0, the same value as texelFetch,
+// since the library's sampler (nearest, clamped to the edge, no compare) is
+// bound on every unit (runner.cpp) and these textures have one level. On
+// llvmpipe a sample costs less than a fetch, which checks bounds per lane:
+// the march and the upsample take less time (docs/benchmark.md, "The
+// library's textures sampled, not fetched"). The host's textures keep texelFetch
+// (SSAO_INPUT_TEXEL): they may be multisampled.
+vec4 owned_texel(sampler2D tex, ivec2 t, vec2 inv_size) { return textureLod(tex, (vec2(t) + 0.5) * inv_size, 0.0); }
+vec2 inv_size_of(sampler2D tex) { return 1.0 / vec2(textureSize(tex, 0)); }
+vec4 owned_texel(sampler2D tex, ivec2 t) { return owned_texel(tex, t, inv_size_of(tex)); }
+#ifdef SSAO_MULTISAMPLE
+// No plan reads the grid in a pass that reads multisampled host textures
+// (u_depth_tex and u_normal_tex are then the host's), but every variant
+// compiles (tests/unit/test_shader_variants.cpp): sample 0, as texelFetch.
+vec2 inv_size_of(sampler2DMS tex) { return 1.0 / vec2(textureSize(tex)); }
+vec4 owned_texel(sampler2DMS tex, ivec2 t, vec2 inv_size) { return texelFetch(tex, t, 0); }
+vec4 owned_texel(sampler2DMS tex, ivec2 t) { return texelFetch(tex, t, 0); }
+#endif
+
 // u_scale is 1, 2 or 4 (plugin/settings.h resolution_scale), so u_scale >> 1
 // is its base-2 logarithm, and a shift by it divides by u_scale. No shader
 // divides an integer by u_scale: llvmpipe has no SIMD integer division and
@@ -167,7 +188,7 @@ float view_z_of_depth(ivec2 p, float d) { return view_position_at(vec2(p) + 0.5,
 // Else the host's depth through the inverse projection.
 #ifdef SSAO_GRID_INPUT
 bool texel_surface(ivec2 t, out vec3 P, out float step) {
-    float z = texelFetch(u_depth_tex, t, 0).r;
+    float z = owned_texel(u_depth_tex, t).r;
     P = view_position_from_z(vec2(grid_pixel(t)) + 0.5, z);
     step = 0.0;
     if (z == SKY_Z) return false;
@@ -180,7 +201,7 @@ bool texel_surface(ivec2 t, out vec3 P, out float step) {
 // plane_texel), which a sampling pass hands the depth-aware blur and the
 // upsample beside its AO (ao_texture.glsl); 0 where the pass reads no grid.
 #ifdef SSAO_GRID_INPUT
-vec2 plane_gradient(ivec2 t) { return texelFetch(u_depth_tex, t, 0).yz; }
+vec2 plane_gradient(ivec2 t) { return owned_texel(u_depth_tex, t).yz; }
 #else
 vec2 plane_gradient(ivec2 t) { return vec2(0.0); }
 #endif

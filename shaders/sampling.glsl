@@ -58,7 +58,7 @@ vec3 decode_normal(vec3 stored, vec3 to_eye) {
 // or zero for a broken one).
 bool raw_normal(ivec2 t, out vec3 n) {
 #ifdef SSAO_GRID_INPUT
-    n = texelFetch(u_normal_tex, t, 0).xyz;
+    n = owned_texel(u_normal_tex, t).xyz;
     return dot(n, n) > 0.5;
 #else
     return decode_raw_normal(input_normal(t), n);
@@ -116,7 +116,7 @@ vec2 fixed_rotation(ivec2 vpx) {
         return vec2(cos(a), sin(a));
     }
     if (consts.rotation == SSAO_SHADER_ROTATION_NOISE)
-        return texelFetch(u_noise_tex, vpx & (SSAO_NOISE_SIZE - 1), 0).xy;  // tiles from the viewport's corner
+        return owned_texel(u_noise_tex, vpx & (SSAO_NOISE_SIZE - 1)).xy;  // tiles from the viewport's corner
     if (consts.rotation == SSAO_SHADER_ROTATION_HASH) {
         float a = pixel_hash(uvec2(vpx), uint(consts.seed)) * 6.28318530718;
         return vec2(cos(a), sin(a));

@@ -59,6 +59,7 @@ float depth_weighted(ivec2 p, float z0) {
     bool ortho = consts.orthographic != 0;
     vec2 u = vec2(p) + 0.5;
     ivec2 last = grid_size() - 1;
+    vec2 inv_size = inv_size_of(u_ao_tex);
     // The blocks whose centres bracket p: p's own and its neighbour on the
     // side of p's half of the block (exact in float for a power-of-two
     // scale), clamped into the grid: at the border a texel may be taken
@@ -71,7 +72,7 @@ float depth_weighted(ivec2 p, float z0) {
     float nearest = 1.0, nearest_dz = 3.4e38;
     for (int k = 0; k < 4; ++k) {
         ivec2 t = clamp(t0 + ivec2(k & 1, k >> 1), ivec2(0), last);
-        vec4 tap = texelFetch(u_ao_tex, t, 0);
+        vec4 tap = owned_texel(u_ao_tex, t, inv_size);
         vec2 u0 = vec2(grid_pixel(g, t)) + 0.5;
         float zp = plane_z(tap.g, tap.ba, u - u0, ortho);  // the tap's tangent plane's view z under p
         // A sky tap (view z SKY_Z, AO 1) is never within the tolerance, and
@@ -105,7 +106,7 @@ void main() {
         return;
     }
 #ifdef SSAO_UPSAMPLE_NEAREST
-    float ao = texelFetch(u_ao_tex, p >> scale_log2(), 0).r;
+    float ao = owned_texel(u_ao_tex, p >> scale_log2()).r;
 #else
     // Beyond the distance fade's end the AO is exactly 1, as the sampling
     // pass makes it on the grid: a tap whose plane continues a receding

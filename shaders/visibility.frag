@@ -55,6 +55,7 @@ struct StepSetup {
     float nz;        // orthographic: n.z
     bool ortho_snap; // orthographic: |n.z| > 1e-3
     GridMap g;       // the uniforms a step reads, read once (GridMap says why)
+    vec2 inv_plane_size;  // 1 / the plane texture's size (owned_texel)
     DepthSteps ds;
 };
 
@@ -65,6 +66,7 @@ StepSetup step_setup(Surface sf) {
     st.nz = n.z;
     st.ortho_snap = abs(n.z) > 1e-3;
     st.g = grid_map();
+    st.inv_plane_size = inv_size_of(u_depth_tex);
     st.ds = depth_steps();
     mat2 mul_z = mat2(consts.view_mul_z.xy, consts.view_mul_z.zw);
     if (sf.ortho) {
@@ -110,7 +112,7 @@ bool step_to_texel(StepSetup st, vec4 c, out ivec2 texel, out vec2 spf) {
 // huge value where the plane is grazing or unusable there (no crossing).
 bool step_surface(vec3 s, float sn, vec2 spf, ivec2 spx, Surface sf, StepSetup st, vec2 prev_spf, float prev_z,
                   out float in_front, out float prev_in_front) {
-    vec4 plane = texelFetch(u_depth_tex, spx, 0);
+    vec4 plane = owned_texel(u_depth_tex, spx, st.inv_plane_size);
     float z = plane.x;
     vec2 u0 = vec2(grid_pixel(st.g, spx)) + 0.5;
     float g_du = dot(plane.yz, spf - u0);
