@@ -13,7 +13,8 @@ and texels4.csv with 4; and full runs with 4, full_texels4.csv, and off, full_ev
 before the march's stretch),
 the step-length tables and, from upsample/ (four quick runs: the upsample's 2x2 or 3x3 taps, MEDIUM's
 directions; and int_division/, an A/B of the shaders' integer division by the grid's scale; march_cost/sampled_texels/, an
-A/B of reading the library's own textures with texelFetch and with textureLod), the upsample tables and, from cell_pattern/ (a quick run's cell_pattern.csv), the shared-pattern
+A/B of reading the library's own textures with texelFetch and with textureLod; march_cost/loop_test_at_end/, an A/B
+of the shaders' loops testing at the top and at the end), the upsample tables and, from cell_pattern/ (a quick run's cell_pattern.csv), the shared-pattern
 table, and from grid_study/ (scripts/grid-study.sh, and the A/B and quick runs of the plane-fit upsample) the
 grid-study tables. The preset-rule lines compare presets.txt's picks with the shipped table. Time is process CPU
 time (ssao-bench, LP_NUM_THREADS=1). Every number in those blocks comes from the run; nothing is
@@ -226,6 +227,9 @@ def main():
     if os.path.exists(d + "/march_cost/sampled_texels/llvmpipe/old_1.csv"):
         blocks["sampled_texels"] = ab_table(d + "/march_cost/sampled_texels", "texelFetch (before)",
                                             "textureLod at the texel's centre (shipped)", what_changed="shaders")
+    if os.path.exists(d + "/march_cost/loop_test_at_end/llvmpipe/old_1.csv"):
+        blocks["loop_test_at_end"] = ab_table(d + "/march_cost/loop_test_at_end", "for loops (before)",
+                                              "do-while loops (shipped)", what_changed="shaders")
     if os.path.exists(d + "/grid_study/grid_study.csv"):
         blocks["grid_study"] = grid_study_table(d + "/grid_study")
         blocks["grid_study_summary"] = grid_study_summary(d + "/grid_study")

@@ -102,8 +102,10 @@ void main() {
 #ifdef SSAO_BLUR_WEIGHTS
         float taps = 0.0;
 #endif
-        for (int y = -2; y < 2; ++y)
-            for (int x = -2; x < 2; ++x) {
+        int y = -2;
+        do {  // both loops test at the end (common.glsl, "Loops"); a continue goes to the test
+            int x = -2;
+            do {
                 ivec2 t = clamp(vpx + ivec2(x, y), ivec2(0), size - 1);
                 vec4 tap = owned_texel(u_ao_tex, t, inv_size);
                 if (tap.g == SKY_Z) continue;
@@ -118,7 +120,8 @@ void main() {
 #ifdef SSAO_BLUR_WEIGHTS
                 taps += 1.0;
 #endif
-            }
+            } while (++x < 2);
+        } while (++y < 2);
 #ifdef SSAO_BLUR_WEIGHTS
         o_ao = result(count / taps, z0, g0);
 #else
@@ -135,7 +138,8 @@ void main() {
 #ifdef SSAO_BLUR_WEIGHTS
     float gaussian = 1.0;  // the centre's weight, never rejected
 #endif
-    for (int k = -consts.blur_radius; k <= consts.blur_radius; ++k) {
+    int k = -consts.blur_radius;
+    do {  // tests at the end (common.glsl, "Loops"): a continue goes to the test
         if (k == 0) continue;
         ivec2 t = vpx + u_blur_dir * k;
         if (any(lessThan(t, ivec2(0))) || any(greaterThanEqual(t, size))) continue;  // no clamped repeats at borders
@@ -152,7 +156,7 @@ void main() {
         sum_k += w * fk;
         sum_kk += w * fk * fk;
         sum_ka += w * fk * tap.r;
-    }
+    } while (++k <= consts.blur_radius);
 #ifdef SSAO_BLUR_WEIGHTS
     // Same taps summed in the same order: exactly 1 when nothing was rejected.
     float before = u_blur_dir.y != 0 ? centre : 1.0;  // the horizontal pass's share

@@ -47,6 +47,15 @@ vec4 owned_texel(sampler2DMS tex, ivec2 t, vec2 inv_size) { return texelFetch(te
 vec4 owned_texel(sampler2DMS tex, ivec2 t) { return texelFetch(tex, t, 0); }
 #endif
 
+// Loops. A loop the compiler may keep as a loop (a count known only at run
+// time, or a body too large to unroll) tests its condition at the end of the
+// body (do { } while), where the count is at least 1: llvmpipe runs a SIMD
+// batch's loop until no lane is left, checking at the end of the body, so a
+// loop that tests at the top runs its body once more, every lane masked off,
+// before it sees that all have left. That was a sixth of the march's time
+// (docs/benchmark.md, "Loops that test at the end"). A GPU takes either form
+// at the same cost.
+
 // u_scale is 1, 2 or 4 (plugin/settings.h resolution_scale), so u_scale >> 1
 // is its base-2 logarithm, and a shift by it divides by u_scale. No shader
 // divides an integer by u_scale: llvmpipe has no SIMD integer division and

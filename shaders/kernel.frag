@@ -18,7 +18,8 @@ void main() {
     float occlusion = 0.0;
     float valid = 0.0;
     int count = consts.sample_count;
-    for (int i = 0; i < count; ++i) {
+    int i = 0;
+    do {  // tests at the end (common.glsl, "Loops"): count is at least 1; a continue goes to the test
         vec3 s = P + TBN * kernel.vectors[i].xyz * radius;
         ivec2 spx;
         if (!project_to_texel(s, spx)) continue;          // behind the eye or off screen: unknown, not counted
@@ -33,7 +34,7 @@ void main() {
         float dz = abs(P.z - Q.z);
         float range = dz <= radius ? 1.0 : smoothstep(0.0, 1.0, radius / dz);
         occlusion += (Q.z >= sn.z + bias ? 1.0 : 0.0) * range;
-    }
+    } while (++i < count);
     float o = valid > 0.0 ? occlusion / valid : 0.0;
     float ao = pow(clamp(1.0 - consts.strength * o, 0.0, 1.0), consts.power);
 #ifdef SSAO_FADE

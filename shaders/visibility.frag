@@ -203,7 +203,10 @@ void main() {
     float far_step = depth_step_z(st.ds, sf.P.z - radius);
     float near_step = sf.ortho ? depth_step_z(st.ds, sf.P.z + radius + thickness) : 0.0;
     float bias = consts.bias * sf.radius_scale + consts.depth_step_bias * (sf.step + max(far_step, near_step));
-    for (int i = 0; i < count; ++i) {
+    // Both loops test at the end (common.glsl, "Loops"): count and steps
+    // are at least 1 (settings.cpp).
+    int i = 0;
+    do {
         vec3 dir = sf.TBN * kernel.vectors[i].xyz;
         vec4 clip_dir = step_clip(st, proj * vec4(dir, 0.0));
         float dn = dot(dir, sf.n);
@@ -214,7 +217,8 @@ void main() {
         bool blocked = false;
         vec2 prev_spf = clip_p.xy / clip_p.w;  // the previous point: P, then each step
         float prev_z = sf.P.z;
-        for (int j = 0; j < steps && !blocked; ++j) {
+        int j = 0;
+        do {
             float t = (float(j) + jitter) * step_length;
             vec3 s = sf.P + dir * t;
             // Off screen or behind the eye is unknown and open, and the sky
@@ -229,9 +233,9 @@ void main() {
             blocked = on_screen && surface && in_front >= bias && (in_front <= thickness || crossed);
             prev_spf = spf;
             prev_z = s.z;
-        }
+        } while (++j < steps && !blocked);
         open += blocked ? 0.0 : 1.0;
-    }
+    } while (++i < count);
     float occlusion = 1.0 - open / float(count);
     float ao = pow(clamp(1.0 - consts.strength * occlusion, 0.0, 1.0), consts.power);
 #ifdef SSAO_FADE
