@@ -53,8 +53,7 @@ vec4 owned_texel(sampler2DMS tex, ivec2 t) { return texelFetch(tex, t, 0); }
 // batch's loop until no lane is left, checking at the end of the body, so a
 // loop that tests at the top runs its body once more, every lane masked off,
 // before it sees that all have left (docs/benchmark.md, "Loops that test
-// at the end", measures what that cost). A GPU takes either form at the
-// same cost.
+// at the end", measures what that cost).
 
 // u_scale is 1, 2 or 4 (plugin/settings.h resolution_scale), so u_scale >> 1
 // is its base-2 logarithm, and a shift by it divides by u_scale. No shader
