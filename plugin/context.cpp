@@ -129,8 +129,12 @@ ssao_status initialise(ssao_context& ctx, const ssao_context_desc& desc) {
     gl.GenTextures(1, &ctx.noise_texture);
     gl.GenSamplers(1, &ctx.sampler);
     mark_creating_context(ctx);
-    // texelFetch ignores filtering and wrapping, but a depth texture with a
-    // compare mode would read as a shadow test: the sampler turns that off.
+    // Bound on every unit a pass uses (runner.cpp). The host's textures are
+    // read with texelFetch, which ignores filtering and wrapping, but a depth
+    // texture with a compare mode would read as a shadow test: the sampler
+    // turns that off. The library's own textures are sampled through it at
+    // their texels' centres (shaders/common.glsl owned_texel), so it must
+    // stay nearest and clamped.
     gl.SamplerParameteri(ctx.sampler, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     gl.SamplerParameteri(ctx.sampler, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     gl.SamplerParameteri(ctx.sampler, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
