@@ -41,23 +41,23 @@ bool all_required_loaded(const GladGLContext& gl, std::string& missing) {
     SSAO_REQUIRE_GL(ActiveTexture) SSAO_REQUIRE_GL(AttachShader) SSAO_REQUIRE_GL(BindBuffer)
     SSAO_REQUIRE_GL(BindBufferBase) SSAO_REQUIRE_GL(BindBufferRange) SSAO_REQUIRE_GL(BindFramebuffer)
     SSAO_REQUIRE_GL(BindSampler) SSAO_REQUIRE_GL(BindTexture) SSAO_REQUIRE_GL(BindVertexArray)
-    SSAO_REQUIRE_GL(BlendEquationSeparate) SSAO_REQUIRE_GL(BlendFuncSeparate)
+    SSAO_REQUIRE_GL(BlendEquationSeparate) SSAO_REQUIRE_GL(BlendFuncSeparate) SSAO_REQUIRE_GL(BlitFramebuffer)
     SSAO_REQUIRE_GL(BufferData) SSAO_REQUIRE_GL(CheckFramebufferStatus) SSAO_REQUIRE_GL(ClearBufferfv)
     SSAO_REQUIRE_GL(ColorMaski) SSAO_REQUIRE_GL(CompileShader) SSAO_REQUIRE_GL(CreateProgram)
     SSAO_REQUIRE_GL(CreateShader) SSAO_REQUIRE_GL(DeleteBuffers) SSAO_REQUIRE_GL(DeleteFramebuffers)
     SSAO_REQUIRE_GL(DeleteProgram) SSAO_REQUIRE_GL(DeleteQueries) SSAO_REQUIRE_GL(DeleteSamplers)
     SSAO_REQUIRE_GL(DeleteShader) SSAO_REQUIRE_GL(DeleteTextures) SSAO_REQUIRE_GL(DeleteVertexArrays)
-    SSAO_REQUIRE_GL(DepthMask) SSAO_REQUIRE_GL(Disable) SSAO_REQUIRE_GL(Disablei) SSAO_REQUIRE_GL(DrawArrays)
+    SSAO_REQUIRE_GL(DepthFunc) SSAO_REQUIRE_GL(DepthMask) SSAO_REQUIRE_GL(DepthRange) SSAO_REQUIRE_GL(Disable) SSAO_REQUIRE_GL(Disablei) SSAO_REQUIRE_GL(DrawArrays)
     SSAO_REQUIRE_GL(Enable) SSAO_REQUIRE_GL(Enablei) SSAO_REQUIRE_GL(FramebufferTexture2D)
     SSAO_REQUIRE_GL(GenBuffers) SSAO_REQUIRE_GL(GenFramebuffers) SSAO_REQUIRE_GL(GenQueries)
     SSAO_REQUIRE_GL(GenSamplers) SSAO_REQUIRE_GL(GenTextures) SSAO_REQUIRE_GL(GenVertexArrays)
-    SSAO_REQUIRE_GL(GetBooleani_v) SSAO_REQUIRE_GL(GetBooleanv) SSAO_REQUIRE_GL(GetInteger64i_v)
+    SSAO_REQUIRE_GL(GetBooleani_v) SSAO_REQUIRE_GL(GetBooleanv) SSAO_REQUIRE_GL(GetDoublev) SSAO_REQUIRE_GL(GetInteger64i_v)
     SSAO_REQUIRE_GL(GetIntegeri_v) SSAO_REQUIRE_GL(GetIntegerv) SSAO_REQUIRE_GL(GetProgramInfoLog)
     SSAO_REQUIRE_GL(GetProgramiv) SSAO_REQUIRE_GL(GetQueryObjectuiv) SSAO_REQUIRE_GL(GetShaderInfoLog)
     SSAO_REQUIRE_GL(GetShaderiv) SSAO_REQUIRE_GL(GetStringi) SSAO_REQUIRE_GL(GetTexLevelParameteriv)
     SSAO_REQUIRE_GL(GetTexParameteriv) SSAO_REQUIRE_GL(GetUniformBlockIndex) SSAO_REQUIRE_GL(GetUniformLocation)
     SSAO_REQUIRE_GL(IsEnabled) SSAO_REQUIRE_GL(IsEnabledi) SSAO_REQUIRE_GL(IsTexture) SSAO_REQUIRE_GL(IsVertexArray) SSAO_REQUIRE_GL(LinkProgram)
-    SSAO_REQUIRE_GL(PixelStorei) SSAO_REQUIRE_GL(PolygonMode) SSAO_REQUIRE_GL(SamplerParameteri)
+    SSAO_REQUIRE_GL(PixelStorei) SSAO_REQUIRE_GL(PolygonMode) SSAO_REQUIRE_GL(ReadBuffer) SSAO_REQUIRE_GL(SamplerParameteri)
     SSAO_REQUIRE_GL(Scissor) SSAO_REQUIRE_GL(ShaderSource) SSAO_REQUIRE_GL(StencilMaskSeparate)
     SSAO_REQUIRE_GL(TexImage2D) SSAO_REQUIRE_GL(TexParameteri) SSAO_REQUIRE_GL(Uniform1i) SSAO_REQUIRE_GL(Uniform2i)
     SSAO_REQUIRE_GL(UniformBlockBinding) SSAO_REQUIRE_GL(UseProgram) SSAO_REQUIRE_GL(Viewport)
@@ -107,7 +107,8 @@ ssao_status initialise(ssao_context& ctx, const ssao_context_desc& desc) {
     ctx.caps.texture_target_query = v >= 45 && gl.GetTextureParameteriv != nullptr && gl.GetTextureLevelParameteriv != nullptr;
     ctx.caps.query_buffer = v >= 44 || has_gl_extension(gl, "GL_ARB_query_buffer_object");
     ctx.caps.indexed_blend = v >= 40 && gl.BlendFuncSeparatei != nullptr && gl.BlendEquationSeparatei != nullptr;
-    if (v >= 41 && gl.GetFloati_v && gl.ViewportIndexedfv && gl.ScissorIndexedv) {
+    if (v >= 41 && gl.GetFloati_v && gl.ViewportIndexedfv && gl.ScissorIndexedv && gl.GetDoublei_v &&
+        gl.DepthRangeIndexed) {
         gl.GetIntegerv(GL_MAX_VIEWPORTS, &ctx.caps.viewports);
         ctx.caps.viewports = std::max(1, std::min(ctx.caps.viewports, 16));
     }
@@ -124,6 +125,7 @@ ssao_status initialise(ssao_context& ctx, const ssao_context_desc& desc) {
     // first bound inside execute, under the state guard.
     gl.GenVertexArrays(1, &ctx.vao);
     gl.GenFramebuffers(1, &ctx.fbo);
+    gl.GenFramebuffers(1, &ctx.read_fbo);
     gl.GenBuffers(1, &ctx.ubo_frame);
     gl.GenBuffers(1, &ctx.ubo_kernel);
     gl.GenTextures(1, &ctx.noise_texture);
@@ -153,11 +155,14 @@ void release(ssao_context& ctx) {
     delete_programs(ctx);
     if (ctx.vao) gl.DeleteVertexArrays(1, &ctx.vao);
     if (ctx.fbo) gl.DeleteFramebuffers(1, &ctx.fbo);
+    if (ctx.read_fbo) gl.DeleteFramebuffers(1, &ctx.read_fbo);
     if (ctx.ubo_frame) gl.DeleteBuffers(1, &ctx.ubo_frame);
     if (ctx.ubo_kernel) gl.DeleteBuffers(1, &ctx.ubo_kernel);
     if (ctx.noise_texture) gl.DeleteTextures(1, &ctx.noise_texture);
     if (ctx.sampler) gl.DeleteSamplers(1, &ctx.sampler);
     for (GLuint texture : ctx.intermediates)
+        if (texture) gl.DeleteTextures(1, &texture);
+    for (GLuint texture : ctx.masks)
         if (texture) gl.DeleteTextures(1, &texture);
     // The host may have deleted the output it was handed (and reused the name).
     if (owned_output_alive(ctx)) gl.DeleteTextures(1, &ctx.output);

@@ -45,6 +45,10 @@ struct ssao_context {
     // ProgramId first, then each variant a plan has used.
     std::vector<ssao_impl::CompiledProgram> programs;
     GLuint vao = 0, fbo = 0, ubo_frame = 0, ubo_kernel = 0, noise_texture = 0, sampler = 0;
+    // The framebuffer the host's depth is copied from (runner.cpp,
+    // DepthUse::depth_copy); its read buffer is set to none at its first bind.
+    GLuint read_fbo = 0;
+    bool read_fbo_ready = false;
     // The vertex array's label, unique in the process (empty without
     // KHR_debug): how execute recognises the creating GL context
     // (context_identity.cpp). The output texture's label carries the same
@@ -57,6 +61,9 @@ struct ssao_context {
     // are reallocated only when the plan's needs change.
     GLuint intermediates[ssao_impl::kMaxIntermediates] = {};
     ssao_impl::Intermediate intermediate_specs[ssao_impl::kMaxIntermediates] = {};
+    // The plan's sky masks (depth textures), kept the same way.
+    GLuint masks[ssao_impl::kMaxMasks] = {};
+    ssao_impl::Intermediate mask_specs[ssao_impl::kMaxMasks] = {};
     GLuint output = 0;
     int output_width = 0, output_height = 0;
     ssao_impl::TexFormat output_format = ssao_impl::TexFormat::r8;

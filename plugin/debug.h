@@ -19,6 +19,7 @@ struct DebugState {
 
 // Labels of the library's objects (programs carry their pass-table label: pass_table.cpp).
 constexpr const char* kLabelFramebuffer = "ssao: framebuffer";
+constexpr const char* kLabelReadFramebuffer = "ssao: depth copy source";
 constexpr const char* kLabelVertexArray = "ssao: vertex array";  // + " <n>", unique in the process
 constexpr const char* kLabelSampler = "ssao: sampler";
 constexpr const char* kLabelFrameBlock = "ssao: frame constants";

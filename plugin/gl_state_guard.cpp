@@ -102,6 +102,10 @@ GlStateGuard::GlStateGuard(const GladGLContext& gl, const GlCaps& caps, GLuint u
     gl.GetIntegerv(GL_POLYGON_MODE, polygon_mode_);
     if (polygon_mode_[1] == kUnwrittenPolygonMode) polygon_mode_[1] = polygon_mode_[0];
     gl.GetBooleanv(GL_DEPTH_WRITEMASK, &depth_mask_);
+    gl.GetIntegerv(GL_DEPTH_FUNC, &depth_func_);
+    gl.GetDoublev(GL_DEPTH_RANGE, depth_range_[0]);
+    for (int i = 1; i < std::min(caps.viewports, kMaxViewports); ++i)
+        gl.GetDoublei_v(GL_DEPTH_RANGE, static_cast<GLuint>(i), depth_range_[i]);
     gl.GetIntegerv(GL_STENCIL_WRITEMASK, &stencil_mask_front_);
     gl.GetIntegerv(GL_STENCIL_BACK_WRITEMASK, &stencil_mask_back_);
     if (caps.clip_control) {
@@ -206,6 +210,10 @@ GlStateGuard::~GlStateGuard() {
         gl.PolygonMode(GL_BACK, static_cast<GLenum>(polygon_mode_[1]));
     }
     gl.DepthMask(depth_mask_);
+    gl.DepthFunc(static_cast<GLenum>(depth_func_));
+    gl.DepthRange(depth_range_[0][0], depth_range_[0][1]);
+    for (int i = 1; i < std::min(caps_.viewports, kMaxViewports); ++i)
+        gl.DepthRangeIndexed(static_cast<GLuint>(i), depth_range_[i][0], depth_range_[i][1]);
     gl.StencilMaskSeparate(GL_FRONT, static_cast<GLuint>(stencil_mask_front_));
     gl.StencilMaskSeparate(GL_BACK, static_cast<GLuint>(stencil_mask_back_));
     if (caps_.clip_control)

@@ -66,6 +66,10 @@ private:
     GLboolean clip_distance_[8] = {};
     GLint polygon_mode_[2] = {};  // front, back (they differ only in a compatibility profile)
     GLboolean depth_mask_ = 0;
+    GLint depth_func_ = 0;
+    // Depth range of viewport index 0, and of every other index (glDepthRange
+    // sets them all) where there are viewport arrays.
+    GLdouble depth_range_[kMaxViewports][2] = {};
     GLint stencil_mask_front_ = 0, stencil_mask_back_ = 0;
     GLint clip_origin_ = 0, clip_depth_mode_ = 0;
     GLint unpack_[8] = {};

@@ -27,6 +27,12 @@ public:
         return i;
     }
 
+    TexRef mask(int w, int h, TexFormat format) {
+        const int i = plan_.mask_count++;
+        plan_.masks[i] = {w, h, format};
+        return TexRef::of(TexRef::Source::mask, i);
+    }
+
     // A pass writing `target` over the rectangle `rect` of it.
     Pass& add(PassKind kind, TexRef target, const Rect& rect) {
         Pass& p = plan_.passes[plan_.pass_count++];
@@ -41,6 +47,57 @@ public:
 private:
     FramePlan& plan_;
 };
+
+bool same_rect(const Rect& a, const Rect& b) {
+    return a.x == b.x && a.y == b.y && a.width == b.width && a.height == b.height;
+}
+
+// The copy of the host's depth is made by a blit, which copies depth only
+// between matching formats: the host's own.
+TexFormat depth_copy_format(const DepthFormat& d) {
+    if (d.is_float) return d.has_stencil ? TexFormat::d32fs8 : TexFormat::d32f;
+    if (d.bits == 16) return TexFormat::d16;
+    return d.has_stencil ? TexFormat::d24s8 : TexFormat::d24;
+}
+
+// The sky tests of a plan of AO passes (DepthUse). A pass that writes the
+// output (and, without a grid, one that writes an intermediate at the
+// output's rectangle) runs where the copy of the host's depth is not the
+// sky, if that depth is single-sampled (a blit of a multisampled depth
+// resolves it); a pass on the grid, where the grid's sky mask is 0. Each
+// rejects only pixels where its shader writes the sky's value: the host's
+// sky is sky on the grid too (grid.frag), and the passes after the grid
+// read the sky from it. The grid pass writes its mask only where a pass
+// tests it, and the copy is made only where one tests that.
+void add_sky_tests(Builder& b, FramePlan& plan, const AnalysedInputs& in, const Rect& final_rect) {
+    int grid = -1;
+    TexRef grid_mask, depth_copy;
+    for (int i = 0; i < plan.pass_count; ++i) {
+        Pass& p = plan.passes[i];
+        if (p.kind == PassKind::grid) grid = i;
+        if (p.kind == PassKind::grid || p.kind == PassKind::clear) continue;
+        const bool writes_output = p.target.source == Source::output;
+        if (writes_output || (grid < 0 && same_rect(p.rect, final_rect))) {
+            if (in.multisample) continue;
+            if (depth_copy.source == Source::none)
+                depth_copy = b.mask(final_rect.x + final_rect.width, final_rect.y + final_rect.height,
+                                    depth_copy_format(in.depth));
+            p.depth = DepthUse::depth_copy;
+            p.depth_target = depth_copy;
+        } else if (grid >= 0) {
+            const Rect& g = plan.passes[grid].rect;
+            if (grid_mask.source == Source::none) grid_mask = b.mask(g.width, g.height, TexFormat::d16);
+            p.depth = DepthUse::grid_mask;
+            p.depth_target = grid_mask;
+        } else {
+            continue;
+        }
+        p.clear_sky = !p.multiply;
+    }
+    if (grid_mask.source == Source::none) return;
+    plan.passes[grid].depth = DepthUse::write_grid_mask;
+    plan.passes[grid].depth_target = grid_mask;
+}
 
 // Variant bits of a pass that reads the host's depth and normal textures.
 uint32_t host_input_variant(const AnalysedInputs& in) { return in.multisample ? variant::multisample : 0u; }
@@ -194,6 +251,7 @@ bool plan_ao_debug_view(Builder& b, const ssao_settings& s, const AnalysedInputs
         if (p.kind == PassKind::upsample) p.variant = (p.variant & ~variant::upsample_plane_fit) | variant::upsample_nearest;
         if (p.kind == PassKind::blur_x || p.kind == PassKind::blur_y) p.variant |= variant::blur_weights;
     }
+    add_sky_tests(b, plan, in, final_rect);
     return true;
 }
 
@@ -239,6 +297,8 @@ FramePlan plan_frame(const ssao_settings& s, const AnalysedInputs& in) {
     plan.output_origin[1] = plan.owned_output ? 0 : in.viewport[1];
     const TexRef output = TexRef::of(Source::output);
     const Rect final_rect{plan.output_origin[0], plan.output_origin[1], vw, vh};
+    plan.viewport = Rect{in.viewport[0], in.viewport[1], vw, vh};
+    plan.sky_depth = in.proj.sky_depth;
 
     Builder b(plan);
     if (plan_normals_view(b, s, in, output, final_rect)) return plan;
@@ -257,6 +317,7 @@ FramePlan plan_frame(const ssao_settings& s, const AnalysedInputs& in) {
     if (in.multiply_output)
         for (int i = 0; i < plan.pass_count; ++i)
             if (plan.passes[i].target == output) plan.passes[i].multiply = true;
+    add_sky_tests(b, plan, in, final_rect);
     return plan;
 }
 

@@ -2,7 +2,7 @@
 // inputs) to the ordered passes of one execute and the intermediate textures
 // they need. No GL here: the plan is unit tested without a context
 // (tests/unit/test_plan*.cpp), and everything that touches GL reads it:
-//   resources.cpp (allocates the plan's intermediates and the owned output),
+//   resources.cpp (allocates the plan's intermediates, masks and the owned output),
 //   runner.cpp    (binds what each pass declares, draws, one timestamp per pass),
 //   timers.cpp    (per-pass GPU times).
 // What a pass is called, which bit and timing figure it reports and which
@@ -30,6 +30,8 @@ namespace ssao_impl {
 // SSAO_MAX_PASSES: ssao_timings has room for that many per-pass times.
 constexpr int kMaxPasses = SSAO_MAX_PASSES;
 constexpr int kMaxIntermediates = 4;
+// Depth textures a pass tests (DepthUse): the grid's sky mask and the copy of the host's depth.
+constexpr int kMaxMasks = 2;
 
 // What a pass does: an index into the pass table (pass_table.cpp), which
 // gives its name, its public ssao_pass bit and its program.
@@ -86,6 +88,27 @@ enum class TexFormat : uint8_t {
     r8,     // owned output, SSAO_OUTPUT_R8
     r16f,   // owned output, SSAO_OUTPUT_R16F
     rgba8,  // owned output of the normal debug views: n * 0.5 + 0.5 in RGB, alpha 1
+    // Depth formats (DepthUse): the grid's sky mask (d16), and the copy of
+    // the host's depth in the host's own format (a blit copies depth only
+    // between matching formats).
+    d16,
+    d24,
+    d24s8,
+    d32f,
+    d32fs8,
+};
+
+// How a pass uses its depth attachment. A sky pixel's output is a constant
+// (the AO texture's sky value, or 1), so a depth test can reject it before
+// its fragment shader runs: a software rasteriser (llvmpipe) skips a batch
+// of pixels whose depth test fails, but not one whose shader returns early.
+// A tested pass's target is cleared to the sky's value first (Pass::clear_sky).
+enum class DepthUse : uint8_t {
+    none,             // no depth attachment, no depth test
+    write_grid_mask,  // the grid pass: writes the grid's sky mask, 1 at sky texels, 0 elsewhere
+    grid_mask,        // runs where the grid's sky mask is 0
+    depth_copy,       // runs where the host's depth, copied into depth_target (once per frame, before the
+                      // first pass that tests it), is not the sky's (FramePlan::sky_depth)
 };
 
 // A texture a pass samples or renders into.
@@ -96,10 +119,11 @@ struct TexRef {
         normal,        // the host's normal texture
         noise,         // the library's rotation-noise texture
         intermediate,  // FramePlan::intermediates[index]
+        mask,          // FramePlan::masks[index]: a depth texture, only ever a pass's depth_target
         output,        // the final output: the host's output_texture or the library's own
     };
     Source source = Source::none;
-    int index = 0;  // intermediates only
+    int index = 0;  // intermediates and masks
 
     static TexRef of(Source s, int i = 0) { return TexRef{s, i}; }
     bool operator==(const TexRef& o) const { return source == o.source && index == o.index; }
@@ -121,6 +145,14 @@ struct Pass {
     // A second colour target (attachment 1, fragment output location 1) or
     // none: the grid pass writes its view z and its normal in one draw.
     TexRef target2;
+    // The depth attachment (a mask, or none) and what the pass does with it.
+    TexRef depth_target;
+    DepthUse depth = DepthUse::none;
+    // Clear the pass's rectangle of its target to what the pass writes at
+    // the sky, before it draws: (1, SKY_Z, 0, 0) when it packs depth, else
+    // 1. Set for a sky-tested pass, except where it multiplies into the
+    // host's image (a multiply by 1 changes nothing).
+    bool clear_sky = false;
     Rect rect;               // where it draws in its target: origin and size, in target texels
     bool pack_depth = false; // writes (ao, view z) for a following pass instead of the final AO
     int direction[2] = {0, 0};  // blur direction (u_blur_dir)
@@ -144,7 +176,8 @@ struct Pass {
     bool multiply = false;
 };
 
-// A texture the plan renders into and a later pass samples.
+// A texture the plan renders into and a later pass samples (or, for a
+// mask, tests).
 struct Intermediate {
     int width = 0, height = 0;
     TexFormat format = TexFormat::rg32f;
@@ -155,12 +188,18 @@ struct FramePlan {
     int pass_count = 0;
     Intermediate intermediates[kMaxIntermediates] = {};
     int intermediate_count = 0;
+    Intermediate masks[kMaxMasks] = {};  // of a depth format
+    int mask_count = 0;
     // The final output: the host's texture at the viewport's origin, or the
     // library's own (owned_output) of output_size and output_format at (0,0).
     bool owned_output = true;
     int output_width = 0, output_height = 0;
     TexFormat output_format = TexFormat::r8;
     int output_origin[2] = {0, 0};
+    // DepthUse::depth_copy: the rectangle of the host's depth that is copied
+    // (the viewport), to the tested pass's rectangle; the sky's depth value.
+    Rect viewport;
+    float sky_depth = 1.0f;
 
     // ssao_output.passes_run: the bits of the passes in the plan.
     uint32_t passes_run() const;

@@ -22,6 +22,11 @@ GlFormat gl_format(TexFormat f) {
         case TexFormat::r16f: return {GL_R16F, GL_RED, GL_FLOAT};
         case TexFormat::r8: return {GL_R8, GL_RED, GL_UNSIGNED_BYTE};
         case TexFormat::rgba8: return {GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE};
+        case TexFormat::d16: return {GL_DEPTH_COMPONENT16, GL_DEPTH_COMPONENT, GL_UNSIGNED_SHORT};
+        case TexFormat::d24: return {GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT};
+        case TexFormat::d24s8: return {GL_DEPTH24_STENCIL8, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8};
+        case TexFormat::d32f: return {GL_DEPTH_COMPONENT32F, GL_DEPTH_COMPONENT, GL_FLOAT};
+        case TexFormat::d32fs8: return {GL_DEPTH32F_STENCIL8, GL_DEPTH_STENCIL, GL_FLOAT_32_UNSIGNED_INT_24_8_REV};
     }
     return {GL_R8, GL_RED, GL_UNSIGNED_BYTE};
 }
@@ -43,11 +48,9 @@ void allocate(const ssao_context& ctx, GLuint& tex, TexFormat format, int w, int
     gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
 }
 
-bool intermediate_stale(const ssao_context& ctx, const FramePlan& plan, int i) {
-    const Intermediate& want = plan.intermediates[i];
-    const Intermediate& have = ctx.intermediate_specs[i];
-    return ctx.intermediates[i] == 0 || have.width != want.width || have.height != want.height ||
-           have.format != want.format;
+// Whether texture `tex`, last allocated as `have`, must be made (again) as `want`.
+bool stale(GLuint tex, const Intermediate& have, const Intermediate& want) {
+    return tex == 0 || have.width != want.width || have.height != want.height || have.format != want.format;
 }
 
 bool output_stale(const ssao_context& ctx, const FramePlan& plan) {
@@ -57,11 +60,14 @@ bool output_stale(const ssao_context& ctx, const FramePlan& plan) {
 
 const char* const kIntermediateLabels[kMaxIntermediates] = {"ssao: intermediate 0", "ssao: intermediate 1",
                                                             "ssao: intermediate 2", "ssao: intermediate 3"};
+const char* const kMaskLabels[kMaxMasks] = {"ssao: sky mask 0", "ssao: sky mask 1"};
 
 // Whether update_resources will (re)allocate anything for `plan`.
 bool resources_stale(const ssao_context& ctx, const FramePlan& plan) {
     for (int i = 0; i < plan.intermediate_count; ++i)
-        if (intermediate_stale(ctx, plan, i)) return true;
+        if (stale(ctx.intermediates[i], ctx.intermediate_specs[i], plan.intermediates[i])) return true;
+    for (int i = 0; i < plan.mask_count; ++i)
+        if (stale(ctx.masks[i], ctx.mask_specs[i], plan.masks[i])) return true;
     return output_stale(ctx, plan);
 }
 
@@ -94,10 +100,16 @@ bool allocate_stale(ssao_context& ctx, const FramePlan& plan, GlStateGuard& guar
     use_default_unpack(gl, guard);
     gl.ActiveTexture(GL_TEXTURE0 + SSAO_UNIT_AO);
     for (int i = 0; i < plan.intermediate_count; ++i) {
-        if (!intermediate_stale(ctx, plan, i)) continue;
         const Intermediate& want = plan.intermediates[i];
+        if (!stale(ctx.intermediates[i], ctx.intermediate_specs[i], want)) continue;
         allocate(ctx, ctx.intermediates[i], want.format, want.width, want.height, kIntermediateLabels[i]);
         ctx.intermediate_specs[i] = want;
+    }
+    for (int i = 0; i < plan.mask_count; ++i) {
+        const Intermediate& want = plan.masks[i];
+        if (!stale(ctx.masks[i], ctx.mask_specs[i], want)) continue;
+        allocate(ctx, ctx.masks[i], want.format, want.width, want.height, kMaskLabels[i]);
+        ctx.mask_specs[i] = want;
     }
     if (!output_stale(ctx, plan)) return false;
     allocate(ctx, ctx.output, plan.output_format, plan.output_width, plan.output_height, ctx.output_label.c_str());
@@ -118,13 +130,14 @@ TargetFramebuffer::TargetFramebuffer(ssao_context& ctx) : gl_(ctx.gl) {
     }
 }
 
-TargetFramebuffer::~TargetFramebuffer() { attach(0, 0); }
+TargetFramebuffer::~TargetFramebuffer() { attach(0, 0, 0); }
 
-void TargetFramebuffer::attach(GLuint colour0, GLuint colour1) {
+void TargetFramebuffer::attach(GLuint colour0, GLuint colour1, GLuint depth) {
     static const GLenum one[1] = {GL_COLOR_ATTACHMENT0};
     static const GLenum two[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
     gl_.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, colour0, 0);
     gl_.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, colour1, 0);
+    gl_.FramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, depth, 0);
     // The draw-buffer list is the library's framebuffer's own state, not the host's.
     gl_.DrawBuffers(colour1 != 0 ? 2 : 1, colour1 != 0 ? two : one);
 }
@@ -140,6 +153,7 @@ GLuint PlanTextures::resolve(const TexRef& ref) const {
         case TexRef::Source::normal: return normal;
         case TexRef::Source::noise: return noise;
         case TexRef::Source::intermediate: return intermediates[ref.index];
+        case TexRef::Source::mask: return masks[ref.index];
         case TexRef::Source::output: return output;
     }
     return 0;
@@ -174,6 +188,7 @@ ssao_status update_resources(ssao_context& ctx, const FramePlan& plan, const Ana
     out.noise = ctx.noise_texture;
     out.output = plan.owned_output ? ctx.output : in.output_texture;
     for (int i = 0; i < kMaxIntermediates; ++i) out.intermediates[i] = ctx.intermediates[i];
+    for (int i = 0; i < kMaxMasks; ++i) out.masks[i] = ctx.masks[i];
 
     if (new_output) {
         framebuffer.attach(out.output);

@@ -1,5 +1,5 @@
-// resources.h - the textures a plan renders into: its intermediates and the
-// plugin-owned output, (re)allocated only when the plan's needs change
+// resources.h - the textures a plan renders into: its intermediates, its sky
+// masks (depth textures the passes test) and the plugin-owned output, (re)allocated only when the plan's needs change
 // (never freed when a plan needs fewer: a later frame will want them again;
 // destroy_context deletes them), and the library's framebuffer they are
 // attached to: the one owner of attachments and completeness.
@@ -28,8 +28,9 @@ public:
     TargetFramebuffer& operator=(const TargetFramebuffer&) = delete;
 
     // `colour0` on attachment 0 and `colour1` (0: none) on attachment 1,
-    // with the draw buffers to match: fragment outputs 0 and 1.
-    void attach(GLuint colour0, GLuint colour1 = 0);
+    // with the draw buffers to match: fragment outputs 0 and 1; `depth` (0:
+    // none) on the depth attachment.
+    void attach(GLuint colour0, GLuint colour1 = 0, GLuint depth = 0);
     bool complete() const;
 
 private:
@@ -40,6 +41,7 @@ private:
 struct PlanTextures {
     GLuint depth = 0, normal = 0, noise = 0, output = 0;
     GLuint intermediates[kMaxIntermediates] = {};
+    GLuint masks[kMaxMasks] = {};
     // The target of the host's depth and normal: GL_TEXTURE_2D or
     // GL_TEXTURE_2D_MULTISAMPLE. Everything of the library's is GL_TEXTURE_2D.
     GLenum input_target = GL_TEXTURE_2D;

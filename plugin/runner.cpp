@@ -57,14 +57,73 @@ private:
     GLuint texture_[SSAO_UNITS_USED][2] = {};
 };
 
-// Strength 0: the pass's rectangle of its target cleared to 1 (scissored:
-// the rest of a host's output texture is kept).
-void clear_to_one(const GladGLContext& gl, const Pass& pass) {
-    gl.Enable(GL_SCISSOR_TEST);
-    gl.Scissor(pass.rect.x, pass.rect.y, pass.rect.width, pass.rect.height);
+// The pass's rectangle of its colour target 0 cleared to `value`. A
+// library texture is the rectangle's size and cleared whole (a software
+// rasteriser clears a whole surface fastest); the host's output is scissored,
+// keeping the rest of it.
+void clear_rect(const GladGLContext& gl, const FramePlan& plan, const Pass& pass, const GLfloat value[4]) {
+    const bool scissored = pass.target.source == TexRef::Source::output && !plan.owned_output;
+    if (scissored) {
+        gl.Enable(GL_SCISSOR_TEST);
+        gl.Scissor(pass.rect.x, pass.rect.y, pass.rect.width, pass.rect.height);
+    }
+    gl.ClearBufferfv(GL_COLOR, 0, value);
+    if (scissored) gl.Disable(GL_SCISSOR_TEST);
+}
+
+// Pass::clear_sky: what the pass's shader writes at the sky (ao_texture.glsl
+// result(1.0, SKY_Z), or 1).
+void clear_to_sky(const GladGLContext& gl, const FramePlan& plan, const Pass& pass) {
+    const GLfloat packed[4] = {1.0f, static_cast<GLfloat>(SSAO_SKY_Z), 0.0f, 0.0f};
     const GLfloat one[4] = {1.0f, 1.0f, 1.0f, 1.0f};
-    gl.ClearBufferfv(GL_COLOR, 0, one);
-    gl.Disable(GL_SCISSOR_TEST);
+    clear_rect(gl, plan, pass, pass.pack_depth ? packed : one);
+}
+
+// DepthUse::depth_copy: the host's depth in the viewport copied to the
+// pass's rectangle of its depth attachment (attached to the bound draw
+// framebuffer), through the library's read framebuffer.
+void copy_host_depth(ssao_context& ctx, const FramePlan& plan, const Pass& pass, const PlanTextures& t) {
+    const GladGLContext& gl = ctx.gl;
+    gl.BindFramebuffer(GL_READ_FRAMEBUFFER, ctx.read_fbo);
+    if (!ctx.read_fbo_ready) {
+        // Below GL 4.1 a read buffer naming no attachment leaves the
+        // framebuffer incomplete; it has only a depth attachment.
+        gl.ReadBuffer(GL_NONE);
+        label_object(ctx, GL_FRAMEBUFFER, ctx.read_fbo, kLabelReadFramebuffer);
+        ctx.read_fbo_ready = true;
+    }
+    gl.FramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, t.depth, 0);
+    const Rect& v = plan.viewport;
+    const Rect& r = pass.rect;
+    gl.BlitFramebuffer(v.x, v.y, v.x + v.width, v.y + v.height, r.x, r.y, r.x + r.width, r.y + r.height,
+                       GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+    // Never left holding the host's texture.
+    gl.FramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, 0, 0);
+    gl.BindFramebuffer(GL_READ_FRAMEBUFFER, ctx.fbo);
+}
+
+// The depth state of a pass's DepthUse.
+void set_depth_use(const GladGLContext& gl, DepthUse use, float sky_depth) {
+    if (use == DepthUse::none) {
+        gl.Disable(GL_DEPTH_TEST);
+        return;
+    }
+    gl.Enable(GL_DEPTH_TEST);
+    if (use == DepthUse::write_grid_mask) {
+        // gl_FragDepth (grid.frag) is clamped to the depth range.
+        gl.DepthRange(0.0, 1.0);
+        gl.DepthFunc(GL_ALWAYS);
+        gl.DepthMask(GL_TRUE);
+        return;
+    }
+    // Every fragment at the sky's depth (a depth range of one value), so the
+    // test passes exactly where the stored depth is not the sky's: below it
+    // when the sky is at 1, above it when the sky is at 0 (reverse-Z). The
+    // grid's mask holds 1 at the sky.
+    const double sky = use == DepthUse::grid_mask ? 1.0 : static_cast<double>(sky_depth);
+    gl.DepthRange(sky, sky);
+    gl.DepthFunc(sky == 1.0 ? GL_GREATER : GL_LESS);
+    gl.DepthMask(GL_FALSE);
 }
 
 void draw(const ssao_context& ctx, const Pass& pass) {
@@ -87,15 +146,24 @@ void run_plan(ssao_context& ctx, const FramePlan& plan, const PlanTextures& text
     gl.BindBufferBase(GL_UNIFORM_BUFFER, SSAO_UBO_KERNEL, ctx.ubo_kernel);
 
     UnitBindings units(gl);
+    bool depth_copied = false;
     const int slot = begin_timed_frame(ctx, plan);
     for (int i = 0; i < plan.pass_count; ++i) {
         const Pass& pass = plan.passes[i];
         {
             const PassGroup group(ctx, pass_info(pass.kind).debug_group);
-            framebuffer.attach(textures.resolve(pass.target), textures.resolve(pass.target2));
+            framebuffer.attach(textures.resolve(pass.target), textures.resolve(pass.target2),
+                               textures.resolve(pass.depth_target));
             if (program_of(pass.kind) == ProgramId::none) {
-                clear_to_one(gl, pass);
+                const GLfloat one[4] = {1.0f, 1.0f, 1.0f, 1.0f};
+                clear_rect(gl, plan, pass, one);
             } else {
+                if (pass.depth == DepthUse::depth_copy && !depth_copied) {
+                    copy_host_depth(ctx, plan, pass, textures);
+                    depth_copied = true;
+                }
+                if (pass.clear_sky) clear_to_sky(gl, plan, pass);
+                set_depth_use(gl, pass.depth, plan.sky_depth);
                 units.bind_for(pass, textures);
                 if (pass.multiply) begin_multiply_blend(gl, ctx.caps);
                 draw(ctx, pass);

@@ -108,7 +108,7 @@ float fetch_depth(ivec2 t) { return input_depth(t); }
 // (ao_texture.glsl), so a later pass fetches one texel and rebuilds nothing
 // through the inverse projection. The sky (and a depth whose position is not finite) carries this
 // marker instead.
-const float SKY_Z = 3.0e38;
+const float SKY_Z = SSAO_SKY_Z;
 
 bool finite3(vec3 v) { return all(lessThan(abs(v), vec3(3.0e38))) && !any(isnan(v)); }
 

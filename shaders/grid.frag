@@ -138,4 +138,7 @@ void main() {
     bool surface = !is_sky(d) && finite3(P);
     o_ao = surface ? plane_texel(vec2(p) + 0.5, P.z, n) : vec4(SKY_Z, 0.0, 0.0, 0.0);
     o_normal = vec4(n, 0.0);
+    // The grid's sky mask (plan.h DepthUse): 1 where a pass on the grid
+    // would only write the sky's value, which its depth test then skips.
+    gl_FragDepth = surface ? 0.0 : 1.0;
 }

@@ -20,6 +20,10 @@
 /* The depth-aware blur fits a line through its taps (blur.frag); this is
  * added to the taps' offset variance (squared pass texels) to damp its slope. */
 #define SSAO_BLUR_SLOPE_DAMPING 0.25
+/* The view z that marks the sky (and a depth whose position is not finite)
+ * in the grid's plane texels and the AO texture (common.glsl SKY_Z); the
+ * runner clears a sky-tested pass's target to it (runner.cpp). */
+#define SSAO_SKY_Z 3.0e38
 
 /* Texture units the passes sample from (the state guard saves exactly these). */
 #define SSAO_UNIT_DEPTH 0

@@ -79,7 +79,8 @@
  *   discard, polygon offset, colour logic op, sample mask, dither, framebuffer
  *   sRGB, multisample, alpha-to-coverage, clip distances 0-7), (1.2) the blend
  *   function and equation of draw buffer 0 (all buffers' below GL 4.0), polygon mode,
- *   colour/depth/stencil write masks, clip control (where supported), the
+ *   colour/depth/stencil write masks, the depth function and depth range
+ *   (every index of a viewport array), clip control (where supported), the
  *   depth-stencil texture mode of a D24S8/D32FS8 input (GL 4.3+) and the
  *   unpack pixel-store parameters.
  * - Where query buffers exist (GL 4.4 or ARB_query_buffer_object), a buffer

@@ -96,6 +96,13 @@ inline Snapshot snapshot(GladGLContext& gl, int units = 4) {
             s["scissor_box" + std::to_string(i) + "[" + std::to_string(k) + "]"] = b[k];
         }
         s["scissor_test" + std::to_string(i)] = gl.IsEnabledi(GL_SCISSOR_TEST, i);
+        GLfloat range[2] = {};
+        gl.GetFloati_v(GL_DEPTH_RANGE, i, range);
+        for (int k = 0; k < 2; ++k) {
+            uint32_t bits = 0;
+            std::memcpy(&bits, &range[k], sizeof bits);
+            s["depth_range" + std::to_string(i) + "[" + std::to_string(k) + "]"] = bits;
+        }
     }
     enabled("scissor_test", GL_SCISSOR_TEST);
     enabled("depth_test", GL_DEPTH_TEST);

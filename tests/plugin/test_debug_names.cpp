@@ -209,16 +209,18 @@ TEST_CASE("object labels: every GL object the library made carries an 'ssao: ...
     };
     const Kind kinds[] = {
         {GL_TEXTURE, [](GladGLContext& g, GLuint n) { return g.IsTexture(n); },
-         // The grid pass's two (the depth-aware blur reads its tangent planes), the AO, the blur's x pass.
+         // The grid pass's two (the depth-aware blur reads its tangent planes), the AO, the blur's x pass;
+         // the sky masks: the grid's, and the copy of the host's depth the last blur tests.
          {"ssao: intermediate 0", "ssao: intermediate 1", "ssao: intermediate 2", "ssao: intermediate 3", "ssao: noise",
-          "ssao: output"}},
+          "ssao: output", "ssao: sky mask 0", "ssao: sky mask 1"}},
         {GL_PROGRAM, [](GladGLContext& g, GLuint n) { return g.IsProgram(n); },
          // Those create_context compiles, and the kernel's variant that reads the grid.
          {"ssao: kernel program", "ssao: kernel program", "ssao: blur program", "ssao: visibility program",
           "ssao: grid program", "ssao: upsample program"}},
         {GL_BUFFER, [](GladGLContext& g, GLuint n) { return g.IsBuffer(n); },
          {"ssao: frame constants", "ssao: kernel"}},
-        {GL_FRAMEBUFFER, [](GladGLContext& g, GLuint n) { return g.IsFramebuffer(n); }, {"ssao: framebuffer"}},
+        {GL_FRAMEBUFFER, [](GladGLContext& g, GLuint n) { return g.IsFramebuffer(n); },
+         {"ssao: framebuffer", "ssao: depth copy source"}},
         {GL_VERTEX_ARRAY, [](GladGLContext& g, GLuint n) { return g.IsVertexArray(n); }, {"ssao: vertex array"}},
         {GL_SAMPLER, [](GladGLContext& g, GLuint n) { return g.IsSampler(n); }, {"ssao: sampler"}},
     };

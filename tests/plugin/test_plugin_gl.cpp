@@ -191,6 +191,7 @@ void disturb_engine_state(GladGLContext& gl) {
     gl.Enable(GL_DEPTH_CLAMP);
     gl.Enable(GL_PROGRAM_POINT_SIZE);
     gl.DepthRange(0.25, 0.75);
+    gl.DepthRangeIndexed(2, 0.125, 0.875);  // glDepthRange sets every index: index 2 differs
     gl.LineWidth(2.0f);
     gl.BlendFuncSeparate(GL_SRC_COLOR, GL_DST_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_CONSTANT_COLOR);
     gl.BlendEquationSeparate(GL_FUNC_REVERSE_SUBTRACT, GL_MAX);

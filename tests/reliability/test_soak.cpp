@@ -123,12 +123,13 @@ TEST_CASE("soak: 10,000 executes and 500 create/destroy cycles leave nothing beh
     CHECK(live_min == live_max);
     // What a context can own at most: 6 programs (ao, visibility, blur,
     // downsample, upsample, normals view: variant 0 of each, compiled at
-    // creation), vertex array, framebuffer, 2 uniform buffers, noise texture,
-    // sampler, the plan's 4 intermediates (a half-resolution plan with a
-    // separable blur uses all 4: the grid's view z and normals, the AO, the
-    // blur's x pass), the output, and a timestamp per pass boundary for each
-    // frame in flight.
-    CHECK(live_max <= 6 + 6 + 4 + 1 + 8 * (SSAO_MAX_PASSES + 1));
+    // creation), vertex array, 2 framebuffers (the passes' and the depth
+    // copy's source), 2 uniform buffers, noise texture, sampler, the plan's 4
+    // intermediates (a half-resolution plan with a separable blur uses all 4:
+    // the grid's view z and normals, the AO, the blur's x pass) and 2 sky
+    // masks (the grid's, the copy of the host's depth), the output, and a
+    // timestamp per pass boundary for each frame in flight.
+    CHECK(live_max <= 6 + 7 + 4 + 2 + 1 + 8 * (SSAO_MAX_PASSES + 1));
     // Back to the first frame's settings and viewport: the same AO, bit for bit.
     REQUIRE(api.set_settings(ctx, &first_settings) == SSAO_OK);
     REQUIRE(api.execute(ctx, &base, &out) == SSAO_OK);
