@@ -14,7 +14,8 @@ before the march's stretch),
 the step-length tables and, from upsample/ (four quick runs: the upsample's 2x2 or 3x3 taps, MEDIUM's
 directions; and int_division/, an A/B of the shaders' integer division by the grid's scale; march_cost/sampled_texels/, an
 A/B of reading the library's own textures with texelFetch and with textureLod; march_cost/loop_test_at_end/, an A/B
-of the shaders' loops testing at the top and at the end), the upsample tables and, from cell_pattern/ (a quick run's cell_pattern.csv), the shared-pattern
+of the shaders' loops testing at the top and at the end), the upsample tables, from sky_test/ (an A/B of the sky
+masks' depth tests, standard and close-up views) the sky-test table and, from cell_pattern/ (a quick run's cell_pattern.csv), the shared-pattern
 table, and from grid_study/ (scripts/grid-study.sh, and the A/B and quick runs of the plane-fit upsample) the
 grid-study tables. The preset-rule lines compare presets.txt's picks with the shipped table. Time is process CPU
 time (ssao-bench, LP_NUM_THREADS=1). Every number in those blocks comes from the run; nothing is
@@ -230,6 +231,8 @@ def main():
     if os.path.exists(d + "/march_cost/loop_test_at_end/llvmpipe/old_1.csv"):
         blocks["loop_test_at_end"] = ab_table(d + "/march_cost/loop_test_at_end", "for loops (before)",
                                               "do-while loops (shipped)", what_changed="shaders")
+    if os.path.exists(d + "/sky_test/llvmpipe/old_1.csv"):
+        blocks["sky_test"] = sky_test_table(d + "/sky_test/llvmpipe")
     if os.path.exists(d + "/grid_study/grid_study.csv"):
         blocks["grid_study"] = grid_study_table(d + "/grid_study")
         blocks["grid_study_summary"] = grid_study_summary(d + "/grid_study")
@@ -525,6 +528,30 @@ def ab_table(d, old_label, new_label, what_changed="march"):
                 f(m[(name, sc)], 3) if name == "old" else with_change(m[(name, sc)], m[("old", sc)]) for sc in scenes)))
     return "\n".join(["| machine, DEFAULT's time | %s | " % what_changed + " | ".join(scenes) + " |",
                       "|---|---|" + "---:|" * len(scenes)] + rows)
+
+
+def sky_test_table(d):
+    """The sky masks' A/B (DIR/{old,new}_PASS.csv, ssao-bench --time-only --views standard,close-up, the builds in
+    turn over passes): per scene and view DEFAULT's CPU ms before and after (median over passes) and, after, its
+    ratios to the textbook pass and the floor."""
+    values = {}
+    for name in ("old", "new"):
+        for path in sorted(glob.glob("%s/%s_[0-9].csv" % (d, name))):
+            for r in load(path):
+                if r["config"] == PRESETS[1][1]:
+                    for field in ("cpu_ms", "x_textbook_cpu", "x_floor_cpu"):
+                        values.setdefault((name, r["scene"], r["view"], field), []).append(r[field])
+    cases = sorted(set((sc, v) for _, sc, v, _ in values), key=lambda c: (c[0], c[1] != "standard"))
+    lines = ["| scene | view | DEFAULT CPU ms, every pass run (before) | sky skipped by the depth test (shipped) | "
+             "x textbook (shipped) | x floor (shipped) |", "|---|---|---:|---:|---:|---:|"]
+    for sc, v in cases:
+        m = {(n, fl): median(values[(n, sc, v, fl)]) for n in ("old", "new") for fl in ("cpu_ms", "x_textbook_cpu",
+                                                                                        "x_floor_cpu")}
+        lines.append("| %s | %s | %s | %s | %s | %s |" % (sc, v, f(m[("old", "cpu_ms")], 2),
+                                                          with_change(m[("new", "cpu_ms")], m[("old", "cpu_ms")], 2),
+                                                          f(m[("new", "x_textbook_cpu")], 3),
+                                                          f(m[("new", "x_floor_cpu")], 1)))
+    return "\n".join(lines)
 
 
 GRID_STUDY = [("DEFAULT", "DEFAULT"), ("DEFAULT converged", "converged (64 frame indices)"),
