@@ -89,10 +89,7 @@ void add_sky_tests(Builder& b, FramePlan& plan, const AnalysedInputs& in, const 
             if (grid_mask.source == Source::none) grid_mask = b.mask(g.width, g.height, TexFormat::d16);
             p.depth = DepthUse::grid_mask;
             p.depth_target = grid_mask;
-        } else {
-            continue;
         }
-        p.clear_sky = !p.multiply;
     }
     if (grid_mask.source == Source::none) return;
     plan.passes[grid].depth = DepthUse::write_grid_mask;

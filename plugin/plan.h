@@ -102,7 +102,7 @@ enum class TexFormat : uint8_t {
 // (the AO texture's sky value, or 1), so a depth test can reject it before
 // its fragment shader runs: a software rasteriser (llvmpipe) skips a batch
 // of pixels whose depth test fails, but not one whose shader returns early.
-// A tested pass's target is cleared to the sky's value first (Pass::clear_sky).
+// A tested pass's target is cleared to the sky's value first (Pass::clears_sky).
 enum class DepthUse : uint8_t {
     none,             // no depth attachment, no depth test
     write_grid_mask,  // the grid pass: writes the grid's sky mask, 1 at sky texels, 0 elsewhere
@@ -148,11 +148,6 @@ struct Pass {
     // The depth attachment (a mask, or none) and what the pass does with it.
     TexRef depth_target;
     DepthUse depth = DepthUse::none;
-    // Clear the pass's rectangle of its target to what the pass writes at
-    // the sky, before it draws: (1, SKY_Z, 0, 0) when it packs depth, else
-    // 1. Set for a sky-tested pass, except where it multiplies into the
-    // host's image (a multiply by 1 changes nothing).
-    bool clear_sky = false;
     Rect rect;               // where it draws in its target: origin and size, in target texels
     bool pack_depth = false; // writes (ao, view z) for a following pass instead of the final AO
     int direction[2] = {0, 0};  // blur direction (u_blur_dir)
@@ -174,6 +169,14 @@ struct Pass {
     // blending, rgb = dst.rgb * src.rgb, alpha kept (the runner sets the blend;
     // the shader writes AO to rgb as in overwrite mode).
     bool multiply = false;
+
+    // Whether the pass's rectangle of its target is cleared, before it
+    // draws, to what the pass writes at the sky ((1, SKY_Z, 0, 0) when it
+    // packs depth, else 1): every sky-tested pass, except one that
+    // multiplies into the host's image (a multiply by 1 changes nothing).
+    bool clears_sky() const {
+        return (depth == DepthUse::grid_mask || depth == DepthUse::depth_copy) && !multiply;
+    }
 };
 
 // A texture the plan renders into and a later pass samples (or, for a

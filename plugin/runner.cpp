@@ -71,7 +71,7 @@ void clear_rect(const GladGLContext& gl, const FramePlan& plan, const Pass& pass
     if (scissored) gl.Disable(GL_SCISSOR_TEST);
 }
 
-// Pass::clear_sky: what the pass's shader writes at the sky (ao_texture.glsl
+// Pass::clears_sky: what the pass's shader writes at the sky (ao_texture.glsl
 // result(1.0, SKY_Z), or 1).
 void clear_to_sky(const GladGLContext& gl, const FramePlan& plan, const Pass& pass) {
     const GLfloat packed[4] = {1.0f, static_cast<GLfloat>(SSAO_SKY_Z), 0.0f, 0.0f};
@@ -162,7 +162,7 @@ void run_plan(ssao_context& ctx, const FramePlan& plan, const PlanTextures& text
                     copy_host_depth(ctx, plan, pass, textures);
                     depth_copied = true;
                 }
-                if (pass.clear_sky) clear_to_sky(gl, plan, pass);
+                if (pass.clears_sky()) clear_to_sky(gl, plan, pass);
                 set_depth_use(gl, pass.depth, plan.sky_depth);
                 units.bind_for(pass, textures);
                 if (pass.multiply) begin_multiply_blend(gl, ctx.caps);

@@ -34,16 +34,13 @@ const Pass* find(const FramePlan& p, PassKind kind) {
 // What every plan keeps: a depth target exactly where a depth use is, of a
 // depth format, covering the pass's rectangle, never sampled and never a
 // colour target; the grid's mask written by the grid pass before any pass
-// tests it, at the grid's size; the copy at the output's rectangle; the
-// clear exactly where a test is and the output is not multiplied into.
+// tests it, at the grid's size; the copy at the output's rectangle.
 void check_sky_invariants(const FramePlan& p, const AnalysedInputs& in) {
     int mask_written = -1;
     for (int i = 0; i < p.pass_count; ++i) {
         const Pass& pass = p.passes[i];
         CAPTURE(i);
         CHECK((pass.depth == DepthUse::none) == (pass.depth_target.source == Source::none));
-        CHECK(pass.clear_sky == (pass.depth != DepthUse::none && pass.depth != DepthUse::write_grid_mask &&
-                                 !pass.multiply));
         for (int j = 0; j < p.pass_count; ++j) {
             for (const TexRef& r : p.passes[j].inputs)
                 if (pass.depth_target.source != Source::none) CHECK(r != pass.depth_target);
@@ -109,12 +106,12 @@ TEST_CASE("sky tests: the default plan skips the sky on the grid and in the upsa
     REQUIRE(ao.kind == PassKind::visibility);
     REQUIRE(up.kind == PassKind::upsample);
     CHECK(grid.depth == DepthUse::write_grid_mask);
-    CHECK_FALSE(grid.clear_sky);
+    CHECK_FALSE(grid.clears_sky());
     CHECK(ao.depth == DepthUse::grid_mask);
-    CHECK(ao.clear_sky);
+    CHECK(ao.clears_sky());
     CHECK(ao.pack_depth);  // cleared to (1, SKY_Z, 0, 0), what visibility.frag writes at the sky
     CHECK(up.depth == DepthUse::depth_copy);
-    CHECK(up.clear_sky);
+    CHECK(up.clears_sky());
     const Intermediate& mask = p.masks[grid.depth_target.index];
     CHECK(mask.width == 32);
     CHECK(mask.height == 24);
@@ -212,7 +209,7 @@ TEST_CASE("sky tests: multisampled depth is never copied, the grid's mask still 
     REQUIRE(up != nullptr);
     CHECK(ao->depth == DepthUse::grid_mask);
     CHECK(up->depth == DepthUse::none);
-    CHECK_FALSE(up->clear_sky);
+    CHECK_FALSE(up->clears_sky());
 }
 
 TEST_CASE("sky tests: a multiply output is tested but not cleared (a multiply by 1 changes nothing)") {
@@ -224,7 +221,7 @@ TEST_CASE("sky tests: a multiply output is tested but not cleared (a multiply by
     REQUIRE(up != nullptr);
     CHECK(up->multiply);
     CHECK(up->depth == DepthUse::depth_copy);
-    CHECK_FALSE(up->clear_sky);
+    CHECK_FALSE(up->clears_sky());
 }
 
 TEST_CASE("sky tests: the normals views and the clear pass use no depth") {
