@@ -5,6 +5,7 @@
 #include "context_identity.h"
 #include "debug.h"
 #include "program_cache.h"
+#include "renderer.h"
 #include "resources.h"
 #include "uniforms.h"
 
@@ -116,6 +117,7 @@ ssao_status initialise(ssao_context& ctx, const ssao_context_desc& desc) {
     }
     gl.GetIntegerv(GL_MAX_DRAW_BUFFERS, &ctx.caps.max_draw_buffers);
     gl.GetIntegerv(GL_MAX_CLIP_DISTANCES, &ctx.caps.max_clip_distances);
+    ctx.caps.software_rasterizer = is_software_rasterizer(reinterpret_cast<const char*>(get_string(GL_RENDERER)));
 
     ssao_impl::init_debug(ctx);
 

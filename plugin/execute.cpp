@@ -69,6 +69,7 @@ ssao_status execute(ssao_context& ctx, const ssao_inputs& in, ssao_output* out) 
     if (st == SSAO_OK) st = check_host_output(ctx, analysed, framebuffer);
     if (st != SSAO_OK) return st;
 
+    analysed.software_rasterizer = ctx.caps.software_rasterizer;
     const FramePlan plan = plan_frame(ctx.settings, analysed);
     st = compile_plan_programs(ctx, plan);  // a variant's first use compiles it
     if (st != SSAO_OK) return st;

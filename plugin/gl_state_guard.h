@@ -17,6 +17,7 @@ struct GlCaps {
     int viewports = 1;                // GL 4.1 viewport arrays: how many indices to save (<= 16)
     int max_draw_buffers = 8;
     int max_clip_distances = 8;
+    bool software_rasterizer = false; // GL_RENDERER names one (renderer.h): the plan's sky tests depend on it
 };
 
 class GlStateGuard {

@@ -49,6 +49,11 @@ struct AnalysedInputs {
     // inputs.frame_index: 0 = the fixed noise pattern, else the
     // sampling pass's rotation and jitter move with it (variant FRAME_NOISE).
     uint32_t frame_index = 0;
+    // Not the inputs' but the context's (GlCaps::software_rasterizer): the
+    // renderer runs every instruction of a batch of pixels whose lanes are
+    // all masked off, so the pass writing the output tests a copy of the
+    // host's depth to skip the sky (plan.h DepthUse).
+    bool software_rasterizer = false;
 };
 
 // Checks that need no GL state change: the enums, view matrix and projection,

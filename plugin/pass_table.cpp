@@ -19,6 +19,9 @@ constexpr ProgramInfo kNormalsView{ProgramId::normals_view, k_normals_view_frag,
 constexpr ProgramInfo kBlur{ProgramId::blur, k_blur_frag, SharedCode::common, "blur.frag", "ssao: blur program", 0};
 constexpr ProgramInfo kUpsample{ProgramId::upsample, k_upsample_frag, SharedCode::common, "upsample.frag",
                                 "ssao: upsample program", 0};
+// No pass of its own: drawn inside each pass that fills the sky (runner.cpp).
+constexpr ProgramInfo kSkyFill{ProgramId::sky_fill, k_sky_fill_frag, SharedCode::common, "sky_fill.frag",
+                               "ssao: sky fill program", 0};
 
 // In PassKind order.
 constexpr PassInfo kPasses[] = {
@@ -48,9 +51,10 @@ const PassInfo& pass_info(PassKind kind) {
 }
 
 const ProgramInfo& program_info(ProgramId id) {
+    if (id == ProgramId::sky_fill) return kSkyFill;
     for (const PassInfo& p : kPasses)
         if (p.program.id == id) return p.program;
-    return kPasses[0].program;  // not reached: every program has a pass
+    return kPasses[0].program;  // not reached: every other program has a pass
 }
 
 }  // namespace ssao_impl

@@ -42,7 +42,8 @@ struct PassInfo {
 // The row of `kind` (kind != count).
 const PassInfo& pass_info(PassKind kind);
 
-// The row of the first pass that draws with `id` (id != none).
+// The row of the first pass that draws with `id`, or the sky fill's own
+// (id != none).
 const ProgramInfo& program_info(ProgramId id);
 
 inline ProgramId program_of(PassKind kind) { return pass_info(kind).program.id; }

@@ -63,8 +63,9 @@ TexFormat depth_copy_format(const DepthFormat& d) {
 // The sky tests of a plan of AO passes (DepthUse). A pass that writes the
 // output (and, without a grid, one that writes an intermediate at the
 // output's rectangle) runs where the copy of the host's depth is not the
-// sky, if that depth is single-sampled (a blit of a multisampled depth
-// resolves it); a pass on the grid, where the grid's sky mask is 0. Each
+// sky, on a software rasteriser and if that depth is single-sampled (a blit
+// of a multisampled depth resolves it); a pass on the grid, where the grid's
+// sky mask is 0. Each
 // rejects only pixels where its shader writes the sky's value: the host's
 // sky is sky on the grid too (grid.frag), and the passes after the grid
 // read the sky from it. The grid pass writes its mask only where a pass
@@ -78,7 +79,7 @@ void add_sky_tests(Builder& b, FramePlan& plan, const AnalysedInputs& in, const 
         if (p.kind == PassKind::grid || p.kind == PassKind::clear) continue;
         const bool writes_output = p.target.source == Source::output;
         if (writes_output || (grid < 0 && same_rect(p.rect, final_rect))) {
-            if (in.multisample) continue;
+            if (in.multisample || !in.software_rasterizer) continue;
             if (depth_copy.source == Source::none)
                 depth_copy = b.mask(final_rect.x + final_rect.width, final_rect.y + final_rect.height,
                                     depth_copy_format(in.depth));

@@ -48,8 +48,9 @@ enum class PassKind : uint8_t {
 };
 
 // The compiled programs (one per shader file; the two blurs share one). The
-// clear pass draws nothing (none).
-enum class ProgramId : int8_t { none = -1, grid, kernel, visibility, normals_view, blur, upsample, count };
+// clear pass draws nothing (none). sky_fill is no pass's own: the runner
+// draws it inside every pass that fills the sky (Pass::fills_sky).
+enum class ProgramId : int8_t { none = -1, grid, kernel, visibility, normals_view, blur, upsample, sky_fill, count };
 
 // Compile-time variants of a program. Each bit is a feature that is off by
 // default and free when off: its shader code sits behind `#ifdef SSAO_<NAME>`
@@ -101,8 +102,14 @@ enum class TexFormat : uint8_t {
 // How a pass uses its depth attachment. A sky pixel's output is a constant
 // (the AO texture's sky value, or 1), so a depth test can reject it before
 // its fragment shader runs: a software rasteriser (llvmpipe) skips a batch
-// of pixels whose depth test fails, but not one whose shader returns early.
-// A tested pass's target is cleared to the sky's value first (Pass::clears_sky).
+// of pixels whose depth test fails, but not one whose shader returns early,
+// and a GPU skips whole tiles by their depth range. The pixels a tested pass
+// skips get the sky's value from a fill draw with the complementary test
+// (Pass::fills_sky). The host's depth is copied for a test at the output
+// only on a software rasteriser (AnalysedInputs::software_rasterizer): a
+// GPU's SIMD groups of sky pixels already leave its shaders early, and there
+// the copy cost more than it saved (docs/benchmark.md, "Sky skipped by a
+// depth test").
 enum class DepthUse : uint8_t {
     none,             // no depth attachment, no depth test
     write_grid_mask,  // the grid pass: writes the grid's sky mask, 1 at sky texels, 0 elsewhere
@@ -170,11 +177,12 @@ struct Pass {
     // the shader writes AO to rgb as in overwrite mode).
     bool multiply = false;
 
-    // Whether the pass's rectangle of its target is cleared, before it
-    // draws, to what the pass writes at the sky ((1, SKY_Z, 0, 0) when it
-    // packs depth, else 1): every sky-tested pass, except one that
-    // multiplies into the host's image (a multiply by 1 changes nothing).
-    bool clears_sky() const {
+    // Whether the pixels the pass's depth test skips get, from the sky
+    // fill (shaders/sky_fill.frag), what the pass writes at the sky
+    // ((1, SKY_Z, 0, 0) when it packs depth, else 1): every sky-tested pass,
+    // except one that multiplies into the host's image (a multiply by 1
+    // changes nothing).
+    bool fills_sky() const {
         return (depth == DepthUse::grid_mask || depth == DepthUse::depth_copy) && !multiply;
     }
 };

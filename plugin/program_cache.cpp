@@ -168,6 +168,11 @@ const CompiledProgram& program_for(const ssao_context& ctx, const Pass& pass) {
     return p ? *p : ctx.programs.front();  // compile_plan_programs ran: always found
 }
 
+const CompiledProgram& sky_fill_program(const ssao_context& ctx) {
+    const CompiledProgram* p = find(ctx, ProgramId::sky_fill, 0);
+    return p ? *p : ctx.programs.front();  // compile_base_programs ran: always found
+}
+
 void delete_programs(ssao_context& ctx) {
     for (const CompiledProgram& p : ctx.programs)
         if (p.program) ctx.gl.DeleteProgram(p.program);

@@ -40,6 +40,9 @@ ssao_status compile_plan_programs(ssao_context& ctx, const FramePlan& plan);
 // The compiled program of a pass (compile_plan_programs ran for its plan).
 const CompiledProgram& program_for(const ssao_context& ctx, const Pass& pass);
 
+// The sky fill's program (compiled at create_context).
+const CompiledProgram& sky_fill_program(const ssao_context& ctx);
+
 // destroy_context: deletes them all.
 void delete_programs(ssao_context& ctx);
 

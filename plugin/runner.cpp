@@ -71,14 +71,6 @@ void clear_rect(const GladGLContext& gl, const FramePlan& plan, const Pass& pass
     if (scissored) gl.Disable(GL_SCISSOR_TEST);
 }
 
-// Pass::clears_sky: what the pass's shader writes at the sky (ao_texture.glsl
-// result(1.0, SKY_Z), or 1).
-void clear_to_sky(const GladGLContext& gl, const FramePlan& plan, const Pass& pass) {
-    const GLfloat packed[4] = {1.0f, static_cast<GLfloat>(SSAO_SKY_Z), 0.0f, 0.0f};
-    const GLfloat one[4] = {1.0f, 1.0f, 1.0f, 1.0f};
-    clear_rect(gl, plan, pass, pass.pack_depth ? packed : one);
-}
-
 // DepthUse::depth_copy: the host's depth in the viewport copied to the
 // pass's rectangle of its depth attachment (attached to the bound draw
 // framebuffer), through the library's read framebuffer.
@@ -102,6 +94,17 @@ void copy_host_depth(ssao_context& ctx, const FramePlan& plan, const Pass& pass,
     gl.BindFramebuffer(GL_READ_FRAMEBUFFER, ctx.fbo);
 }
 
+// The depth function of a sky test: passing where the stored depth is not
+// the sky's, or, for the sky fill, exactly where that test fails. Every
+// fragment is at the sky's depth (set_depth_use), so the test passes below
+// it when the sky is at 1 and above it when the sky is at 0 (reverse-Z). The
+// grid's mask holds 1 at the sky.
+GLenum sky_test_func(DepthUse use, float sky_depth, bool at_sky) {
+    const bool sky_at_one = use == DepthUse::grid_mask || sky_depth == 1.0f;
+    if (sky_at_one) return at_sky ? GL_LEQUAL : GL_GREATER;
+    return at_sky ? GL_GEQUAL : GL_LESS;
+}
+
 // The depth state of a pass's DepthUse.
 void set_depth_use(const GladGLContext& gl, DepthUse use, float sky_depth) {
     if (use == DepthUse::none) {
@@ -116,23 +119,30 @@ void set_depth_use(const GladGLContext& gl, DepthUse use, float sky_depth) {
         gl.DepthMask(GL_TRUE);
         return;
     }
-    // Every fragment at the sky's depth (a depth range of one value), so the
-    // test passes exactly where the stored depth is not the sky's: below it
-    // when the sky is at 1, above it when the sky is at 0 (reverse-Z). The
-    // grid's mask holds 1 at the sky.
+    // A depth range of one value puts every fragment at the sky's depth.
     const double sky = use == DepthUse::grid_mask ? 1.0 : static_cast<double>(sky_depth);
     gl.DepthRange(sky, sky);
-    gl.DepthFunc(sky == 1.0 ? GL_GREATER : GL_LESS);
+    gl.DepthFunc(sky_test_func(use, sky_depth, false));
     gl.DepthMask(GL_FALSE);
 }
 
-void draw(const ssao_context& ctx, const Pass& pass) {
-    const GladGLContext& gl = ctx.gl;
-    const CompiledProgram& program = program_for(ctx, pass);
+void draw_with(const GladGLContext& gl, const CompiledProgram& program, const Pass& pass) {
     gl.Viewport(pass.rect.x, pass.rect.y, pass.rect.width, pass.rect.height);
     gl.UseProgram(program.program);
     set_pass_uniforms(gl, program.uniforms, pass);
     gl.DrawArrays(GL_TRIANGLES, 0, 3);
+}
+
+// Pass::fills_sky: the sky fill drawn over the pass's rectangle where its
+// depth test fails, the test set back after. A draw and not a clear: a GPU
+// rejects the tiles that hold no sky before any fragment runs, while a clear
+// writes every texel (and a cleared 32-bit float target cost an NVIDIA H200
+// more than the march saved).
+void fill_sky(const ssao_context& ctx, const FramePlan& plan, const Pass& pass) {
+    const GladGLContext& gl = ctx.gl;
+    gl.DepthFunc(sky_test_func(pass.depth, plan.sky_depth, true));
+    draw_with(gl, sky_fill_program(ctx), pass);
+    gl.DepthFunc(sky_test_func(pass.depth, plan.sky_depth, false));
 }
 
 }  // namespace
@@ -162,11 +172,11 @@ void run_plan(ssao_context& ctx, const FramePlan& plan, const PlanTextures& text
                     copy_host_depth(ctx, plan, pass, textures);
                     depth_copied = true;
                 }
-                if (pass.clears_sky()) clear_to_sky(gl, plan, pass);
                 set_depth_use(gl, pass.depth, plan.sky_depth);
                 units.bind_for(pass, textures);
+                if (pass.fills_sky()) fill_sky(ctx, plan, pass);
                 if (pass.multiply) begin_multiply_blend(gl, ctx.caps);
-                draw(ctx, pass);
+                draw_with(gl, program_for(ctx, pass), pass);
                 if (pass.multiply) end_multiply_blend(gl);
             }
         }

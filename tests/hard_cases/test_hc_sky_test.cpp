@@ -5,13 +5,17 @@
 // that offset (the copy of the host's depth is taken from the viewport's
 // rectangle and tested at the output's), every convention and depth format
 // and every resolution give the AO of the same G-buffer alone, in overwrite
-// and in multiply mode, and nothing outside the viewport is written.
+// and in multiply mode, and nothing outside the viewport is written. Both
+// plans run: a software rasteriser's, which copies the host's depth to test
+// the output, and a GPU's, which does not (plugin/renderer.h; the context
+// here is told a GPU's GL_RENDERER).
 #include <doctest/doctest.h>
 
 #include "conventions.h"
 #include "hc_util.h"
 
 #include <cmath>
+#include <initializer_list>
 #include <string>
 
 using analytic::GBuffer;
@@ -50,8 +54,12 @@ Compared compare_inset(testgl::Fixture& fx, GLuint out, int tw, int th, int ox, 
 }  // namespace
 
 TEST_CASE("sky test: an inset viewport written into the host's output at its offset gives the AO of the G-buffer "
-          "alone, in every convention and depth format, overwrite and multiply") {
+          "alone, in every convention and depth format, overwrite and multiply, a GPU's plan and llvmpipe's") {
+  for (const char* renderer : {"llvmpipe (as the test names it)", "NVIDIA H200/PCIe/SSE2"}) {
+    CAPTURE(renderer);
+    const bool software = renderer[0] == 'l';
     testgl::Fixture fx;
+    fx.recreate_context_as(renderer);
     GladGLContext& gl = fx.gl();
     const int W = 48, H = 40, ox = 5, oy = 3, TW = W + 9, TH = H + 7;
     const auto cases = hc::perspective_conventions(double(W) / H, 0.1, 100.0,
@@ -100,5 +108,8 @@ TEST_CASE("sky test: an inset viewport written into the host's output at its off
         // test would have left at 1 (orthographic sees the ledge edge-on).
         if (!c.ortho) CHECK(dark > 200);
     }
+    // One copy of the host's depth per execute on llvmpipe, none on a GPU.
+    CHECK((testgl::Fixture::blits_as_renamed() > 0) == software);
     CHECK(fx.gl_errors().empty());
+  }
 }

@@ -1,6 +1,7 @@
 #include "gl_fixture.h"
 
 #include <cstdlib>
+#include <cstring>
 #include <stdexcept>
 #include <utility>
 
@@ -65,6 +66,50 @@ ssao_status create_default_context(const ssao_api& api, ssao_context** out) {
     desc.get_proc_address = &eglctx::Context::get_proc;
     return api.create_context(&desc, out);
 }
+
+namespace {
+
+// recreate_context_as: the name GL_RENDERER reports, and the real glGetString.
+// recreate_context_as: the name GL_RENDERER reports, the real glGetString
+// and glBlitFramebuffer, and the blits counted.
+const char* g_renderer_name = nullptr;
+PFNGLGETSTRINGPROC g_get_string = nullptr;
+PFNGLBLITFRAMEBUFFERPROC g_blit = nullptr;
+int g_blits = 0;
+
+const GLubyte* GLAD_API_PTR renamed_get_string(GLenum name) {
+    return name == GL_RENDERER ? reinterpret_cast<const GLubyte*>(g_renderer_name) : g_get_string(name);
+}
+
+void GLAD_API_PTR counted_blit(GLint sx0, GLint sy0, GLint sx1, GLint sy1, GLint dx0, GLint dy0, GLint dx1, GLint dy1,
+                               GLbitfield mask, GLenum filter) {
+    ++g_blits;
+    g_blit(sx0, sy0, sx1, sy1, dx0, dy0, dx1, dy1, mask, filter);
+}
+
+ssao_gl_proc SSAO_CALL renamed_get_proc(void* user, const char* name) {
+    if (std::strcmp(name, "glGetString") == 0) return reinterpret_cast<ssao_gl_proc>(&renamed_get_string);
+    if (std::strcmp(name, "glBlitFramebuffer") == 0) return reinterpret_cast<ssao_gl_proc>(&counted_blit);
+    return eglctx::Context::get_proc(user, name);
+}
+
+}  // namespace
+
+void Fixture::recreate_context_as(const char* renderer) {
+    g_renderer_name = renderer;
+    g_get_string = gl().GetString;
+    g_blit = gl().BlitFramebuffer;
+    g_blits = 0;
+    api().destroy_context(ctx_);
+    ctx_ = nullptr;
+    ssao_context_desc desc{};
+    desc.size = sizeof desc;
+    desc.get_proc_address = &renamed_get_proc;
+    const ssao_status st = api().create_context(&desc, &ctx_);
+    if (st != SSAO_OK) throw std::runtime_error(std::string("create_context: ") + api().status_string(st));
+}
+
+int Fixture::blits_as_renamed() { return g_blits; }
 
 Fixture::Fixture(int major, int minor) {
     egl_ = make_debug_context(major, minor);

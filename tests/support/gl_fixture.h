@@ -61,6 +61,12 @@ public:
     // The test destroyed the context itself (on another GL context): the
     // fixture must not destroy it again.
     void forget_context() { ctx_ = nullptr; }
+    // Replaces ctx() with a context whose glGetString reports `renderer` for
+    // GL_RENDERER (a static string): the plan a GPU gets, run on llvmpipe
+    // (plugin/renderer.h). One fixture at a time may do this.
+    void recreate_context_as(const char* renderer);
+    // glBlitFramebuffer calls that context made since it was created.
+    static int blits_as_renamed();
     // GL errors reported through KHR_debug since the fixture was made.
     const std::vector<std::string>& gl_errors() const { return errors_->messages(); }
 

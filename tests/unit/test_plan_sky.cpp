@@ -1,7 +1,8 @@
 // test_plan_sky.cpp - the sky tests of the frame plan (plugin/plan.h
 // DepthUse), without GL: which pass writes the grid's sky mask, which passes
 // test it or the copy of the host's depth, what each depth target is and how
-// large, which targets are cleared to the sky's value first, and that a
+// large, which passes fill the pixels they skip with the sky's value, that
+// only a software rasteriser copies the host's depth, and that a
 // multisampled depth, a multiply output and the normals views get no test
 // they cannot use.
 #include "plan.h"
@@ -18,6 +19,12 @@ namespace {
 ssao_settings resolved(ssao_method method, ssao_resolution res, ssao_blur blur,
                        ssao_debug_view view = SSAO_DEBUG_VIEW_NONE) {
     return plan_test::resolve(plan_test::request(method, res, blur, 0.0f, view));
+}
+
+// The inputs of a viewport as execute hands them to the plan on llvmpipe.
+AnalysedInputs software(AnalysedInputs in) {
+    in.software_rasterizer = true;
+    return in;
 }
 
 bool is_depth_format(TexFormat f) {
@@ -70,6 +77,7 @@ void check_sky_invariants(const FramePlan& p, const AnalysedInputs& in) {
                 CHECK(pass.rect.height == p.passes[mask_written].rect.height);
                 break;
             case DepthUse::depth_copy:
+                CHECK(in.software_rasterizer);
                 CHECK_FALSE(in.multisample);
                 CHECK(pass.rect.width == in.viewport[2]);
                 CHECK(pass.rect.height == in.viewport[3]);
@@ -95,7 +103,7 @@ void check_sky_invariants(const FramePlan& p, const AnalysedInputs& in) {
 }  // namespace
 
 TEST_CASE("sky tests: the default plan skips the sky on the grid and in the upsample") {
-    const AnalysedInputs in = plan_test::viewport_inputs(0, 0, 64, 48);
+    const AnalysedInputs in = software(plan_test::viewport_inputs(0, 0, 64, 48));
     const FramePlan p = plan_frame(plan_test::resolve(ssao_settings{}), in);
     check_sky_invariants(p, in);
     REQUIRE(p.pass_count == 3);
@@ -106,12 +114,12 @@ TEST_CASE("sky tests: the default plan skips the sky on the grid and in the upsa
     REQUIRE(ao.kind == PassKind::visibility);
     REQUIRE(up.kind == PassKind::upsample);
     CHECK(grid.depth == DepthUse::write_grid_mask);
-    CHECK_FALSE(grid.clears_sky());
+    CHECK_FALSE(grid.fills_sky());
     CHECK(ao.depth == DepthUse::grid_mask);
-    CHECK(ao.clears_sky());
-    CHECK(ao.pack_depth);  // cleared to (1, SKY_Z, 0, 0), what visibility.frag writes at the sky
+    CHECK(ao.fills_sky());
+    CHECK(ao.pack_depth);  // filled with (1, SKY_Z, 0, 0), what visibility.frag writes at the sky
     CHECK(up.depth == DepthUse::depth_copy);
-    CHECK(up.clears_sky());
+    CHECK(up.fills_sky());
     const Intermediate& mask = p.masks[grid.depth_target.index];
     CHECK(mask.width == 32);
     CHECK(mask.height == 24);
@@ -128,7 +136,10 @@ TEST_CASE("sky tests: every resolution, blur and method, each pass tested agains
                 CAPTURE(method);
                 CAPTURE(res);
                 CAPTURE(blur);
-                const AnalysedInputs in = plan_test::viewport_inputs(0, 0, 61, 37);
+              for (bool software_rasterizer : {true, false}) {
+                CAPTURE(software_rasterizer);
+                AnalysedInputs in = plan_test::viewport_inputs(0, 0, 61, 37);
+                in.software_rasterizer = software_rasterizer;
                 const FramePlan p = plan_frame(resolved(method, res, blur), in);
                 check_sky_invariants(p, in);
                 const bool grid = find(p, PassKind::grid) != nullptr;
@@ -136,15 +147,19 @@ TEST_CASE("sky tests: every resolution, blur and method, each pass tested agains
                     const Pass& pass = p.passes[i];
                     CAPTURE(i);
                     if (pass.kind == PassKind::grid) continue;
-                    // Every pass after the host's depth is known is tested: the
-                    // output's writer against the copy, a pass on the grid against
-                    // the grid's mask, and without a grid the full-resolution
-                    // passes (at the output's rectangle, origin 0 here) against the copy.
+                    // Every pass after the host's depth is known is tested: a
+                    // pass on the grid against the grid's mask; on a software
+                    // rasteriser the output's writer, and without a grid the
+                    // full-resolution passes (at the output's rectangle,
+                    // origin 0 here), against the copy; on a GPU those not at all.
                     if (pass.target.source == Source::output || !grid)
-                        CHECK(pass.depth == DepthUse::depth_copy);
+                        CHECK(pass.depth == (software_rasterizer ? DepthUse::depth_copy : DepthUse::none));
                     else
                         CHECK(pass.depth == DepthUse::grid_mask);
+                    CHECK(pass.fills_sky() == (pass.depth != DepthUse::none));
                 }
+                if (!software_rasterizer) CHECK(p.mask_count <= 1);  // the grid's mask alone
+              }
             }
 }
 
@@ -164,7 +179,7 @@ TEST_CASE("sky tests: the copy lies at the host's output rectangle and has the h
     for (const Case& c : cases) {
         CAPTURE(static_cast<int>(c.want));
         // A viewport at (5, 7) of the host's textures, written into the host's output there.
-        const AnalysedInputs in = plan_test::viewport_inputs(5, 7, 40, 30, 9, c.depth);
+        const AnalysedInputs in = software(plan_test::viewport_inputs(5, 7, 40, 30, 9, c.depth));
         const FramePlan p = plan_frame(plan_test::resolve(ssao_settings{}), in);
         check_sky_invariants(p, in);
         const Pass* up = find(p, PassKind::upsample);
@@ -177,7 +192,7 @@ TEST_CASE("sky tests: the copy lies at the host's output rectangle and has the h
         CHECK(up->rect.x == 5);
         CHECK(up->rect.y == 7);
         // The library's own output: the copy at its origin.
-        const AnalysedInputs own = plan_test::viewport_inputs(5, 7, 40, 30, 0, c.depth);
+        const AnalysedInputs own = software(plan_test::viewport_inputs(5, 7, 40, 30, 0, c.depth));
         const FramePlan q = plan_frame(plan_test::resolve(ssao_settings{}), own);
         check_sky_invariants(q, own);
         const Pass* up2 = find(q, PassKind::upsample);
@@ -189,7 +204,7 @@ TEST_CASE("sky tests: the copy lies at the host's output rectangle and has the h
 }
 
 TEST_CASE("sky tests: reverse-Z tests against a sky at depth 0") {
-    AnalysedInputs in = plan_test::viewport_inputs(0, 0, 64, 48);
+    AnalysedInputs in = software(plan_test::viewport_inputs(0, 0, 64, 48));
     in.proj.reverse_z = true;
     in.proj.sky_depth = 0.0f;
     const FramePlan p = plan_frame(plan_test::resolve(ssao_settings{}), in);
@@ -198,7 +213,7 @@ TEST_CASE("sky tests: reverse-Z tests against a sky at depth 0") {
 }
 
 TEST_CASE("sky tests: multisampled depth is never copied, the grid's mask still serves the grid") {
-    AnalysedInputs in = plan_test::viewport_inputs(0, 0, 64, 48);
+    AnalysedInputs in = software(plan_test::viewport_inputs(0, 0, 64, 48));
     in.multisample = true;
     in.samples = 4;
     const FramePlan p = plan_frame(plan_test::resolve(ssao_settings{}), in);
@@ -209,11 +224,11 @@ TEST_CASE("sky tests: multisampled depth is never copied, the grid's mask still 
     REQUIRE(up != nullptr);
     CHECK(ao->depth == DepthUse::grid_mask);
     CHECK(up->depth == DepthUse::none);
-    CHECK_FALSE(up->clears_sky());
+    CHECK_FALSE(up->fills_sky());
 }
 
-TEST_CASE("sky tests: a multiply output is tested but not cleared (a multiply by 1 changes nothing)") {
-    AnalysedInputs in = plan_test::viewport_inputs(0, 0, 64, 48, 3);
+TEST_CASE("sky tests: a multiply output is tested but not filled (a multiply by 1 changes nothing)") {
+    AnalysedInputs in = software(plan_test::viewport_inputs(0, 0, 64, 48, 3));
     in.multiply_output = true;
     const FramePlan p = plan_frame(plan_test::resolve(ssao_settings{}), in);
     check_sky_invariants(p, in);
@@ -221,11 +236,11 @@ TEST_CASE("sky tests: a multiply output is tested but not cleared (a multiply by
     REQUIRE(up != nullptr);
     CHECK(up->multiply);
     CHECK(up->depth == DepthUse::depth_copy);
-    CHECK_FALSE(up->clears_sky());
+    CHECK_FALSE(up->fills_sky());
 }
 
 TEST_CASE("sky tests: the normals views and the clear pass use no depth") {
-    const AnalysedInputs in = plan_test::viewport_inputs(0, 0, 64, 48);
+    const AnalysedInputs in = software(plan_test::viewport_inputs(0, 0, 64, 48));
     for (ssao_debug_view view : {SSAO_DEBUG_VIEW_NORMALS, SSAO_DEBUG_VIEW_RECONSTRUCTED_NORMALS}) {
         const FramePlan p = plan_frame(resolved(SSAO_METHOD_VISIBILITY, SSAO_RESOLUTION_HALF, SSAO_BLUR_NONE, view), in);
         check_sky_invariants(p, in);
@@ -242,7 +257,7 @@ TEST_CASE("sky tests: the normals views and the clear pass use no depth") {
 }
 
 TEST_CASE("sky tests: the debug views RAW_AO and BLUR_WEIGHTS keep them (the sky is 1 in both)") {
-    const AnalysedInputs in = plan_test::viewport_inputs(0, 0, 64, 48);
+    const AnalysedInputs in = software(plan_test::viewport_inputs(0, 0, 64, 48));
     for (ssao_debug_view view : {SSAO_DEBUG_VIEW_RAW_AO, SSAO_DEBUG_VIEW_BLUR_WEIGHTS}) {
         const FramePlan p =
             plan_frame(resolved(SSAO_METHOD_VISIBILITY, SSAO_RESOLUTION_HALF, SSAO_BLUR_DEPTH_AWARE, view), in);
@@ -251,4 +266,18 @@ TEST_CASE("sky tests: the debug views RAW_AO and BLUR_WEIGHTS keep them (the sky
         REQUIRE(up != nullptr);
         CHECK(up->depth == DepthUse::depth_copy);
     }
+}
+
+TEST_CASE("sky tests: on a GPU nothing copies the host's depth, the grid's mask still serves the grid") {
+    const AnalysedInputs in = plan_test::viewport_inputs(5, 7, 40, 30, 9);
+    const FramePlan p = plan_frame(plan_test::resolve(ssao_settings{}), in);
+    check_sky_invariants(p, in);
+    REQUIRE(p.pass_count == 3);
+    CHECK(p.passes[0].depth == DepthUse::write_grid_mask);
+    CHECK(p.passes[1].depth == DepthUse::grid_mask);
+    CHECK(p.passes[1].fills_sky());
+    CHECK(p.passes[2].kind == PassKind::upsample);
+    CHECK(p.passes[2].depth == DepthUse::none);
+    CHECK_FALSE(p.passes[2].fills_sky());
+    CHECK(p.mask_count == 1);
 }
