@@ -92,6 +92,7 @@ void add_sky_tests(Builder& b, FramePlan& plan, const AnalysedInputs& in, const 
             p.depth_target = grid_mask;
         }
     }
+    plan.sky_fill = in.software_rasterizer ? SkyFill::clear : SkyFill::draw;
     if (grid_mask.source == Source::none) return;
     plan.passes[grid].depth = DepthUse::write_grid_mask;
     plan.passes[grid].depth_target = grid_mask;

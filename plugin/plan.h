@@ -104,18 +104,29 @@ enum class TexFormat : uint8_t {
 // its fragment shader runs: a software rasteriser (llvmpipe) skips a batch
 // of pixels whose depth test fails, but not one whose shader returns early,
 // and a GPU skips whole tiles by their depth range. The pixels a tested pass
-// skips get the sky's value from a fill draw with the complementary test
-// (Pass::fills_sky). The host's depth is copied for a test at the output
-// only on a software rasteriser (AnalysedInputs::software_rasterizer): a
-// GPU's SIMD groups of sky pixels already leave its shaders early, and there
-// the copy cost more than it saved (docs/benchmark.md, "Sky skipped by a
-// depth test").
+// skips get the sky's value (Pass::fills_sky) as FramePlan::sky_fill says.
+// The host's depth is copied for a test at the output only on a software
+// rasteriser (AnalysedInputs::software_rasterizer): a GPU's SIMD groups of
+// sky pixels already leave its shaders early, and there the copy cost more
+// than it saved (docs/benchmark.md, "Sky skipped by a depth test").
 enum class DepthUse : uint8_t {
     none,             // no depth attachment, no depth test
     write_grid_mask,  // the grid pass: writes the grid's sky mask, 1 at sky texels, 0 elsewhere
     grid_mask,        // runs where the grid's sky mask is 0
     depth_copy,       // runs where the host's depth, copied into depth_target (once per frame, before the
                       // first pass that tests it), is not the sky's (FramePlan::sky_depth)
+};
+
+// How a tested pass's skipped pixels get the sky's value. A software
+// rasteriser clears the target first: a clear is a memset there, while a
+// draw rasterises every block of the rectangle even where its test fails. A
+// GPU draws the sky fill (shaders/sky_fill.frag) with the complementary
+// test: it rejects the tiles without sky before any fragment runs, while a
+// clear of a 32-bit float target to the sky's value writes every texel (on
+// an NVIDIA H200 the clears cost more than the sky test saved).
+enum class SkyFill : uint8_t {
+    clear,  // the pass's rectangle of its target cleared before the pass draws
+    draw,   // the sky fill drawn where the pass's depth test fails
 };
 
 // A texture a pass samples or renders into.
@@ -177,11 +188,10 @@ struct Pass {
     // the shader writes AO to rgb as in overwrite mode).
     bool multiply = false;
 
-    // Whether the pixels the pass's depth test skips get, from the sky
-    // fill (shaders/sky_fill.frag), what the pass writes at the sky
-    // ((1, SKY_Z, 0, 0) when it packs depth, else 1): every sky-tested pass,
-    // except one that multiplies into the host's image (a multiply by 1
-    // changes nothing).
+    // Whether the pixels the pass's depth test skips get what the pass
+    // writes at the sky ((1, SKY_Z, 0, 0) when it packs depth, else 1), as
+    // FramePlan::sky_fill says: every sky-tested pass, except one that
+    // multiplies into the host's image (a multiply by 1 changes nothing).
     bool fills_sky() const {
         return (depth == DepthUse::grid_mask || depth == DepthUse::depth_copy) && !multiply;
     }
@@ -211,6 +221,7 @@ struct FramePlan {
     // (the viewport), to the tested pass's rectangle; the sky's depth value.
     Rect viewport;
     float sky_depth = 1.0f;
+    SkyFill sky_fill = SkyFill::draw;  // how Pass::fills_sky is done
 
     // ssao_output.passes_run: the bits of the passes in the plan.
     uint32_t passes_run() const;

@@ -139,6 +139,8 @@ ssao_status compile_base_programs(ssao_context& ctx) {
         // a context that never shows a view never compiles it.
         const ProgramId id = static_cast<ProgramId>(i);
         if (id == ProgramId::normals_view) continue;
+        // A software rasteriser clears the sky instead (plan.h SkyFill).
+        if (id == ProgramId::sky_fill && ctx.caps.software_rasterizer) continue;
         const ssao_status st = add_program(ctx, id, program_info(id).base_variant);
         if (st != SSAO_OK) return st;
     }

@@ -28,7 +28,8 @@ struct CompiledProgram {
 };
 
 // create_context: variant 0 of every program but the debug views' (compiled
-// on first use, like the variants). SHADER (last_error holds the
+// on first use, like the variants) and, on a software rasteriser, the sky
+// fill's. SHADER (last_error holds the
 // driver's log) when one fails.
 ssao_status compile_base_programs(ssao_context& ctx);
 
@@ -40,7 +41,8 @@ ssao_status compile_plan_programs(ssao_context& ctx, const FramePlan& plan);
 // The compiled program of a pass (compile_plan_programs ran for its plan).
 const CompiledProgram& program_for(const ssao_context& ctx, const Pass& pass);
 
-// The sky fill's program (compiled at create_context).
+// The sky fill's program (compiled at create_context where the renderer is
+// not a software rasteriser: plans draw it only there).
 const CompiledProgram& sky_fill_program(const ssao_context& ctx);
 
 // destroy_context: deletes them all.

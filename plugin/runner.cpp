@@ -71,6 +71,14 @@ void clear_rect(const GladGLContext& gl, const FramePlan& plan, const Pass& pass
     if (scissored) gl.Disable(GL_SCISSOR_TEST);
 }
 
+// SkyFill::clear: the pass's rectangle cleared to what its shader writes at
+// the sky (ao_texture.glsl result(1.0, SKY_Z), or 1).
+void clear_to_sky(const GladGLContext& gl, const FramePlan& plan, const Pass& pass) {
+    const GLfloat packed[4] = {1.0f, static_cast<GLfloat>(SSAO_SKY_Z), 0.0f, 0.0f};
+    const GLfloat one[4] = {1.0f, 1.0f, 1.0f, 1.0f};
+    clear_rect(gl, plan, pass, pass.pack_depth ? packed : one);
+}
+
 // DepthUse::depth_copy: the host's depth in the viewport copied to the
 // pass's rectangle of its depth attachment (attached to the bound draw
 // framebuffer), through the library's read framebuffer.
@@ -133,12 +141,9 @@ void draw_with(const GladGLContext& gl, const CompiledProgram& program, const Pa
     gl.DrawArrays(GL_TRIANGLES, 0, 3);
 }
 
-// Pass::fills_sky: the sky fill drawn over the pass's rectangle where its
-// depth test fails, the test set back after. A draw and not a clear: a GPU
-// rejects the tiles that hold no sky before any fragment runs, while a clear
-// writes every texel (and a cleared 32-bit float target cost an NVIDIA H200
-// more than the march saved).
-void fill_sky(const ssao_context& ctx, const FramePlan& plan, const Pass& pass) {
+// SkyFill::draw: the sky fill drawn over the pass's rectangle where its
+// depth test fails, the test set back after.
+void draw_sky_fill(const ssao_context& ctx, const FramePlan& plan, const Pass& pass) {
     const GladGLContext& gl = ctx.gl;
     gl.DepthFunc(sky_test_func(pass.depth, plan.sky_depth, true));
     draw_with(gl, sky_fill_program(ctx), pass);
@@ -172,9 +177,10 @@ void run_plan(ssao_context& ctx, const FramePlan& plan, const PlanTextures& text
                     copy_host_depth(ctx, plan, pass, textures);
                     depth_copied = true;
                 }
+                if (pass.fills_sky() && plan.sky_fill == SkyFill::clear) clear_to_sky(gl, plan, pass);
                 set_depth_use(gl, pass.depth, plan.sky_depth);
                 units.bind_for(pass, textures);
-                if (pass.fills_sky()) fill_sky(ctx, plan, pass);
+                if (pass.fills_sky() && plan.sky_fill == SkyFill::draw) draw_sky_fill(ctx, plan, pass);
                 if (pass.multiply) begin_multiply_blend(gl, ctx.caps);
                 draw_with(gl, program_for(ctx, pass), pass);
                 if (pass.multiply) end_multiply_blend(gl);

@@ -13,6 +13,7 @@
 
 #include "conventions.h"
 #include "hc_util.h"
+#include "test_scenes.h"
 
 #include <cmath>
 #include <initializer_list>
@@ -56,7 +57,8 @@ Compared compare_inset(testgl::Fixture& fx, GLuint out, int tw, int th, int ox, 
 TEST_CASE("sky test: an inset viewport written into the host's output at its offset gives the AO of the G-buffer "
           "alone, in every convention and depth format, overwrite and multiply, a GPU's plan and llvmpipe's") {
   for (const char* renderer : {"llvmpipe (as the test names it)", "NVIDIA H200/PCIe/SSE2"}) {
-    CAPTURE(renderer);
+    const std::string renderer_name = renderer;
+    CAPTURE(renderer_name);
     const bool software = renderer[0] == 'l';
     testgl::Fixture fx;
     fx.recreate_context_as(renderer);
@@ -112,4 +114,44 @@ TEST_CASE("sky test: an inset viewport written into the host's output at its off
     CHECK((testgl::Fixture::blits_as_renamed() > 0) == software);
     CHECK(fx.gl_errors().empty());
   }
+}
+
+// What a pass skips at the sky is written with the sky's value every frame
+// (plan.h SkyFill), so texels an earlier frame left there never reach the
+// output: the sky scene after a frame whose wall covered the sky, right
+// behind the geometry (its texels would pass the depth tests of their
+// neighbours), gives exactly the AO of a fresh context.
+TEST_CASE("sky test: texels an earlier frame left where the sky now is never reach the output, a GPU's plan and "
+          "llvmpipe's") {
+    const int W = 48, H = 40;
+    const auto proj = analytic::perspective(testscenes::kFov, double(W) / H, 0.1, 100.0);
+    const GBuffer sky = analytic::render(hc::sky_scene(), proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, W, H);
+    analytic::Scene walled = hc::sky_scene();
+    walled.add_quad({-60, -60, -6.05}, {120, 0, 0}, {0, 120, 0});
+    const GBuffer wall = analytic::render(walled, proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, W, H);
+    for (const char* renderer : {"llvmpipe (as the test names it)", "NVIDIA H200/PCIe/SSE2"}) {
+        const std::string renderer_name = renderer;
+        CAPTURE(renderer_name);
+        testgl::Fixture fx;
+        for (ssao_resolution res : {SSAO_RESOLUTION_FULL, SSAO_RESOLUTION_HALF, SSAO_RESOLUTION_QUARTER})
+            for (ssao_blur blur : {SSAO_BLUR_NONE, SSAO_BLUR_DEPTH_AWARE, SSAO_BLUR_GAUSSIAN}) {
+                CAPTURE(res);
+                CAPTURE(blur);
+                ssao_settings s = hc::make(8, blur, SSAO_ROTATION_HASH, 0.8f, SSAO_METHOD_VISIBILITY);
+                s.resolution = res;
+                fx.recreate_context_as(renderer);
+                fx.settings(s);
+                REQUIRE(hc::run(fx, wall, proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE).status == SSAO_OK);
+                const hc::Out after_wall = hc::run(fx, sky, proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE);
+                fx.recreate_context_as(renderer);
+                fx.settings(s);
+                const hc::Out fresh = hc::run(fx, sky, proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE);
+                REQUIRE(after_wall.status == SSAO_OK);
+                REQUIRE(fresh.status == SSAO_OK);
+                int differ = 0;
+                for (size_t i = 0; i < fresh.ao.size(); ++i) differ += after_wall.ao[i] != fresh.ao[i];
+                CHECK(differ == 0);
+            }
+        CHECK(fx.gl_errors().empty());
+    }
 }

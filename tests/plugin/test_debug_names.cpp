@@ -216,7 +216,7 @@ TEST_CASE("object labels: every GL object the library made carries an 'ssao: ...
         {GL_PROGRAM, [](GladGLContext& g, GLuint n) { return g.IsProgram(n); },
          // Those create_context compiles, and the kernel's variant that reads the grid.
          {"ssao: kernel program", "ssao: kernel program", "ssao: blur program", "ssao: visibility program",
-          "ssao: grid program", "ssao: upsample program", "ssao: sky fill program"}},
+          "ssao: grid program", "ssao: upsample program"}},
         {GL_BUFFER, [](GladGLContext& g, GLuint n) { return g.IsBuffer(n); },
          {"ssao: frame constants", "ssao: kernel"}},
         {GL_FRAMEBUFFER, [](GladGLContext& g, GLuint n) { return g.IsFramebuffer(n); },

@@ -1,8 +1,8 @@
 // test_plan_sky.cpp - the sky tests of the frame plan (plugin/plan.h
 // DepthUse), without GL: which pass writes the grid's sky mask, which passes
 // test it or the copy of the host's depth, what each depth target is and how
-// large, which passes fill the pixels they skip with the sky's value, that
-// only a software rasteriser copies the host's depth, and that a
+// large, which passes fill the pixels they skip with the sky's value and
+// how, that only a software rasteriser copies the host's depth, and that a
 // multisampled depth, a multiply output and the normals views get no test
 // they cannot use.
 #include "plan.h"
@@ -159,6 +159,8 @@ TEST_CASE("sky tests: every resolution, blur and method, each pass tested agains
                     CHECK(pass.fills_sky() == (pass.depth != DepthUse::none));
                 }
                 if (!software_rasterizer) CHECK(p.mask_count <= 1);  // the grid's mask alone
+                // A software rasteriser clears (a memset there), a GPU draws the fill.
+                CHECK(p.sky_fill == (software_rasterizer ? SkyFill::clear : SkyFill::draw));
               }
             }
 }
@@ -280,4 +282,5 @@ TEST_CASE("sky tests: on a GPU nothing copies the host's depth, the grid's mask 
     CHECK(p.passes[2].depth == DepthUse::none);
     CHECK_FALSE(p.passes[2].fills_sky());
     CHECK(p.mask_count == 1);
+    CHECK(p.sky_fill == SkyFill::draw);
 }
