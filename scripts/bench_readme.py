@@ -233,6 +233,11 @@ def main():
                                               "do-while loops (shipped)", what_changed="shaders")
     if os.path.exists(d + "/sky_test/llvmpipe/old_1.csv"):
         blocks["sky_test"] = sky_test_table(d + "/sky_test/llvmpipe")
+    if os.path.exists(d + "/sky_test/fill/llvmpipe/old_1.csv"):
+        blocks["sky_fill"] = sky_test_table(d + "/sky_test/fill/llvmpipe", "clears (shipped on llvmpipe)",
+                                            "the sky fill drawn", "the fill")
+    if os.path.exists(d + "/sky_test/fill/llvmpipe/host_cpu.txt"):
+        blocks["sky_fill_host"] = host_cpu_line(d + "/sky_test/fill/llvmpipe/host_cpu.txt")
     if os.path.exists(d + "/grid_study/grid_study.csv"):
         blocks["grid_study"] = grid_study_table(d + "/grid_study")
         blocks["grid_study_summary"] = grid_study_summary(d + "/grid_study")
@@ -257,6 +262,10 @@ def main():
         blocks["stretch_thickness"] = stretch_thickness_line(d + "/step_length/stretch")
     if os.path.exists(d + "/cell_pattern/cell_pattern.csv"):
         blocks["cell_pattern"] = cell_pattern_table(d + "/cell_pattern/cell_pattern.csv")
+    if os.path.exists(d + "/gpu/sky_fill_h200.txt"):
+        blocks["sky_fill_gpu"] = sky_fill_gpu_table(d + "/gpu/sky_fill_h200.txt")
+    if os.path.exists(d + "/gpu/sky_test_parts_h200.txt"):
+        blocks["sky_test_parts_gpu"] = sky_test_parts_table(d + "/gpu/sky_test_parts_h200.txt")
     if os.path.exists(d + "/gpu/bench.csv"):
         blocks["gpu"] = gpu_table(d + "/gpu")
         blocks["gpu_line"] = gpu_line(d + "/gpu")
@@ -530,10 +539,11 @@ def ab_table(d, old_label, new_label, what_changed="march"):
                       "|---|---|" + "---:|" * len(scenes)] + rows)
 
 
-def sky_test_table(d):
-    """The sky masks' A/B (DIR/{old,new}_PASS.csv, ssao-bench --time-only --views standard,close-up, the builds in
-    turn over passes): per scene and view DEFAULT's CPU ms before and after (median over passes) and, after, its
-    ratios to the textbook pass and the floor."""
+def sky_test_table(d, before="every pass run (before)", after="sky skipped by the depth test (shipped)",
+                   tag="shipped"):
+    """A sky test's A/B (DIR/{old,new}_PASS.csv, ssao-bench --time-only --views standard,close-up, the builds in
+    turn over passes): per scene and view DEFAULT's CPU ms before and after (median over passes) and, after (`tag`),
+    its ratios to the textbook pass and the floor."""
     values = {}
     for name in ("old", "new"):
         for path in sorted(glob.glob("%s/%s_[0-9].csv" % (d, name))):
@@ -542,8 +552,8 @@ def sky_test_table(d):
                     for field in ("cpu_ms", "x_textbook_cpu", "x_floor_cpu"):
                         values.setdefault((name, r["scene"], r["view"], field), []).append(r[field])
     cases = sorted(set((sc, v) for _, sc, v, _ in values), key=lambda c: (c[0], c[1] != "standard"))
-    lines = ["| scene | view | DEFAULT CPU ms, every pass run (before) | sky skipped by the depth test (shipped) | "
-             "x textbook (shipped) | x floor (shipped) |", "|---|---|---:|---:|---:|---:|"]
+    lines = ["| scene | view | DEFAULT CPU ms, %s | %s | x textbook (%s) | x floor (%s) |" % (before, after, tag, tag),
+             "|---|---|---:|---:|---:|---:|"]
     for sc, v in cases:
         m = {(n, fl): median(values[(n, sc, v, fl)]) for n in ("old", "new") for fl in ("cpu_ms", "x_textbook_cpu",
                                                                                         "x_floor_cpu")}
@@ -551,6 +561,88 @@ def sky_test_table(d):
                                                           with_change(m[("new", "cpu_ms")], m[("old", "cpu_ms")], 2),
                                                           f(m[("new", "x_textbook_cpu")], 3),
                                                           f(m[("new", "x_floor_cpu")], 1)))
+    return "\n".join(lines)
+
+
+def gpu_pass_lines(path):
+    """ssao-host's per-pass GPU times as device runs wrote them, one line a run: "BUILD PRESET SCENE  grid ... total
+    X ms" or "BUILD SCENE DEPTH  grid ... total X ms" (preset medium); '#' lines are comments. Yields (build, preset,
+    scene name, depth, total ms)."""
+    for line in open(path):
+        if line.startswith("#") or "total" not in line:
+            continue
+        words = line.split()
+        total = float(line.rsplit("total", 1)[1].split()[0])
+        if "/" in words[1]:
+            build, scene, depth, preset = words[0], words[1], words[2], "medium"
+        else:
+            build, preset, scene, depth = words[0], words[1], words[2], "d32f"
+        yield build, preset, os.path.basename(scene).split(".")[0], depth, total
+
+
+def host_cpu_line(path):
+    """ssao-host's process CPU time per execute, two builds in turn over passes (DIR/host_cpu.txt: "PASS BUILD SCENE
+    FRAMES USER SYSTEM", each pass run at two frame counts so that start-up cancels): the median per build and
+    scene."""
+    runs = {}
+    for line in open(path):
+        if line.startswith("#") or not line.strip():
+            continue
+        p, build, scene, frames, user, system = line.split()
+        runs.setdefault((p, build, scene.split(".")[0]), {})[int(frames)] = float(user) + float(system)
+    per = {}
+    for (p, build, scene), t in runs.items():
+        lo, hi = min(t), max(t)
+        per.setdefault((build, scene), []).append((t[hi] - t[lo]) / (hi - lo) * 1000.0)
+    scenes = sorted({sc for _, sc in per})
+    return "; ".join("%s %s ms with the clears, %s with the fill" % (
+        sc, f(median(per[("prev", sc)]), 2), with_change(median(per[("new", sc)]), median(per[("prev", sc)]), 2))
+        for sc in scenes) + " (ssao-host's own view of each, CPU time per execute, median of %d passes)." % len(
+        {p for p, _, _ in runs})
+
+
+SKY_FILL_BUILDS = [("old", "no sky test (before)"), ("prev", "mask, copy and clears (the last stop)"),
+                   ("new", "mask and sky fill, no copy on a GPU (shipped)")]
+
+
+def sky_fill_gpu_table(path):
+    """The shipped sky test against the build before any and the last stop's, on a GPU (DIR/sky_fill_h200.txt): per
+    preset and scene the total GPU ms of each build at 1920x1080, the changes against the build before."""
+    ms = {}
+    for build, preset, scene, _, total in gpu_pass_lines(path):
+        ms.setdefault((build, preset, scene), []).append(total)
+    presets = [p for p in ("low", "medium", "high", "ultra") if any(k[1] == p for k in ms)]
+    scenes = sorted({k[2] for k in ms})
+    lines = ["| preset | scene | %s |" % " | ".join(label for _, label in SKY_FILL_BUILDS),
+             "|---|---|" + "---:|" * len(SKY_FILL_BUILDS)]
+    for p in presets:
+        for sc in scenes:
+            base = median(ms[("old", p, sc)])
+            cells = [f(base, 3)] + [with_change(median(ms[(b, p, sc)]), base) for b, _ in SKY_FILL_BUILDS[1:]]
+            lines.append("| %s | %s | %s |" % ("DEFAULT" if p == "medium" else p.upper(), sc, " | ".join(cells)))
+    return "\n".join(lines)
+
+
+SKY_TEST_PARTS = [("old", "no sky test (before)"), ("new", "mask, copy and clears (the last stop)"),
+                  ("nomask", "no grid mask (copy and clears)"), ("nocopy", "no copy (mask and clears)"),
+                  ("notest", "copy and clears, the output untested"), ("noclear", "no clears (wrong sky; timing only)"),
+                  ("fill", "clears replaced by the sky fill (copy kept)"),
+                  ("nocopy,fill", "mask and sky fill, no copy (shipped on a GPU)")]
+
+
+def sky_test_parts_table(path):
+    """The last stop's sky test taken apart on a GPU (DIR/sky_test_parts_h200.txt): DEFAULT's total GPU ms at
+    1920x1080 with D32F depth, per build and scene (median over the runs), the change against no sky test."""
+    ms = {}
+    for build, preset, scene, depth, total in gpu_pass_lines(path):
+        if preset == "medium" and depth == "d32f":
+            ms.setdefault((build, scene), []).append(total)
+    scenes = sorted(sc for sc in {sc for _, sc in ms} if all((b, sc) in ms for b, _ in SKY_TEST_PARTS))
+    lines = ["| DEFAULT, GPU ms | %s |" % " | ".join(scenes), "|---|" + "---:|" * len(scenes)]
+    for b, label in SKY_TEST_PARTS:
+        cells = [f(median(ms[(b, sc)]), 3) if b == "old" else with_change(median(ms[(b, sc)]), median(ms[("old", sc)]))
+                 for sc in scenes]
+        lines.append("| %s | %s |" % (label, " | ".join(cells)))
     return "\n".join(lines)
 
 
