@@ -52,7 +52,8 @@ struct AnalysedInputs {
     // Not the inputs' but the context's (GlCaps::software_rasterizer): the
     // renderer runs every instruction of a batch of pixels whose lanes are
     // all masked off, so the pass writing the output tests a copy of the
-    // host's depth to skip the sky (plan.h DepthUse).
+    // host's depth to skip the sky, and tested targets are cleared to the
+    // sky's value rather than filled by a draw (plan.h DepthUse, SkyFill).
     bool software_rasterizer = false;
 };
 

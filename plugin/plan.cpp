@@ -65,8 +65,8 @@ TexFormat depth_copy_format(const DepthFormat& d) {
 // output's rectangle) runs where the copy of the host's depth is not the
 // sky, on a software rasteriser and if that depth is single-sampled (a blit
 // of a multisampled depth resolves it); a pass on the grid, where the grid's
-// sky mask is 0. Each
-// rejects only pixels where its shader writes the sky's value: the host's
+// sky mask is 0. Each rejects only pixels where its shader writes the sky's
+// value, which the plan's SkyFill puts there instead: the host's
 // sky is sky on the grid too (grid.frag), and the passes after the grid
 // read the sky from it. The grid pass writes its mask only where a pass
 // tests it, and the copy is made only where one tests that.
