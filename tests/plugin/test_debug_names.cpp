@@ -10,6 +10,7 @@
 #include "gl_fixture.h"
 #include "test_scenes.h"
 
+#include <initializer_list>
 #include <map>
 #include <set>
 #include <string>
@@ -186,8 +187,14 @@ TEST_CASE("debug groups: a host stack with no room for two more gets none, and n
     CHECK(fx.gl_errors().empty());  // no GL_STACK_OVERFLOW
 }
 
-TEST_CASE("object labels: every GL object the library made carries an 'ssao: ...' name, the host's none") {
+TEST_CASE("object labels: every GL object the library made carries an 'ssao: ...' name, the host's none, on a "
+          "software rasteriser's plan and a GPU's") {
+  for (const char* renderer : {"llvmpipe (as the test names it)", "NVIDIA H200/PCIe/SSE2"}) {
+    const std::string renderer_name = renderer;
+    CAPTURE(renderer_name);
+    const bool software = renderer[0] == 'l';
     testgl::Fixture fx;
+    fx.recreate_context_as(renderer);
     auto& gl = fx.gl();
     Inputs scene(fx);
     fx.settings(make(16, SSAO_BLUR_DEFAULT));
@@ -207,20 +214,29 @@ TEST_CASE("object labels: every GL object the library made carries an 'ssao: ...
         GLboolean (*is)(GladGLContext&, GLuint);
         std::multiset<std::string> expected;  // the library's labels of this type
     };
+    // A software rasteriser's plan tests the output against a copy of the
+    // host's depth and clears the sky; a GPU's draws the sky fill (plan.h).
+    std::multiset<std::string> textures = {"ssao: intermediate 0", "ssao: intermediate 1", "ssao: intermediate 2",
+                                           "ssao: intermediate 3", "ssao: noise",          "ssao: output",
+                                           "ssao: sky mask 0"};
+    std::multiset<std::string> programs = {"ssao: kernel program", "ssao: kernel program", "ssao: blur program",
+                                           "ssao: visibility program", "ssao: grid program", "ssao: upsample program"};
+    std::multiset<std::string> framebuffers = {"ssao: framebuffer"};
+    if (software) {
+        textures.insert("ssao: sky mask 1");
+        framebuffers.insert("ssao: depth copy source");
+    } else {
+        programs.insert("ssao: sky fill program");
+    }
     const Kind kinds[] = {
-        {GL_TEXTURE, [](GladGLContext& g, GLuint n) { return g.IsTexture(n); },
-         // The grid pass's two (the depth-aware blur reads its tangent planes), the AO, the blur's x pass;
-         // the sky masks: the grid's, and the copy of the host's depth the last blur tests.
-         {"ssao: intermediate 0", "ssao: intermediate 1", "ssao: intermediate 2", "ssao: intermediate 3", "ssao: noise",
-          "ssao: output", "ssao: sky mask 0", "ssao: sky mask 1"}},
-        {GL_PROGRAM, [](GladGLContext& g, GLuint n) { return g.IsProgram(n); },
-         // Those create_context compiles, and the kernel's variant that reads the grid.
-         {"ssao: kernel program", "ssao: kernel program", "ssao: blur program", "ssao: visibility program",
-          "ssao: grid program", "ssao: upsample program"}},
+        // Textures: the grid pass's two (the depth-aware blur reads its tangent planes), the AO, the blur's x
+        // pass; the sky masks: the grid's, and (software) the copy of the host's depth the last blur tests.
+        {GL_TEXTURE, [](GladGLContext& g, GLuint n) { return g.IsTexture(n); }, textures},
+        // Programs: those create_context compiles, and the kernel's variant that reads the grid.
+        {GL_PROGRAM, [](GladGLContext& g, GLuint n) { return g.IsProgram(n); }, programs},
         {GL_BUFFER, [](GladGLContext& g, GLuint n) { return g.IsBuffer(n); },
          {"ssao: frame constants", "ssao: kernel"}},
-        {GL_FRAMEBUFFER, [](GladGLContext& g, GLuint n) { return g.IsFramebuffer(n); },
-         {"ssao: framebuffer", "ssao: depth copy source"}},
+        {GL_FRAMEBUFFER, [](GladGLContext& g, GLuint n) { return g.IsFramebuffer(n); }, framebuffers},
         {GL_VERTEX_ARRAY, [](GladGLContext& g, GLuint n) { return g.IsVertexArray(n); }, {"ssao: vertex array"}},
         {GL_SAMPLER, [](GladGLContext& g, GLuint n) { return g.IsSampler(n); }, {"ssao: sampler"}},
     };
@@ -253,4 +269,5 @@ TEST_CASE("object labels: every GL object the library made carries an 'ssao: ...
         }
     CHECK(timers == 3 * 5);
     CHECK(fx.gl_errors().empty());
+  }
 }
