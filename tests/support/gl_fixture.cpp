@@ -69,7 +69,6 @@ ssao_status create_default_context(const ssao_api& api, ssao_context** out) {
 
 namespace {
 
-// recreate_context_as: the name GL_RENDERER reports, and the real glGetString.
 // recreate_context_as: the name GL_RENDERER reports, the real glGetString
 // and glBlitFramebuffer, and the blits counted.
 const char* g_renderer_name = nullptr;

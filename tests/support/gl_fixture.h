@@ -62,8 +62,9 @@ public:
     // fixture must not destroy it again.
     void forget_context() { ctx_ = nullptr; }
     // Replaces ctx() with a context whose glGetString reports `renderer` for
-    // GL_RENDERER (a static string): the plan a GPU gets, run on llvmpipe
-    // (plugin/renderer.h). One fixture at a time may do this.
+    // GL_RENDERER (a static string), so that a test runs the plan of that
+    // kind of renderer, a GPU's on llvmpipe say (plugin/renderer.h). One
+    // fixture at a time may do this.
     void recreate_context_as(const char* renderer);
     // glBlitFramebuffer calls that context made since it was created.
     static int blits_as_renamed();

@@ -12,7 +12,11 @@ using ssao_impl::is_software_rasterizer;
 TEST_CASE("renderer: software rasterisers are told from GPUs by their GL_RENDERER string") {
     for (const char* software : {"llvmpipe (LLVM 15.0.6, 256 bits)", "LLVMPIPE", "softpipe",
                                  "Mesa X11 Software Rasterizer", "Google SwiftShader",
-                                 "SwiftShader Device (Subzero)", "Microsoft Basic Render Driver", "GDI Generic"}) {
+                                 "SwiftShader Device (Subzero)",
+                                 "ANGLE (Google, Vulkan 1.3.0 (SwiftShader Device (Subzero) (0x0000C0DE)), "
+                                 "SwiftShader driver-5.0.0)",
+                                 "zink Vulkan 1.3(llvmpipe (LLVM 15.0.6, 256 bits) (MESA_LLVMPIPE))",
+                                 "Microsoft Basic Render Driver", "GDI Generic"}) {
         CAPTURE(software);
         CHECK(is_software_rasterizer(software));
     }
