@@ -56,12 +56,11 @@ Compared compare_inset(testgl::Fixture& fx, GLuint out, int tw, int th, int ox, 
 
 TEST_CASE("sky test: an inset viewport written into the host's output at its offset gives the AO of the G-buffer "
           "alone, in every convention and depth format, overwrite and multiply, a GPU's plan and llvmpipe's") {
-  for (const char* renderer : {"llvmpipe (as the test names it)", "NVIDIA H200/PCIe/SSE2"}) {
-    const std::string renderer_name = renderer;
-    CAPTURE(renderer_name);
-    const bool software = renderer[0] == 'l';
+  for (const testgl::RendererKind& kind : testgl::kRendererKinds) {
+    const std::string renderer = kind.gl_renderer;
+    CAPTURE(renderer);
     testgl::Fixture fx;
-    fx.recreate_context_as(renderer);
+    fx.recreate_context_as(kind.gl_renderer);
     GladGLContext& gl = fx.gl();
     const int W = 48, H = 40, ox = 5, oy = 3, TW = W + 9, TH = H + 7;
     const auto cases = hc::perspective_conventions(double(W) / H, 0.1, 100.0,
@@ -111,7 +110,7 @@ TEST_CASE("sky test: an inset viewport written into the host's output at its off
         if (!c.ortho) CHECK(dark > 200);
     }
     // One copy of the host's depth per execute on llvmpipe, none on a GPU.
-    CHECK((testgl::Fixture::blits_as_renamed() > 0) == software);
+    CHECK((testgl::Fixture::blits_as_renamed() > 0) == kind.software);
     CHECK(fx.gl_errors().empty());
   }
 }
@@ -129,9 +128,9 @@ TEST_CASE("sky test: texels an earlier frame left where the sky now is never rea
     analytic::Scene walled = hc::sky_scene();
     walled.add_quad({-60, -60, -6.05}, {120, 0, 0}, {0, 120, 0});
     const GBuffer wall = analytic::render(walled, proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, W, H);
-    for (const char* renderer : {"llvmpipe (as the test names it)", "NVIDIA H200/PCIe/SSE2"}) {
-        const std::string renderer_name = renderer;
-        CAPTURE(renderer_name);
+    for (const testgl::RendererKind& kind : testgl::kRendererKinds) {
+        const std::string renderer = kind.gl_renderer;
+        CAPTURE(renderer);
         testgl::Fixture fx;
         for (ssao_resolution res : {SSAO_RESOLUTION_FULL, SSAO_RESOLUTION_HALF, SSAO_RESOLUTION_QUARTER})
             for (ssao_blur blur : {SSAO_BLUR_NONE, SSAO_BLUR_DEPTH_AWARE, SSAO_BLUR_GAUSSIAN}) {
@@ -139,11 +138,11 @@ TEST_CASE("sky test: texels an earlier frame left where the sky now is never rea
                 CAPTURE(blur);
                 ssao_settings s = hc::make(8, blur, SSAO_ROTATION_HASH, 0.8f, SSAO_METHOD_VISIBILITY);
                 s.resolution = res;
-                fx.recreate_context_as(renderer);
+                fx.recreate_context_as(kind.gl_renderer);
                 fx.settings(s);
                 REQUIRE(hc::run(fx, wall, proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE).status == SSAO_OK);
                 const hc::Out after_wall = hc::run(fx, sky, proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE);
-                fx.recreate_context_as(renderer);
+                fx.recreate_context_as(kind.gl_renderer);
                 fx.settings(s);
                 const hc::Out fresh = hc::run(fx, sky, proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE);
                 REQUIRE(after_wall.status == SSAO_OK);

@@ -189,12 +189,11 @@ TEST_CASE("debug groups: a host stack with no room for two more gets none, and n
 
 TEST_CASE("object labels: every GL object the library made carries an 'ssao: ...' name, the host's none, on a "
           "software rasteriser's plan and a GPU's") {
-  for (const char* renderer : {"llvmpipe (as the test names it)", "NVIDIA H200/PCIe/SSE2"}) {
-    const std::string renderer_name = renderer;
-    CAPTURE(renderer_name);
-    const bool software = renderer[0] == 'l';
+  for (const testgl::RendererKind& kind : testgl::kRendererKinds) {
+    const std::string renderer = kind.gl_renderer;
+    CAPTURE(renderer);
     testgl::Fixture fx;
-    fx.recreate_context_as(renderer);
+    fx.recreate_context_as(kind.gl_renderer);
     auto& gl = fx.gl();
     Inputs scene(fx);
     fx.settings(make(16, SSAO_BLUR_DEFAULT));
@@ -222,7 +221,7 @@ TEST_CASE("object labels: every GL object the library made carries an 'ssao: ...
     std::multiset<std::string> programs = {"ssao: kernel program", "ssao: kernel program", "ssao: blur program",
                                            "ssao: visibility program", "ssao: grid program", "ssao: upsample program"};
     std::multiset<std::string> framebuffers = {"ssao: framebuffer"};
-    if (software) {
+    if (kind.software) {
         textures.insert("ssao: sky mask 1");
         framebuffers.insert("ssao: depth copy source");
     } else {

@@ -306,11 +306,11 @@ GLuint link_trivial_program(GladGLContext& gl) {
 TEST_CASE("every listed piece of GL state is identical before and after execute, and the result is unaffected, on "
           "a software rasteriser's plan and a GPU's") {
   // A GPU's plan draws the sky fill (its own program, the complementary depth test) where llvmpipe's clears.
-  for (const char* renderer : {"llvmpipe (as the test names it)", "NVIDIA H200/PCIe/SSE2"}) {
-    const std::string renderer_name = renderer;
-    CAPTURE(renderer_name);
+  for (const testgl::RendererKind& kind : testgl::kRendererKinds) {
+    const std::string renderer = kind.gl_renderer;
+    CAPTURE(renderer);
     testgl::Fixture fx;
-    fx.recreate_context_as(renderer);
+    fx.recreate_context_as(kind.gl_renderer);
     auto& gl = fx.gl();
     const Scene scene = crease_scene();
     const auto proj = analytic::perspective(kFov, 1.0, 0.1, 100.0);

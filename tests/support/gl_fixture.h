@@ -50,6 +50,15 @@ struct Textures {
     GLuint depth = 0, normal = 0;
 };
 
+// The two kinds of renderer whose plans differ (plugin/renderer.h), as a
+// test names them to the library through Fixture::recreate_context_as.
+struct RendererKind {
+    const char* gl_renderer;
+    bool software;  // a software rasteriser's plan: the copy of the host's depth, the clears
+};
+inline constexpr RendererKind kRendererKinds[] = {{"llvmpipe (as the test names it)", true},
+                                                  {"NVIDIA H200/PCIe/SSE2", false}};
+
 class Fixture {
 public:
     explicit Fixture(int major = 4, int minor = 5);

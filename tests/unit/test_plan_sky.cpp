@@ -156,7 +156,6 @@ TEST_CASE("sky tests: every resolution, blur and method, each pass tested agains
                         CHECK(pass.depth == (software_rasterizer ? DepthUse::depth_copy : DepthUse::none));
                     else
                         CHECK(pass.depth == DepthUse::grid_mask);
-                    CHECK(pass.fills_sky() == (pass.depth != DepthUse::none));
                 }
                 if (!software_rasterizer) CHECK(p.mask_count <= 1);  // the grid's mask alone
                 // A software rasteriser clears (a memset there), a GPU draws the fill.
