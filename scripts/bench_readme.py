@@ -17,7 +17,8 @@ A/B of reading the library's own textures with texelFetch and with textureLod; m
 of the shaders' loops testing at the top and at the end), the upsample tables, from sky_test/ (an A/B of the sky
 masks' depth tests, standard and close-up views) the sky-test table and, from cell_pattern/ (a quick run's cell_pattern.csv), the shared-pattern
 table, and from grid_study/ (scripts/grid-study.sh, and the A/B and quick runs of the plane-fit upsample) the
-grid-study tables. The preset-rule lines compare presets.txt's picks with the shipped table. Time is process CPU
+grid-study tables, and from experiments/ (quick runs of builds that each add one patch, patches/, and CPU-time
+A/Bs of some of them) the table of changes tried and not shipped. The preset-rule lines compare presets.txt's picks with the shipped table. Time is process CPU
 time (ssao-bench, LP_NUM_THREADS=1). Every number in those blocks comes from the run; nothing is
 typed by hand.
 
@@ -260,6 +261,9 @@ def main():
         blocks["march_stretch"] = stretch_table(d)
     if os.path.exists(d + "/step_length/stretch/stretch_0.5_thickness_1.0.csv"):
         blocks["stretch_thickness"] = stretch_thickness_line(d + "/step_length/stretch")
+    if os.path.exists(d + "/experiments/quick/shipped.csv"):
+        blocks["experiments"] = experiments_table(d + "/experiments")
+        blocks["experiments_summary"] = experiments_summary(d + "/experiments")
     if os.path.exists(d + "/cell_pattern/cell_pattern.csv"):
         blocks["cell_pattern"] = cell_pattern_table(d + "/cell_pattern/cell_pattern.csv")
     if os.path.exists(d + "/gpu/sky_fill_h200.txt"):
@@ -740,6 +744,81 @@ def stretch_table(d):
             signed(mean(r["bias"] for r in medium.values())),
             sum(abs(r["bias"]) <= 0.003 for r in medium.values()), len(medium)))
     return "\n".join(lines)
+
+
+EXPERIMENTS = [
+    ("shipped", "the shipped library"),
+    ("crossing_previous_plane_f1_no_guard", "crossing the previous step's plane, f = 1, no guard"),
+    ("crossing_previous_plane_f0.5_no_guard", "the same, f = 0.5, no guard"),
+    ("crossing_previous_plane_f1", "crossing the previous step's plane, f = 1"),
+    ("crossing_previous_plane_f0.75", "the same, f = 0.75"),
+    ("crossing_previous_plane_f0.5", "the same, f = 0.5"),
+    ("crossing_previous_plane_f0.25", "the same, f = 0.25"),
+    ("ridge_between_steps", "a ridge: the segment behind both planes"),
+    ("crossing_this_plane_f0.5", "the shipped crossing test, this step's plane over half the segment"),
+    ("steps_for_directions_16", "4 directions x 8 steps where the radius spans 16+ grid texels"),
+    ("steps_for_directions_8", "the same from 8 grid texels"),
+    ("rotation_within_one_direction_spacing", "rotation: the noise within one direction spacing"),
+    ("visibility_bitmask_slices", "visibility bitmask, 2 slices x 2 x 8 samples (DEFAULT)"),
+    ("visibility_bitmask_slices_4x4", "visibility bitmask, 4 slices x 2 x 4 samples (DEFAULT)"),
+    ("medium_blur_radius_1", "the blur's default radius 1 (every preset), MEDIUM with the blur"),
+    ("medium_blur_radius_2", "MEDIUM with the depth-aware blur, radius 2"),
+]
+
+
+def experiments_table(d):
+    """Quick runs of every case (DIR/quick/NAME.csv, ssao-bench --quick --sweep presets) of the shipped library and
+    of builds that each add one change (DIR/patches/): each preset's mean PSNR against V_R, MEDIUM's worst and best
+    case against the shipped build, MEDIUM's and ULTRA's mean bias; and, where DIR/time/NAME_PASS.csv exist
+    (ssao-bench --time-only on three scenes' standard views, the builds in turn over passes), DEFAULT's CPU time
+    against the shipped build's: the median over scenes of the change of the medians over passes."""
+    key = lambda r: (r["scene"], r["view"], r["radius_scale"])
+    lines = ["| build | LOW | MEDIUM | HIGH | ULTRA | MEDIUM per case against shipped: worst, best | MEDIUM mean bias "
+             "| ULTRA mean bias | DEFAULT's CPU time |", "|---|---:|---:|---:|---:|---|---:|---:|---:|"]
+    base, base_time = None, None
+    for name, label in EXPERIMENTS:
+        rows = [r for r in load("%s/quick/%s.csv" % (d, name)) if r["width"] == 320 and r["psnr"] == r["psnr"]]
+        psnr = [f(mean(r["psnr"] for r in rows if r["config"] == c)) for _, c, _ in PRESETS]
+        medium = {key(r): r for r in rows if r["config"] == PRESETS[1][1]}
+        ultra = [r for r in rows if r["config"] == PRESETS[3][1]]
+        base = base or medium
+        change = sorted((r["psnr"] - base[k]["psnr"], case_name(r)) for k, r in medium.items())
+        cases = "-" if medium is base else "%+.2f dB (%s), %+.2f dB (%s)" % (change[0] + change[-1])
+        times = {}
+        for path in glob.glob("%s/time/%s_[0-9].csv" % (d, name)):
+            for r in load(path):
+                if r["config"] == PRESETS[1][1]:
+                    times.setdefault(r["scene"], []).append(r["cpu_ms"])
+        t = {sc: median(v) for sc, v in times.items()}
+        base_time = base_time or t
+        time = "-" if not t else ("%.2f ms" % median(t.values()) if t is base_time else
+                                  "%+.1f%%" % (100 * median(t[sc] / base_time[sc] - 1 for sc in t)))
+        lines.append("| %s | %s | %s | %s | %s | %s |" % (
+            label, " | ".join(psnr), cases, signed(mean(r["bias"] for r in medium.values())),
+            signed(mean(r["bias"] for r in ultra)), time))
+    return "\n".join(lines)
+
+
+def experiments_summary(d):
+    """The figures the text on the experiments quotes, from the same quick runs as experiments_table."""
+    def run(name):
+        rows = [r for r in load("%s/quick/%s.csv" % (d, name)) if r["width"] == 320 and r["psnr"] == r["psnr"]]
+        return {label: (mean(r["psnr"] for r in rows if r["config"] == c), mean(r["bias"] for r in rows
+                                                                               if r["config"] == c))
+                for label, c, _ in PRESETS}
+    base, f1, half = run("shipped"), run("crossing_previous_plane_f1"), run("crossing_previous_plane_f0.5")
+    bitmask, blur = run("visibility_bitmask_slices"), run("medium_blur_radius_2")
+    less = lambda new, old, p: "%.0f%%" % (100 * (1 - new[p][1] / old[p][1]))
+    gain = lambda new, p: "%+.2f dB" % (new[p][0] - base[p][0])
+    deficits = [base[p][0] - bitmask[p][0] for p, _, _ in PRESETS]
+    return ("- Crossing the previous step's plane, f = 1: MEDIUM's mean bias %s -> %s (%s less), ULTRA's %s -> %s "
+            "(%s less). At f = 0.5: MEDIUM %s, HIGH %s, ULTRA %s; MEDIUM's mean bias %s less.\n"
+            "- The bitmask (2 slices) reads %.2f to %.2f dB below the shipped march over the four presets.\n"
+            "- MEDIUM with the depth-aware blur at radius 2: %s, which leaves it %.2f dB below HIGH." % (
+                signed(base["MEDIUM"][1]), signed(f1["MEDIUM"][1]), less(f1, base, "MEDIUM"),
+                signed(base["ULTRA"][1]), signed(f1["ULTRA"][1]), less(f1, base, "ULTRA"),
+                gain(half, "MEDIUM"), gain(half, "HIGH"), gain(half, "ULTRA"), less(half, base, "MEDIUM"),
+                min(deficits), max(deficits), gain(blur, "MEDIUM"), blur["HIGH"][0] - blur["MEDIUM"][0]))
 
 
 def stretch_thickness_line(d):
