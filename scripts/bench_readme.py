@@ -264,6 +264,7 @@ def main():
     if os.path.exists(d + "/experiments/quick/shipped.csv"):
         blocks["experiments"] = experiments_table(d + "/experiments")
         blocks["experiments_summary"] = experiments_summary(d + "/experiments")
+        blocks["own_bias_by_steps"] = own_bias_by_steps(d + "/bench.csv")
     if os.path.exists(d + "/cell_pattern/cell_pattern.csv"):
         blocks["cell_pattern"] = cell_pattern_table(d + "/cell_pattern/cell_pattern.csv")
     if os.path.exists(d + "/gpu/sky_fill_h200.txt"):
@@ -755,6 +756,8 @@ EXPERIMENTS = [
     ("crossing_previous_plane_f0.5", "the same, f = 0.5"),
     ("crossing_previous_plane_f0.25", "the same, f = 0.25"),
     ("ridge_between_steps", "a ridge: the segment behind both planes"),
+    ("step_at_the_crossing", "crossing the previous step's plane checked by a step just past the crossing"),
+    ("step_past_the_crossing_halfway", "the same, the step halfway from the crossing to this step"),
     ("crossing_this_plane_f0.5", "the shipped crossing test, this step's plane over half the segment"),
     ("steps_for_directions_16", "4 directions x 8 steps where the radius spans 16+ grid texels"),
     ("steps_for_directions_8", "the same from 8 grid texels"),
@@ -764,6 +767,33 @@ EXPERIMENTS = [
     ("medium_blur_radius_1", "the blur's default radius 1 (every preset), MEDIUM with the blur"),
     ("medium_blur_radius_2", "MEDIUM with the depth-aware blur, radius 2"),
 ]
+
+
+def default_cpu_medians(d, name):
+    """DEFAULT's CPU ms per scene in DIR/NAME_PASS.csv (ssao-bench --time-only), the median over passes."""
+    times = {}
+    for path in glob.glob("%s/%s_[0-9].csv" % (d, name)):
+        for r in load(path):
+            if r["config"] == PRESETS[1][1]:
+                times.setdefault(r["scene"], []).append(r["cpu_ms"])
+    return {sc: median(v) for sc, v in times.items()}
+
+
+def own_bias_by_steps(path):
+    """From a full run's sweep (standard view, 1x radius, 320x180): the mean over scenes of a visibility
+    configuration's bias minus the depth-only limit's, by steps per direction, at full and half resolution."""
+    rows = [r for r in load(path) if r["width"] == 320 and r["view"] == "standard" and r["radius_scale"] == 1.0]
+    limit = {r["scene"]: r["bias"] for r in rows if r["kind"] == "limit"}
+    lines = ["| steps per direction (8 directions, no blur) | bias against the limit, full resolution | "
+             "half resolution |", "|---:|---:|---:|"]
+    for steps in (4, 8, 16):
+        cells = []
+        for res in ("", ", half res"):
+            v = [r["bias"] - limit[r["scene"]] for r in rows if r["config"] == "visibility 8x%d%s, blur none" %
+                 (steps, res)]
+            cells.append(signed(mean(v)) if v else "-")
+        lines.append("| %d | %s |" % (steps, " | ".join(cells)))
+    return "\n".join(lines)
 
 
 def experiments_table(d):
@@ -784,15 +814,13 @@ def experiments_table(d):
         base = base or medium
         change = sorted((r["psnr"] - base[k]["psnr"], case_name(r)) for k, r in medium.items())
         cases = "-" if medium is base else "%+.2f dB (%s), %+.2f dB (%s)" % (change[0] + change[-1])
-        times = {}
-        for path in glob.glob("%s/time/%s_[0-9].csv" % (d, name)):
-            for r in load(path):
-                if r["config"] == PRESETS[1][1]:
-                    times.setdefault(r["scene"], []).append(r["cpu_ms"])
-        t = {sc: median(v) for sc, v in times.items()}
+        # An A/B of its own (DIR/time/NAME/, with its own shipped runs) where the build was timed apart.
+        own = os.path.isdir("%s/time/%s" % (d, name))
+        t = default_cpu_medians("%s/time/%s" % (d, name) if own else d + "/time", name)
         base_time = base_time or t
+        against = default_cpu_medians("%s/time/%s" % (d, name), "shipped") if own else base_time
         time = "-" if not t else ("%.2f ms" % median(t.values()) if t is base_time else
-                                  "%+.1f%%" % (100 * median(t[sc] / base_time[sc] - 1 for sc in t)))
+                                  "%+.1f%%" % (100 * median(t[sc] / against[sc] - 1 for sc in t)))
         lines.append("| %s | %s | %s | %s | %s | %s |" % (
             label, " | ".join(psnr), cases, signed(mean(r["bias"] for r in medium.values())),
             signed(mean(r["bias"] for r in ultra)), time))
@@ -801,23 +829,32 @@ def experiments_table(d):
 
 def experiments_summary(d):
     """The figures the text on the experiments quotes, from the same quick runs as experiments_table."""
+    key = lambda r: (r["scene"], r["view"], r["radius_scale"])
     def run(name):
         rows = [r for r in load("%s/quick/%s.csv" % (d, name)) if r["width"] == 320 and r["psnr"] == r["psnr"]]
         return {label: (mean(r["psnr"] for r in rows if r["config"] == c), mean(r["bias"] for r in rows
                                                                                if r["config"] == c))
                 for label, c, _ in PRESETS}
     base, f1, half = run("shipped"), run("crossing_previous_plane_f1"), run("crossing_previous_plane_f0.5")
+    checked = run("step_at_the_crossing")
+    rows = [r for r in load("%s/quick/shipped.csv" % d) if r["width"] == 320]
+    limit = {key(r): r["bias"] for r in rows if r["kind"] == "limit"}
+    own = mean(r["bias"] - limit[key(r)] for r in rows if r["config"] == PRESETS[1][1] and r["psnr"] == r["psnr"])
     bitmask, blur = run("visibility_bitmask_slices"), run("medium_blur_radius_2")
     less = lambda new, old, p: "%.0f%%" % (100 * (1 - new[p][1] / old[p][1]))
     gain = lambda new, p: "%+.2f dB" % (new[p][0] - base[p][0])
     deficits = [base[p][0] - bitmask[p][0] for p, _, _ in PRESETS]
     return ("- Crossing the previous step's plane, f = 1: MEDIUM's mean bias %s -> %s (%s less), ULTRA's %s -> %s "
-            "(%s less). At f = 0.5: MEDIUM %s, HIGH %s, ULTRA %s; MEDIUM's mean bias %s less.\n"
+            "(%s less). At f = 0.5: MEDIUM %s, HIGH %s, ULTRA %s; MEDIUM's mean bias %s less. Checked by a step "
+            "just past the crossing: MEDIUM's mean bias %s (%s less).\n"
+            "- MEDIUM's mean bias against V_R, %s, is the limit's own, %s, and MEDIUM's against the limit, %s.\n"
             "- The bitmask (2 slices) reads %.2f to %.2f dB below the shipped march over the four presets.\n"
             "- MEDIUM with the depth-aware blur at radius 2: %s, which leaves it %.2f dB below HIGH." % (
                 signed(base["MEDIUM"][1]), signed(f1["MEDIUM"][1]), less(f1, base, "MEDIUM"),
                 signed(base["ULTRA"][1]), signed(f1["ULTRA"][1]), less(f1, base, "ULTRA"),
                 gain(half, "MEDIUM"), gain(half, "HIGH"), gain(half, "ULTRA"), less(half, base, "MEDIUM"),
+                signed(checked["MEDIUM"][1]), less(checked, base, "MEDIUM"), signed(base["MEDIUM"][1]),
+                signed(mean(limit.values())), signed(own),
                 min(deficits), max(deficits), gain(blur, "MEDIUM"), blur["HIGH"][0] - blur["MEDIUM"][0]))
 
 
