@@ -18,9 +18,9 @@ of the shaders' loops testing at the top and at the end), the upsample tables, f
 masks' depth tests, standard and close-up views) the sky-test table and, from cell_pattern/ (a quick run's cell_pattern.csv), the shared-pattern
 table, and from grid_study/ (scripts/grid-study.sh, and the A/B and quick runs of the plane-fit upsample) the
 grid-study tables, and from experiments/ (quick runs of builds that each add one patch, patches/, and CPU-time
-A/Bs of some of them) the table of changes tried and not shipped. The preset-rule lines compare presets.txt's picks with the shipped table. Time is process CPU
-time (ssao-bench, LP_NUM_THREADS=1). Every number in those blocks comes from the run; nothing is
-typed by hand.
+A/Bs of some of them) the table of changes tried and not shipped. The preset-rule lines compare presets.txt's
+picks with the shipped table. Time is process CPU time (ssao-bench, LP_NUM_THREADS=1). Every number in those
+blocks comes from the run; nothing is typed by hand.
 
 usage: scripts/bench_readme.py [DIR] [DOC...]   (default: README.md docs/*.md)
 """
