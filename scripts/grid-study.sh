@@ -25,8 +25,8 @@ done
 mkdir -p "$out"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-scenes="assets/models/spot-on-ground.glb assets/models/teapot-on-ground.glb assets/scenes/corner.gltf
-        assets/scenes/overhang.gltf assets/scenes/creases.gltf assets/scenes/clutter.gltf"
+. scripts/bench-scenes.sh
+scenes=$bench_scenes
 configs="DEFAULT:
 DEFAULT converged:--accumulate 64 --frame-index 1
 full resolution converged:--resolution full --accumulate 64 --frame-index 1

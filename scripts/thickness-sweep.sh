@@ -11,8 +11,8 @@ cd "$(dirname "$0")/.."
 out=${1:-docs/bench}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-scenes="assets/models/spot-on-ground.glb assets/models/teapot-on-ground.glb assets/scenes/corner.gltf
-        assets/scenes/overhang.gltf assets/scenes/creases.gltf assets/scenes/clutter.gltf"
+. scripts/bench-scenes.sh
+scenes=$bench_scenes
 configs="8x4-half:--steps 4
 8x8-half:--steps 8
 8x16-half:--steps 16
