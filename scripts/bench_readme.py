@@ -18,7 +18,7 @@ of the shaders' loops testing at the top and at the end), the upsample tables, f
 masks' depth tests, standard and close-up views) the sky-test table and, from cell_pattern/ (a quick run's cell_pattern.csv), the shared-pattern
 table, and from grid_study/ (scripts/grid-study.sh, and the A/B and quick runs of the plane-fit upsample) the
 grid-study tables, from crease_study/ (scripts/crease-study.sh, scripts/edge-pass-cost.sh, and grid-study runs of
-the upsample variants) the tables of where the grid loses, and from experiments/ (quick runs of builds that each add one patch, patches/, and CPU-time
+variant builds) the tables of where the grid loses, and from experiments/ (quick runs of builds that each add one patch, patches/, and CPU-time
 A/Bs of some of them) the table of changes tried and not shipped. The preset-rule lines compare presets.txt's
 picks with the shipped table. Time is process CPU time (ssao-bench, LP_NUM_THREADS=1). Every number in those
 blocks comes from the run; nothing is typed by hand.
@@ -39,10 +39,15 @@ PRESETS = [("LOW", "preset low", "1.0 preset low"), ("MEDIUM", "preset medium (=
            ("HIGH", "preset high", "1.0 preset high"), ("ULTRA", "preset ultra", "1.0 preset ultra")]
 
 
-CREASE_UPSAMPLE = [
-    ("upsample_darkest_tap_at_concave", "the darkest tap where the pixel stands in front of a tap's plane"),
-    ("upsample_fit_without_the_other_face", "the fit without the taps whose plane the pixel stands in front of"),
-    ("upsample_nearest_picks_at_concave", "the nearest picks (the tent to the fourth power) there"),
+CREASE_VARIANTS = [
+    ("upsample_darkest_tap_at_concave", "The upsample taking the darkest tap where the pixel stands in front of a tap's "
+                                        "plane"),
+    ("upsample_fit_without_the_other_face", "The upsample's fit without the taps whose plane the pixel stands in front "
+                                            "of"),
+    ("upsample_nearest_picks_at_concave", "The upsample weighting the nearest picks there (the tent to the fourth "
+                                          "power)"),
+    ("pick_moving_with_the_frame", "The picked pixel moving over its block's four pixels with the frame index (a "
+                                   "checkerboard in each frame)"),
 ]
 
 
@@ -95,8 +100,8 @@ def edge_pass_cost_table(path):
 
 
 def crease_study_summary(d):
-    """The crease study's findings in figures (DIR/crease_study.csv, DIR/edge_pass_cost.csv, and the upsample
-    variants' grid-study runs in DIR/upsample/ against the shipped one, grid_study/grid_study.csv)."""
+    """The crease study's findings in figures (DIR/crease_study.csv, DIR/edge_pass_cost.csv, and the variant
+    builds' grid-study runs in DIR/variants/ against the shipped one, grid_study/grid_study.csv)."""
     rows = load(d + "/crease_study.csv")
 
     def span(k):
@@ -134,8 +139,8 @@ def crease_study_summary(d):
                        min(discard), max(discard), "; ".join(masked), min(test), max(test)))
     base = {(r["scene"], r["config"]): number(r, "psnr_vs_vr") for r in csv.DictReader(
         open(os.path.join(os.path.dirname(d), "grid_study", "grid_study.csv")))}
-    for name, label in CREASE_UPSAMPLE:
-        p = "%s/upsample/%s/grid_study.csv" % (d, name)
+    for name, label in CREASE_VARIANTS:
+        p = "%s/variants/%s/grid_study.csv" % (d, name)
         if not os.path.exists(p):
             continue
         run = {(r["scene"], r["config"]): number(r, "psnr_vs_vr") for r in csv.DictReader(open(p))}
@@ -144,7 +149,7 @@ def crease_study_summary(d):
             g = [run[k] - base[k] for k in run if k[1] == config]
             parts.append("%s %s" % (what, "unchanged" if max(abs(x) for x in g) < 0.005 else
                                     "%+.2f dB (%+.2f to %+.2f)" % (mean(g), min(g), max(g))))
-        out.append("- Upsample, %s: %s against V_R, on the mean over the scenes." % (label, ", ".join(parts)))
+        out.append("- %s: %s against V_R, on the mean over the scenes." % (label, ", ".join(parts)))
     return "\n".join(out)
 
 
