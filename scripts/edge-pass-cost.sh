@@ -15,17 +15,17 @@
 # of the grid and visibility passes in the last frame. Writes
 # OUT/edge_pass_cost.csv (default docs/bench/crease_study).
 set -euo pipefail
-cd "$(dirname "$0")/.."
 [ $# -ge 2 ] || { echo "usage: scripts/edge-pass-cost.sh DISCARD_PLUGIN MASK_PLUGIN [--out DIR]" >&2; exit 2; }
-edge=$1 mask=$2; shift 2
+for p in "$1" "$2"; do [ -f "$p" ] || { echo "edge-pass-cost: no plugin at '$p'" >&2; exit 2; }; done
+edge=$(realpath "$1") mask=$(realpath "$2"); shift 2
 out=docs/bench/crease_study
 while [ $# -gt 0 ]; do
   case "$1" in
-    --out) out=$2; shift 2 ;;
+    --out) out=$(realpath -m "$2"); shift 2 ;;
     *) echo "edge-pass-cost: unknown argument '$1' (--out DIR)" >&2; exit 2 ;;
   esac
 done
-for p in "$edge" "$mask"; do [ -f "$p" ] || { echo "edge-pass-cost: no plugin at '$p'" >&2; exit 2; }; done
+cd "$(dirname "$0")/.."
 mkdir -p "$out"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
