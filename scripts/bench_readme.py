@@ -48,6 +48,8 @@ CREASE_VARIANTS = [
                                           "power)"),
     ("pick_moving_with_the_frame", "The picked pixel moving over its block's four pixels with the frame index (a "
                                    "checkerboard in each frame)"),
+    ("pick_swapped_with_the_frame", "The picked pixel swapping between its block's two diagonal corners with the "
+                                    "frame index"),
     ("pick_next_to_a_concave_crease", "The picked pixel moved to the block's row or column next to a concave "
                                       "crease"),
 ]
