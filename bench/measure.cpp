@@ -207,9 +207,29 @@ ssao_inputs plugin_inputs(const gbuffer::GBuffer& gbuf, const glm::mat4& proj, b
 
 // The plugin's configuration c: its row (settings and errors from one frame)
 // and how to time it (the context, inputs and output must outlive the timing).
+// The plugin's AO at this case's size: one frame at the inputs' frame index,
+// or (average_frames > 1) the mean over frame indices 1..average_frames.
+std::vector<float> plugin_ao(GladGLContext& gl, const ssao_api& api, ssao_context* ctx, const ssao_inputs& in,
+                             ssao_output& out, const Case& k, int average_frames) {
+    if (average_frames <= 1)
+        return gl_util::read_texture(gl, out.texture, out.origin[0], out.origin[1], k.width, k.height, 1);
+    std::vector<float> sum;
+    ssao_inputs frame = in;
+    for (int i = 1; i <= average_frames; ++i) {
+        frame.frame_index = static_cast<uint32_t>(i);
+        if (api.execute(ctx, &frame, &out) != SSAO_OK) throw std::runtime_error(api.last_error(ctx));
+        const std::vector<float> ao = gl_util::read_texture(gl, out.texture, out.origin[0], out.origin[1], k.width,
+                                                            k.height, 1);
+        if (sum.empty()) sum.assign(ao.size(), 0.0f);
+        for (size_t j = 0; j < ao.size(); ++j) sum[j] += ao[j];
+    }
+    for (float& v : sum) v /= static_cast<float>(average_frames);
+    return sum;
+}
+
 Timed plugin_pass(GladGLContext& gl, const ssao_api& api, ssao_context* ctx, const ssao_inputs& in, ssao_output& out,
-                  const Config& c, const Case& k, const Truth* truth, float max_step_texels, std::vector<Row>& rows) {
-    const ssao_settings s = settings_for(c, api, k.radius, max_step_texels);
+                  const Config& c, const Case& k, const Truth* truth, const Options& o, std::vector<Row>& rows) {
+    const ssao_settings s = settings_for(c, api, k.radius, o.max_step_texels);
     if (api.set_settings(ctx, &s) != SSAO_OK) throw std::runtime_error(c.name + ": " + api.last_error(ctx));
     if (api.execute(ctx, &in, &out) != SSAO_OK) throw std::runtime_error(api.last_error(ctx));
     gl.Finish();
@@ -218,8 +238,8 @@ Timed plugin_pass(GladGLContext& gl, const ssao_api& api, ssao_context* ctx, con
     row.family = c.family;
     row.s.size = sizeof row.s;
     api.get_settings(ctx, &row.s);
-    if (truth)
-        fill_errors(row, gl_util::read_texture(gl, out.texture, out.origin[0], out.origin[1], k.width, k.height, 1), *truth);
+    row.frames_averaged = o.average_frames;
+    if (truth) fill_errors(row, plugin_ao(gl, api, ctx, in, out, k, o.average_frames), *truth);
     rows.push_back(row);
     Timed t;
     t.prepare = [&api, ctx, s, name = c.name] {
@@ -275,7 +295,7 @@ void measure_case(GladGLContext& gl, const ssao_api& api, const Options& o, int 
 
     const size_t first = rows.size();
     std::vector<Timed> passes;
-    for (const Config& c : configs) passes.push_back(plugin_pass(gl, api, ctx, vs.in, out, c, k, truth, o.max_step_texels, rows));
+    for (const Config& c : configs) passes.push_back(plugin_pass(gl, api, ctx, vs.in, out, c, k, truth, o, rows));
     // The chapter's pass, same process, same G-buffer normals, same clocks.
     tb.run(vs.gbuf.normal_texture(), vs.proj);
     gl.Finish();
@@ -336,7 +356,8 @@ void measure_scene(const std::string& path, const Options& o, int scale, const s
         gbuffer::GBuffer gbuf(gl, desc, sc.mesh);
         const glm::mat4 view = camera::view_matrix(cam), proj = camera::projection_matrix(cam, aspect);
         gbuf.render(view, proj);
-        const ViewSetup vs{sc, gbuf, view, proj, plugin_inputs(gbuf, proj, o.normals_from_depth)};
+        ViewSetup vs{sc, gbuf, view, proj, plugin_inputs(gbuf, proj, o.normals_from_depth)};
+        if (o.average_frames > 1) vs.in.frame_index = 1;  // timed as a TAA host runs it
         for (float rs : scales) {
             Case k;
             k.scene = name;

@@ -56,6 +56,9 @@ std::string help_text() {
            "                         each configuration's step count fixed)\n"
            "  --normals gbuffer|depth  the plugin's normals: the G-buffer's, or depth: normal_texture = 0, the\n"
            "                         plugin rebuilds them from depth (default gbuffer)\n"
+           "  --average-frames N     the plugin's errors from its mean AO over frame indices 1..N, what a TAA\n"
+           "                         host converges to, 1..1024 (default 1: one frame, frame index 0); its\n"
+           "                         timing then runs frame index 1\n"
            "  --allow-outside-files  let the scenes' buffer URIs name files outside their folders\n"
            "                         (absolute paths, '..', symbolic links leading out); refused by default\n"
            "  --help, -h / --version this text / the version\n"
@@ -168,6 +171,7 @@ Parse parse(int argc, char** argv, Options& o, std::string& error) {
              flags::check_normal_float(f, v, x);
              o.max_step_texels = static_cast<float>(x);
          }},
+        {"--average-frames", whole(o.average_frames, 1, 1024)},
         {"--normals", [&](const std::string& f, const std::string& v) {
              if (v != "gbuffer" && v != "depth") flags::fail(f + " expects one of gbuffer|depth, got " + flags::quoted(v));
              o.normals_from_depth = v == "depth";

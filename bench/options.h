@@ -32,6 +32,11 @@ struct Options {
     std::string plugin;                      // empty: plugin::Library::search_order()
     bool normals_from_depth = false;         // --normals depth: every configuration gets normal_texture = 0
     float max_step_texels = 0.0f;            // --max-step-texels: every configuration's; 0 = off
+    // --average-frames N > 1: the plugin's errors from the mean of its AO over
+    // frame indices 1..N (rotation and jitter move with it: what a TAA host
+    // converges to), and its timing with frame index 1 (so with the variants
+    // a moving index runs); 1: one frame at frame index 0.
+    int average_frames = 1;
     bool allow_outside_files = false;        // scenes' buffer URIs may leave their folders (host/scene_limits.h)
     std::string lp_num_threads;              // LP_NUM_THREADS the run had (set by main unless the user set it)
 };

@@ -204,7 +204,8 @@ void write_csv(const Options& o, const std::vector<Row>& rows) {
            "rotation,radius,resolution,distribution,"
            "cpu_ms,cpu_min_ms,cpu_max_ms,rounds,x_textbook_cpu,x_floor_cpu,"
            "median_ms,p10_ms,p90_ms,x_textbook,wall_ms,x_textbook_wall,x_floor_wall,rmse,psnr,bias,rmse_vs_limit,"
-           "psnr_vs_limit,rmse_interior,rmse_silhouette,rmse_border,reference_noise_rms,cell_spread,bias_occluded\n";
+           "psnr_vs_limit,rmse_interior,rmse_silhouette,rmse_border,reference_noise_rms,cell_spread,bias_occluded,"
+           "frames_averaged\n";
     for (const Row& r : rows) {
         const bool plugin = r.kind == Row::Kind::plugin;
         csv << r.scene << "," << view_name(r.view) << "," << r.radius_scale << "," << r.radius << ",\"" << r.config
@@ -226,9 +227,10 @@ void write_csv(const Options& o, const std::vector<Row>& rows) {
             csv << fmt(r.all.rmse, 5) << "," << fmt(r.all.psnr, 3) << "," << fmt(r.all.mean_error, 5) << ","
                 << fmt(r.vs_limit.rmse, 5) << "," << fmt(r.vs_limit.psnr, 3) << "," << fmt(r.interior.rmse, 5) << ","
                 << fmt(r.silhouette.rmse, 5) << "," << fmt(r.border.rmse, 5) << "," << fmt(r.all.noise_rms, 5) << ","
-                << fmt(r.cell_spread, 5) << "," << fmt(r.bias_occluded, 5) << "\n";
+                << fmt(r.cell_spread, 5) << "," << fmt(r.bias_occluded, 5) << ","
+                << (plugin ? std::to_string(r.frames_averaged) : "") << "\n";
         else
-            csv << ",,,,,,,,,,\n";
+            csv << ",,,,,,,,,,,\n";
     }
 }
 
@@ -495,8 +497,12 @@ void write_report(const Options& o, const std::vector<Row>& rows) {
        << "glFinish) with LP_NUM_THREADS=" << o.lp_num_threads << ", configurations interleaved over " << o.rounds
        << " rounds of " << o.warmup << " untimed and " << o.frames << " timed frames (1/k of each at k x the base size); a figure is the median over "
        << "rounds of each round's mean (spread: lowest-highest round). GPU timers (median over frames) and wall "
-       << "clock beside it; every ratio uses CPU time.\n\n"
-       << "The sweep, standard view at each scene's radius, means over " << scenes.size() << " scenes:\n\n"
+       << "clock beside it; every ratio uses CPU time.\n\n";
+    if (o.average_frames > 1)
+        md << "The plugin's errors are those of its mean AO over frame indices 1.." << o.average_frames
+           << " (what a TAA host converges to), its timing that of frame index 1; the limit's and the textbook "
+           << "pass's are one frame's.\n\n";
+    md << "The sweep, standard view at each scene's radius, means over " << scenes.size() << " scenes:\n\n"
        << summary_table(sum) << "\nDepth-only limit, PSNR against V_R per scene (standard view, 1x radius):";
     for (const Summary& s : sum)
         if (s.kind == Row::Kind::limit)

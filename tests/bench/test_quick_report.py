@@ -93,6 +93,24 @@ with tempfile.TemporaryDirectory() as tmp:
         cells = [num(x, "cell_spread") for x in rows if x["config"] == c]
         check(abs(sum(cells) / len(cells) - spread) <= 1e-4, "%s: mean cell spread = bench.csv's mean" % c)
 
+    # --average-frames 8: the plugin's errors from its mean AO over frame indices 1..8, which averages its noise
+    # away, so every preset reads closer to the limit than in one frame (the run above); the limit and the
+    # textbook pass are one frame's, the same figures.
+    single = {r["config"]: r for r in rows if r["view"] == "standard" and float(r["radius_scale"]) == 1.0}
+    check(all(r["frames_averaged"] == ("1" if r["kind"] == "plugin" else "") for r in rows),
+          "one frame: frames_averaged 1 on the plugin's rows, empty on the others")
+    avg, md_avg = run(os.path.join(tmp, "avg"), "--views", "standard", "--radii", "1", "--average-frames", "8")
+    check(len(avg) == len(CONFIGS), "--average-frames: 7 rows, got %d" % len(avg))
+    for r in avg:
+        c = r["config"]
+        check(r["frames_averaged"] == ("8" if r["kind"] == "plugin" else ""), "%s: frames_averaged %r" % (c, r["frames_averaged"]))
+        if r["kind"] == "plugin":
+            gain = num(r, "psnr_vs_limit") - num(single[c], "psnr_vs_limit")
+            check(gain > 0.05, "%s: 8 frame indices averaged read closer to the limit than one frame (%+.3f dB)" % (c, gain))
+        elif r["kind"] in ("limit", "textbook"):
+            check(r["psnr"] == single[c]["psnr"], "%s: one frame's PSNR either way" % c)
+    check("frame indices 1..8" in md_avg, "bench.md states the frames averaged")
+
     # The user's LP_NUM_THREADS is kept and reported; --views and --radii pick the cases.
     rows, md = run(os.path.join(tmp, "one"), "--views", "close-up", "--radii", "2", env={"LP_NUM_THREADS": "2"})
     check(len(rows) == len(CONFIGS), "one view, one radius: 7 rows, got %d" % len(rows))
@@ -123,10 +141,11 @@ with tempfile.TemporaryDirectory() as tmp:
           "--time-only: GPU ratio median and worst over the views %s, got %r" % (gpu, line))
     check(not os.path.exists(os.path.join(tmp, "time", "presets.txt")), "--time-only: no preset rule without errors")
 
-    # A view it does not know: one line, exit 2.
-    p = subprocess.run([bench, "--views", "sideways", scene], capture_output=True, text=True)
-    check(p.returncode == 2, "--views sideways exits 2, got %d" % p.returncode)
-    check(len(p.stderr.strip().splitlines()) == 1 and "--views" in p.stderr, "one-line error naming --views: %r" % p.stderr)
+    # A view it does not know, or no frame to average: one line, exit 2.
+    for flag, value in (("--views", "sideways"), ("--average-frames", "0")):
+        p = subprocess.run([bench, flag, value, scene], capture_output=True, text=True)
+        check(p.returncode == 2, "%s %s exits 2, got %d" % (flag, value, p.returncode))
+        check(len(p.stderr.strip().splitlines()) == 1 and flag in p.stderr, "one-line error naming %s: %r" % (flag, p.stderr))
 
 for f in failures:
     print("FAIL:", f)
