@@ -59,6 +59,10 @@ SsaoFrame make_frame_block(const ssao_settings& s, const AnalysedInputs& in) {
         const double turn = off.x * 6.283185307179586;
         c.frame_rotation = {{static_cast<float>(std::cos(turn)), static_cast<float>(std::sin(turn))}};
         c.frame_step_offset = static_cast<float>(off.y);
+        // Below full resolution the picked pixel of each block swaps to the
+        // other diagonal corner every other frame, so that a host averaging
+        // frames sees both (common.glsl grid_pixel).
+        c.frame_pick_swap = static_cast<int32_t>(in.frame_index & 1u);
     }
     const ViewFromZ vz = view_from_z(proj, in.viewport[2], in.viewport[3]);
     c.view_mul_z = {{static_cast<float>(vz.mul_z[0][0]), static_cast<float>(vz.mul_z[0][1]),

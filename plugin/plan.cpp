@@ -101,6 +101,11 @@ void add_sky_tests(Builder& b, FramePlan& plan, const AnalysedInputs& in, const 
 // Variant bits of a pass that reads the host's depth and normal textures.
 uint32_t host_input_variant(const AnalysedInputs& in) { return in.multisample ? variant::multisample : 0u; }
 
+// Variant bit of every pass that maps grid texels to the pixels they
+// picked (grid_pixel, common.glsl): with a moving frame index the picks swap
+// corners every other frame, and all passes of a frame must agree on them.
+uint32_t grid_pick_variant(const AnalysedInputs& in) { return in.frame_index != 0 ? variant::frame_noise : 0u; }
+
 // Variant bits of the sampling pass's optional features: each only
 // when asked for, so a plan without them compiles and runs none of their code.
 uint32_t sampling_feature_variant(const ssao_settings& s, const AnalysedInputs& in) {
@@ -137,7 +142,8 @@ GridTextures add_grid_pass(Builder& b, const AnalysedInputs& in, int scale, cons
     down.inputs[SSAO_UNIT_DEPTH] = TexRef::of(Source::depth);
     if (!in.normals_from_depth) down.inputs[SSAO_UNIT_NORMAL] = TexRef::of(Source::normal);
     down.scale = scale;
-    down.variant = host_input_variant(in) | (in.normals_from_depth ? variant::normals_from_depth : 0u);
+    down.variant = host_input_variant(in) | (in.normals_from_depth ? variant::normals_from_depth : 0u) |
+                   grid_pick_variant(in);
     down.sample_index = in.sample_index;
     return g;
 }
@@ -195,6 +201,7 @@ void plan_sampling(Builder& b, const ssao_settings& s, const AnalysedInputs& in,
         bx.direction[0] = 1;
         bx.depth_aware = reduced;
         bx.scale = scale;
+        bx.variant = grid_pick_variant(in);
         low_ao = x_target;
         if (separable) {
             // Below full resolution back into the estimator's texture: its
@@ -205,6 +212,7 @@ void plan_sampling(Builder& b, const ssao_settings& s, const AnalysedInputs& in,
             by.direction[1] = 1;
             by.depth_aware = reduced;
             by.scale = scale;
+            by.variant = grid_pick_variant(in);
             low_ao = y_target;
         }
     }
@@ -220,7 +228,8 @@ void plan_sampling(Builder& b, const ssao_settings& s, const AnalysedInputs& in,
     // reads a soft gradient at the wrong place, a diagonal stripe every two
     // blocks. A plane through the taps reads it at the pixel; for one frame
     // the noise hides the stripes and the fit would buy nothing for its time.
-    up.variant = host_input_variant(in) | (in.frame_index != 0 ? variant::upsample_plane_fit : 0u);
+    up.variant = host_input_variant(in) | grid_pick_variant(in) |
+                 (in.frame_index != 0 ? variant::upsample_plane_fit : 0u);
     up.sample_index = in.sample_index;
 }
 

@@ -66,7 +66,8 @@ constexpr uint32_t multisample = 1u << 1;         // MULTISAMPLE: the host's dep
 constexpr uint32_t normals_from_depth = 1u << 2;  // NORMALS_FROM_DEPTH: the grid pass rebuilds normals from depth
 constexpr uint32_t fade = 1u << 3;                // FADE: AO fades to 1 between fade_start and fade_end
 constexpr uint32_t radius_pixels = 1u << 4;       // RADIUS_PIXELS: per-pixel radius from radius_pixels
-constexpr uint32_t frame_noise = 1u << 5;         // FRAME_NOISE: rotation and jitter move with frame_index
+constexpr uint32_t frame_noise = 1u << 5;         // FRAME_NOISE: rotation and jitter move with frame_index, and
+                                                  // below full resolution the grid's picked pixels swap corners
 constexpr uint32_t blur_weights = 1u << 6;        // BLUR_WEIGHTS: the blur writes its accepted weight share
 constexpr uint32_t upsample_nearest = 1u << 7;    // UPSAMPLE_NEAREST: the upsample takes the pixel's own grid texel,
                                                   // no depth weights (debug views RAW_AO and BLUR_WEIGHTS)

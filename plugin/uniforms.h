@@ -33,7 +33,7 @@ SSAO_AT(SsaoFrame, normal_packing, 228);
 SSAO_AT(SsaoFrame, blur_radius, 232);
 SSAO_AT(SsaoFrame, blur_kind, 236);
 SSAO_AT(SsaoFrame, orthographic, 240);
-SSAO_AT(SsaoFrame, pad4, 244);
+SSAO_AT(SsaoFrame, frame_pick_swap, 244);
 SSAO_AT(SsaoFrame, ndc_per_depth, 248);
 SSAO_AT(SsaoFrame, sky_depth, 252);
 SSAO_AT(SsaoFrame, unorm_depth_step, 256);

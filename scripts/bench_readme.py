@@ -105,7 +105,7 @@ def edge_pass_cost_table(path):
 
 def crease_study_summary(d):
     """The crease study's findings in figures (DIR/crease_study.csv, DIR/edge_pass_cost.csv, and the variant
-    builds' grid-study runs in DIR/variants/ against the shipped one, grid_study/grid_study.csv)."""
+    builds' grid-study runs in DIR/variants/ against their baseline's, DIR/variants/baseline/)."""
     rows = load(d + "/crease_study.csv")
 
     def span(k):
@@ -141,8 +141,10 @@ def crease_study_summary(d):
                    "4x4 blocks skipped by the depth test, with what it gave in the study: %s. The test of the normals "
                    "that made the mask added %.1f to %.1f ms to the full-resolution grid pass." % (
                        min(discard), max(discard), "; ".join(masked), min(test), max(test)))
+    # The variants were built on the library before the picks swapped with the frame index: their baseline
+    # is that build's grid-study run.
     base = {(r["scene"], r["config"]): number(r, "psnr_vs_vr") for r in csv.DictReader(
-        open(os.path.join(os.path.dirname(d), "grid_study", "grid_study.csv")))}
+        open(d + "/variants/baseline/grid_study.csv"))}
     for name, label in CREASE_VARIANTS:
         p = "%s/variants/%s/grid_study.csv" % (d, name)
         if not os.path.exists(p):
@@ -155,6 +157,33 @@ def crease_study_summary(d):
                                     "%+.2f dB (%+.2f to %+.2f)" % (mean(g), min(g), max(g))))
         out.append("- %s: %s against V_R, on the mean over the scenes." % (label, ", ".join(parts)))
     return "\n".join(out)
+
+
+def taa_swap_lines(d):
+    """What the picks swapping corners with the frame index buy a TAA host over every case: two quick runs of
+    ssao-bench --average-frames 16 (DIR/fixed_picks.csv, the build before; DIR/swapped_picks.csv, the shipped
+    one), per preset the mean PSNR against V_R and the cases it moves by more than 0.05 dB."""
+    def psnr(path):
+        out = {}
+        for r in load(path):
+            if r["kind"] == "plugin" and r["psnr"] == r["psnr"]:
+                out.setdefault(r["config"], {})[case_name(r)] = r["psnr"]
+        return out
+    before, after = psnr(d + "/fixed_picks.csv"), psnr(d + "/swapped_picks.csv")
+    lines = []
+    for label, name, _ in PRESETS:
+        a, b = before[name], after[name]
+        g = {k: b[k] - a[k] for k in a}
+        if max(abs(x) for x in g.values()) < 0.005:
+            lines.append("- %s: unchanged on every case (%s dB)." % (label, f(mean(b.values()))))
+            continue
+        worst = min(g, key=g.get)
+        best = max(g, key=g.get)
+        lines.append("- %s: %s -> %s dB (%+.2f); better on %d of %d cases, worse on %d (worst %+.2f dB, %s; best %+.2f "
+                     "dB, %s)." % (label, f(mean(a.values())), f(mean(b.values())), mean(g.values()),
+                                   sum(x > 0.05 for x in g.values()), len(g), sum(x < -0.05 for x in g.values()),
+                                   g[worst], worst, g[best], best))
+    return "\n".join(lines)
 
 
 def number(r, k):
@@ -364,6 +393,8 @@ def main():
     if os.path.exists(d + "/crease_study/crease_study.csv"):
         blocks["crease_study"] = crease_study_table(d + "/crease_study/crease_study.csv")
         blocks["crease_study_summary"] = crease_study_summary(d + "/crease_study")
+    if os.path.exists(d + "/crease_study/taa/swapped_picks.csv"):
+        blocks["taa_swap"] = taa_swap_lines(d + "/crease_study/taa")
     if os.path.exists(d + "/crease_study/edge_pass_cost.csv"):
         blocks["edge_pass_cost"] = edge_pass_cost_table(d + "/crease_study/edge_pass_cost.csv")
     if os.path.exists(d + "/grid_study/plane_fit/llvmpipe/old_1.csv"):
@@ -820,7 +851,8 @@ def grid_study_summary(d):
     single, conv, full = v("DEFAULT"), v("DEFAULT converged"), v("full resolution converged")
     s32, s32_full = v("32 steps converged"), v("32 steps full resolution converged")
     noise, grid, steps = gain(single, conv), gain(conv, full), gain(conv, s32)
-    out = ["- Averaging 64 frame indices (with the plane-fit upsample a moving index selects): %+.1f dB on the mean "
+    out = ["- Averaging 64 frame indices (with what a moving index selects: the plane-fit upsample and the swapping "
+           "picks): %+.1f dB on the mean "
            "(%+.1f to %+.1f per scene)." % noise[:3],
            "- The same march, converged, at full resolution: another %+.1f dB on the mean (%+.1f to %+.1f per scene)."
            % grid[:3],

@@ -75,6 +75,7 @@ struct GridMap {
     float inv_scale;  // 1 / u_scale, exact for a power of two
     int pick;         // grid_pixel's offset into the block, before the checkerboard's
     int checker;      // 1 below full resolution: the checkerboard's offset mask
+    int swap;         // variant FRAME_NOISE: 1 in the frames whose checkerboard is swapped (grid_pixel)
 };
 
 GridMap grid_map() {
@@ -85,6 +86,11 @@ GridMap grid_map() {
     g.inv_scale = 1.0 / float(u_scale);
     g.checker = u_scale > 1 ? 1 : 0;
     g.pick = u_scale > 1 ? (u_scale >> 1) - 1 : 0;
+#ifdef SSAO_FRAME_NOISE
+    g.swap = consts.frame_pick_swap & g.checker;
+#else
+    g.swap = 0;
+#endif
     return g;
 }
 
@@ -92,10 +98,14 @@ GridMap grid_map() {
 // near the block's centre, alternating between two positions in a
 // checkerboard (half: offset (0,0) or (1,1) in the 2x2 block, by the parity
 // of t.x + t.y; quarter: (1,1) or (2,2) in the 4x4 block) so that a
-// one-pixel-wide feature is picked in every other block along it. Clamped
-// into the viewport for the partial blocks of odd sizes. At full
-// resolution: t itself.
-ivec2 grid_pixel(GridMap g, ivec2 t) { return min(t * g.scale + g.pick + ((t.x + t.y) & g.checker), g.last); }
+// one-pixel-wide feature is picked in every other block along it. Variant
+// FRAME_NOISE: every other frame the two positions swap, so that a host
+// averaging frames sees both corners of every block (docs/benchmark.md,
+// "Where the grid loses"). Clamped into the viewport for the partial blocks
+// of odd sizes. At full resolution: t itself.
+ivec2 grid_pixel(GridMap g, ivec2 t) {
+    return min(t * g.scale + g.pick + (((t.x + t.y) & g.checker) ^ g.swap), g.last);
+}
 ivec2 grid_pixel(ivec2 t) { return grid_pixel(grid_map(), t); }
 
 // The host's depth at grid texel t (read only where the kernel pass reads

@@ -95,7 +95,7 @@ SSAO_BLOCK(SsaoFrame) {
     SSAO_INT blur_radius;        /* 232: gaussian taps either side of the centre */
     SSAO_INT blur_kind;          /* 236: SSAO_SHADER_BLUR_* */
     SSAO_INT orthographic;       /* 240: flag: an orthographic projection */
-    SSAO_INT pad4;               /* 244 */
+    SSAO_INT frame_pick_swap;    /* 244: variant FRAME_NOISE: 1 in the frames whose grid picks the other diagonal corner */
     SSAO_FLOAT ndc_per_depth;    /* 248: d(ndc z)/d(depth): 2 for the [-1,1] clip range, 1 for [0,1] */
     SSAO_FLOAT sky_depth;        /* 252: the depth value of the far plane (cleared depth) */
     SSAO_FLOAT unorm_depth_step; /* 256: one step of a unorm depth format; 0 for a float format */

@@ -137,7 +137,7 @@ TEST_CASE("frame noise: the mean of 16 consecutive frame indices is >= 3.5x clos
     CHECK(fx.gl_errors().empty());
 }
 
-TEST_CASE("frame noise at half resolution: the mean over frame indices keeps no pattern of the picked pixels (the upsample's plane fit)") {
+TEST_CASE("frame noise at half resolution: the mean over frame indices keeps no pattern of the picked pixels (the upsample's plane fit, the picks swapping corners) and reads closer to full resolution's") {
     // Averaged over frame indices the grid's noise goes, and what the
     // upsample does with the grid's values shows: the picked pixels'
     // checkerboard puts a pixel's four taps on a skewed quad, so a weighted
@@ -199,8 +199,27 @@ TEST_CASE("frame noise at half resolution: the mean over frame indices keeps no 
     for (double m : means) pattern += (m - overall) * (m - overall) / 16.0;
     pattern = std::sqrt(pattern);
     MESSAGE("half - full over 256 frame indices: mean " << overall << ", pattern of the 4x4 positions (RMS) " << pattern);
-    // Measured 0.00042 with the plane fit and 0.00069 with the weighted mean
-    // (the frame index's variant bit taken out of the plan).
-    CHECK(pattern <= 0.00055);
+    // Every other frame the grid picks the other diagonal corner of each
+    // block (common.glsl grid_pixel), so the mean sees twice the pixels: its
+    // distance to the full-resolution mean, over every geometry pixel.
+    double sq = 0;
+    int pixels = 0;
+    for (int y = 0; y < H; ++y)
+        for (int x = 0; x < W; ++x) {
+            if (g.sky(x, y)) continue;
+            const size_t i = hc::at(x, y, W);
+            sq += (half[i] - full[i]) * (half[i] - full[i]);
+            ++pixels;
+        }
+    const double rms = std::sqrt(sq / pixels);
+    MESSAGE("half - full over 256 frame indices, every geometry pixel: RMS " << rms);
+    // Measured 0.0112 with the swap and 0.0123 with the picks fixed (the
+    // frame's swap taken out of constants.cpp).
+    CHECK(rms <= 0.0117);
+    // Measured 0.00027 with the plane fit and the picks swapping corners,
+    // 0.00040 with the plane fit and fixed picks, and 0.00069 with the
+    // weighted mean and fixed picks (the frame index's variant bit taken out
+    // of the plan).
+    CHECK(pattern <= 0.00034);
     CHECK(fx.gl_errors().empty());
 }

@@ -1,9 +1,11 @@
 // test_plan_fade.cpp - fade, radius in pixels and the frame index in the frame plan (no GL):
 // the sampling pass gets the FADE, RADIUS_PIXELS and FRAME_NOISE variant bits
 // only when asked for (fade_end > 0, radius_pixels > 0, frame_index != 0),
-// no other pass gets them and no pass is added, so a frame without them runs
-// exactly today's programs; a nonzero frame index also gives the upsample
-// (below full resolution) UPSAMPLE_PLANE_FIT; STEP_TEXELS and UNORM_DEPTH
+// no other pass gets the first two, and no pass is added, so a frame without
+// them runs exactly today's programs; a nonzero frame index also gives every
+// other pass that maps grid texels to their picked pixels (grid, blurs,
+// upsample) FRAME_NOISE, whose picks swap corners every other frame, and the
+// upsample (below full resolution) UPSAMPLE_PLANE_FIT; STEP_TEXELS and UNORM_DEPTH
 // follow their settings and inputs; and frame_noise_offsets walks the R2
 // sequence.
 #include "kernel.h"
@@ -68,9 +70,23 @@ TEST_CASE("plan: fade, radius in pixels and frame noise are sampling-pass varian
         CHECK(noise.ao == variant::frame_noise);
         const Bits all = bits_of(plan_frame(resolved(1, 2, 3, res), inputs(0xffffffffu)));
         CHECK(all.ao == kFeatureBits);
-        for (const Bits& b : {fade, from_camera, px, noise, all}) {
-            CHECK(b.others == 0u);         // no other pass compiles a variant for them
-            CHECK(b.passes == off.passes);  // and none is added
+        for (const Bits& b : {fade, from_camera, px}) CHECK(b.others == 0u);  // no other pass compiles them
+        // A moving frame index swaps the grid's picks: the other passes that
+        // map grid texels to pixels must agree with the sampling pass on them.
+        for (const Bits& b : {noise, all}) CHECK(b.others == variant::frame_noise);
+        for (const Bits& b : {fade, from_camera, px, noise, all}) CHECK(b.passes == off.passes);  // none is added
+        for (uint32_t frame : {0u, 7u}) {
+            ssao_settings blurred = resolved(0, 0, 0, res);
+            blurred.blur = SSAO_BLUR_DEPTH_AWARE;
+            const FramePlan p = plan_frame(blurred, inputs(frame));
+            for (int i = 0; i < p.pass_count; ++i) {
+                const PassKind k = p.passes[i].kind;
+                const bool maps_grid = k == PassKind::grid || k == PassKind::visibility || k == PassKind::kernel ||
+                                       k == PassKind::blur_x || k == PassKind::blur_y || k == PassKind::upsample;
+                CAPTURE(frame);
+                CAPTURE(i);
+                CHECK(((p.passes[i].variant & variant::frame_noise) != 0) == (maps_grid && frame != 0));
+            }
         }
     }
     // Strength 0 samples nothing: no sampling pass, no variant.

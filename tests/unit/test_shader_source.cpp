@@ -268,7 +268,7 @@ TEST_CASE("shader source: every SsaoFrame and SsaoKernel member sits at the same
         MEMBER(SsaoFrame, viewport_origin), MEMBER(SsaoFrame, viewport_size), MEMBER(SsaoFrame, sample_count),
         MEMBER(SsaoFrame, step_count), MEMBER(SsaoFrame, seed), MEMBER(SsaoFrame, rotation),
         MEMBER(SsaoFrame, normal_space), MEMBER(SsaoFrame, normal_packing), MEMBER(SsaoFrame, blur_radius),
-        MEMBER(SsaoFrame, blur_kind), MEMBER(SsaoFrame, orthographic), MEMBER(SsaoFrame, pad4),
+        MEMBER(SsaoFrame, blur_kind), MEMBER(SsaoFrame, orthographic), MEMBER(SsaoFrame, frame_pick_swap),
         MEMBER(SsaoFrame, ndc_per_depth), MEMBER(SsaoFrame, sky_depth), MEMBER(SsaoFrame, unorm_depth_step),
         MEMBER(SsaoFrame, radius), MEMBER(SsaoFrame, bias), MEMBER(SsaoFrame, depth_step_bias),
         MEMBER(SsaoFrame, strength), MEMBER(SsaoFrame, power), MEMBER(SsaoFrame, thickness),
