@@ -205,28 +205,28 @@ ssao_inputs plugin_inputs(const gbuffer::GBuffer& gbuf, const glm::mat4& proj, b
     return in;
 }
 
-// The plugin's configuration c: its row (settings and errors from one frame)
-// and how to time it (the context, inputs and output must outlive the timing).
-// The plugin's AO at this case's size: one frame at the inputs' frame index,
-// or (average_frames > 1) the mean over frame indices 1..average_frames.
-std::vector<float> plugin_ao(GladGLContext& gl, const ssao_api& api, ssao_context* ctx, const ssao_inputs& in,
-                             ssao_output& out, const Case& k, int average_frames) {
-    if (average_frames <= 1)
-        return gl_util::read_texture(gl, out.texture, out.origin[0], out.origin[1], k.width, k.height, 1);
-    std::vector<float> sum;
+// The plugin's mean AO over `frames` consecutive frame indices from
+// in.frame_index, whose first frame `out` already holds (frames = 1: that
+// frame's AO).
+std::vector<float> mean_ao(GladGLContext& gl, const ssao_api& api, ssao_context* ctx, const ssao_inputs& in,
+                           ssao_output& out, const Case& k, int frames) {
+    std::vector<float> sum = gl_util::read_texture(gl, out.texture, out.origin[0], out.origin[1], k.width, k.height, 1);
     ssao_inputs frame = in;
-    for (int i = 1; i <= average_frames; ++i) {
-        frame.frame_index = static_cast<uint32_t>(i);
+    for (int i = 1; i < frames; ++i) {
+        frame.frame_index = in.frame_index + static_cast<uint32_t>(i);
         if (api.execute(ctx, &frame, &out) != SSAO_OK) throw std::runtime_error(api.last_error(ctx));
         const std::vector<float> ao = gl_util::read_texture(gl, out.texture, out.origin[0], out.origin[1], k.width,
                                                             k.height, 1);
-        if (sum.empty()) sum.assign(ao.size(), 0.0f);
         for (size_t j = 0; j < ao.size(); ++j) sum[j] += ao[j];
     }
-    for (float& v : sum) v /= static_cast<float>(average_frames);
+    if (frames > 1)
+        for (float& v : sum) v /= static_cast<float>(frames);
     return sum;
 }
 
+// The plugin's configuration c: its row (settings, and errors from one frame
+// or from the mean of --average-frames) and how to time it (the context,
+// inputs and output must outlive the timing).
 Timed plugin_pass(GladGLContext& gl, const ssao_api& api, ssao_context* ctx, const ssao_inputs& in, ssao_output& out,
                   const Config& c, const Case& k, const Truth* truth, const Options& o, std::vector<Row>& rows) {
     const ssao_settings s = settings_for(c, api, k.radius, o.max_step_texels);
@@ -238,8 +238,7 @@ Timed plugin_pass(GladGLContext& gl, const ssao_api& api, ssao_context* ctx, con
     row.family = c.family;
     row.s.size = sizeof row.s;
     api.get_settings(ctx, &row.s);
-    row.frames_averaged = o.average_frames;
-    if (truth) fill_errors(row, plugin_ao(gl, api, ctx, in, out, k, o.average_frames), *truth);
+    if (truth) fill_errors(row, mean_ao(gl, api, ctx, in, out, k, o.average_frames), *truth);
     rows.push_back(row);
     Timed t;
     t.prepare = [&api, ctx, s, name = c.name] {

@@ -43,7 +43,6 @@ struct Row {
     double cell_spread = 0;        // metrics::cell_spread of the error against V_R (the fixed pattern)
     std::vector<double> cell_pattern;  // metrics::cell_pattern of that error (8 x 8), for the patterns cases share
     double bias_occluded = 0;      // metrics::occluded_bias: where V_R < 0.5 (contact shadows, creases)
-    int frames_averaged = 1;       // the plugin's errors: from its mean AO over frame indices 1..N (1: frame 0)
     bool variant = false;  // a sweep configuration with a setting no preset carries: its own thickness or rotation
 };
 

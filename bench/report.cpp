@@ -228,7 +228,7 @@ void write_csv(const Options& o, const std::vector<Row>& rows) {
                 << fmt(r.vs_limit.rmse, 5) << "," << fmt(r.vs_limit.psnr, 3) << "," << fmt(r.interior.rmse, 5) << ","
                 << fmt(r.silhouette.rmse, 5) << "," << fmt(r.border.rmse, 5) << "," << fmt(r.all.noise_rms, 5) << ","
                 << fmt(r.cell_spread, 5) << "," << fmt(r.bias_occluded, 5) << ","
-                << (plugin ? std::to_string(r.frames_averaged) : "") << "\n";
+                << (plugin ? std::to_string(o.average_frames) : "") << "\n";
         else
             csv << ",,,,,,,,,,,\n";
     }
