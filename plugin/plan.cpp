@@ -130,9 +130,10 @@ struct GridTextures {
 
 // The grid pass: one picked texel per scale x scale block (scale 1: every
 // pixel) -> RGBA32F plane texels and RGBA32F view-space normals, in one draw
-// to two targets. It runs below full resolution, for multisampled inputs (it
-// reads one sample, so no later pass sees the multisampled textures) and when
-// normals come from depth (it rebuilds them once, not in every sampling step).
+// to two targets. It runs below full resolution, for the visibility estimator
+// and the depth-aware blur (below), for multisampled inputs (it reads one
+// sample, so no later pass sees the multisampled textures) and when normals
+// come from depth (it rebuilds them once, not in every sampling step).
 GridTextures add_grid_pass(Builder& b, const AnalysedInputs& in, int scale, const Rect& low) {
     GridTextures g;
     g.plane = TexRef::of(Source::intermediate, b.intermediate(low.width, low.height, TexFormat::rgba32f));

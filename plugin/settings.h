@@ -39,7 +39,7 @@ inline float default_thickness(float radius, uint32_t step_count) {
 }
 // max_step_texels defaults to 0 (off): a bound in texels adds steps with the
 // radius on screen and so with the resolution, which on ssao-bench's
-// standard views cost DEFAULT 13% for 0.01 dB (docs/benchmark.md, "Step
+// standard views cost DEFAULT about 7% for 0.01 dB (docs/benchmark.md, "Step
 // length"). The fields' upper bounds are the header's (SSAO_MAX_POWER ...).
 
 // Resolves zero fields to defaults and validates the rest. `in` may be of

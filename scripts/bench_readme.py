@@ -5,6 +5,8 @@ Reads a run of ssao-bench (bench.csv, presets.txt in DIR, default docs/bench)
 and rewrites the blocks (scripts/doc_blocks.py) between <!-- bench:NAME --> and
 <!-- /bench:NAME --> markers: the preset table rows, the summary per scene,
 the targets (met or missed, as measured over every scene, view and radius),
+what the missed ones would take (the sweep's cheapest configuration meeting each; and, from converged/bench.csv,
+a run with --average-frames 64, each preset's targets with its noise averaged away),
 every case, the time-against-pixels table, the half/quarter-resolution
 ratios, from thickness.csv (scripts/thickness-sweep.sh) the thickness
 table and, from step_length/ (two ssao-bench --quick --sweep presets runs of

@@ -399,7 +399,7 @@ typedef struct ssao_settings {
 #define SSAO_SETTINGS_SIZE_1_1 80u  /**< interface 1.1's ssao_settings */
 #define SSAO_SETTINGS_SIZE_1_2 96u  /**< interfaces 1.2 and 1.3's ssao_settings */
 
-/** Named quality presets, picked from the front of error against GPU time
+/** Named quality presets, picked from the front of error against CPU time (llvmpipe)
  * that ssao-bench measures, by the rule stated in the README ("Presets").
  * preset_settings sets the fields below and leaves every other field 0
  * (radius, bias, thickness, ...: default, derived when the settings are
@@ -519,8 +519,9 @@ typedef enum ssao_pass {
                                     nothing sampled */
     SSAO_PASS_GRID = 16,         /**< the grid pass: view z and normal of one picked texel per block into
                                     the grid the estimator reads (counted in ssao_timings.ao_ms). Runs
-                                    at half/quarter resolution, and at full resolution for multisampled
-                                    inputs, depth-only input and the normals debug views */
+                                    at half/quarter resolution, and at full resolution for the visibility
+                                    estimator, the depth-aware blur, multisampled inputs, depth-only input
+                                    and the normals debug views */
     SSAO_PASS_UPSAMPLE = 32,     /**< half/quarter resolution: depth-aware upsample of the reduced
                                     grid's AO to every viewport pixel (counted in blur_ms) */
     SSAO_PASS_NORMALS_VIEW = 64, /**< the debug views NORMALS and RECONSTRUCTED_NORMALS: the grid's normals
