@@ -1,6 +1,7 @@
 // The exact depth-only limit (reference/depth_limit.cpp) against an independent
-// brute-force march of the same definition (limit_oracle.h), on the bundled
-// scenes at a small size with the tools' camera and radius.
+// brute-force march of the same definition (limit_oracle.h), on the
+// benchmark's scenes at a small size, from the benchmark's views (bench/views.h)
+// at its radii.
 //
 // Both march the same directions per pixel (the limit's own cosine-weighted
 // sets, rebuilt here from the documented seeds), so a per-pixel difference is
@@ -21,7 +22,6 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
-#include <filesystem>
 #include <string>
 #include <vector>
 
