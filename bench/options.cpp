@@ -3,6 +3,7 @@
 #include "depth_limit.h"
 #include "flags.h"
 #include "locate.h"
+#include "views.h"
 
 #include <ssao/ssao.h>
 
@@ -69,9 +70,9 @@ std::string help_text() {
 }
 
 std::vector<std::string> default_scenes() {
-    return {locate::bundled("models/spot-on-ground.glb"), locate::bundled("models/teapot-on-ground.glb"),
-            locate::bundled("scenes/corner.gltf"),        locate::bundled("scenes/overhang.gltf"),
-            locate::bundled("scenes/creases.gltf"),       locate::bundled("scenes/clutter.gltf")};
+    std::vector<std::string> out;
+    for (const std::string& f : scene_files()) out.push_back(locate::bundled(f));
+    return out;
 }
 
 namespace {

@@ -6,6 +6,13 @@
 
 namespace bench {
 
+const std::vector<std::string>& scene_files() {
+    static const std::vector<std::string> files = {"models/spot-on-ground.glb", "models/teapot-on-ground.glb",
+                                                   "scenes/corner.gltf",        "scenes/overhang.gltf",
+                                                   "scenes/creases.gltf",       "scenes/clutter.gltf"};
+    return files;
+}
+
 const char* view_name(View v) {
     switch (v) {
         case View::standard: return "standard";

@@ -1,4 +1,5 @@
-// views.h - the cameras and radii the benchmark measures every scene at.
+// views.h - the scenes the benchmark measures by default, and the cameras and
+// radii it measures every scene at.
 // Screen-space AO fails differently by view: the standard view (the scene's
 // camera, or one framed from its bounds, as every tool starts from), a high
 // view looking down steeply (floors and tops face the camera, walls and
@@ -16,6 +17,10 @@
 namespace raytrace { class Tracer; }
 
 namespace bench {
+
+// The benchmark's default scenes, as paths under assets/ (ssao-bench's
+// default list, and the tests that cover every bench scene).
+const std::vector<std::string>& scene_files();
 
 enum class View { standard, high, close };
 

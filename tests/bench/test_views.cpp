@@ -56,8 +56,7 @@ TEST_CASE("three views and three radii spanning 4x") {
 }
 
 TEST_CASE("every default scene is framed by the high view and the close-up") {
-    for (const char* rel : {"models/spot-on-ground.glb", "models/teapot-on-ground.glb", "scenes/corner.gltf",
-                            "scenes/overhang.gltf", "scenes/creases.gltf", "scenes/clutter.gltf"}) {
+    for (const std::string& rel : bench::scene_files()) {
         const std::string scene_name = rel;
         CAPTURE(scene_name);
         scene::Scene sc;

@@ -135,7 +135,6 @@ Compared compare(const Case& k) {
     return c;
 }
 
-
 // The comparison and its bounds: the issue's against V_R (PSNR within 0.3 dB,
 // the silhouette band's RMSE within 0.01), and per pixel on the same
 // directions, where only slivers shorter than R / steps may differ.
@@ -159,15 +158,12 @@ void check(const Case& k) {
     CHECK(std::fabs(c.diff_all.mean_error) <= 0.001);
 }
 
-const char* const kBenchScenes[] = {"models/spot-on-ground.glb", "models/teapot-on-ground.glb", "scenes/corner.gltf",
-                                    "scenes/overhang.gltf",      "scenes/creases.gltf",         "scenes/clutter.gltf"};
-
 }  // namespace
 
 TEST_SUITE("limit_oracle") {
 
 TEST_CASE("the exact limit agrees with a brute-force march of its definition on every bench scene") {
-    for (const char* rel : kBenchScenes) check(Case{rel});
+    for (const std::string& rel : bench::scene_files()) check(Case{rel});
 }
 
 // The benchmark's other views and radii, with a quarter of the directions
@@ -177,7 +173,7 @@ TEST_CASE("the exact limit agrees with a brute-force march of its definition on 
 // the exact limit finds: at twice the radius the per-pixel RMSE was
 // 0.005-0.006 there, and 0.001-0.002 with 2048 points.
 TEST_CASE("the exact limit agrees with the brute-force march from every view of the benchmark at every radius") {
-    for (const char* rel : kBenchScenes)
+    for (const std::string& rel : bench::scene_files())
         for (bench::View view : bench::all_views())
             for (float rs : bench::radius_scales()) {
                 if (view == bench::View::standard && rs == 1.0f) continue;  // the case above
