@@ -49,7 +49,7 @@ bool all_required_loaded(const GladGLContext& gl, std::string& missing) {
     SSAO_REQUIRE_GL(DeleteProgram) SSAO_REQUIRE_GL(DeleteQueries) SSAO_REQUIRE_GL(DeleteSamplers)
     SSAO_REQUIRE_GL(DeleteShader) SSAO_REQUIRE_GL(DeleteTextures) SSAO_REQUIRE_GL(DeleteVertexArrays)
     SSAO_REQUIRE_GL(DepthFunc) SSAO_REQUIRE_GL(DepthMask) SSAO_REQUIRE_GL(DepthRange) SSAO_REQUIRE_GL(Disable)
-    SSAO_REQUIRE_GL(Disablei) SSAO_REQUIRE_GL(DrawArrays)
+    SSAO_REQUIRE_GL(Disablei) SSAO_REQUIRE_GL(DrawArrays) SSAO_REQUIRE_GL(DrawBuffers)
     SSAO_REQUIRE_GL(Enable) SSAO_REQUIRE_GL(Enablei) SSAO_REQUIRE_GL(FramebufferTexture2D)
     SSAO_REQUIRE_GL(GenBuffers) SSAO_REQUIRE_GL(GenFramebuffers) SSAO_REQUIRE_GL(GenQueries)
     SSAO_REQUIRE_GL(GenSamplers) SSAO_REQUIRE_GL(GenTextures) SSAO_REQUIRE_GL(GenVertexArrays)

@@ -752,7 +752,8 @@ TEST_CASE("abi: create_context is GL_LOAD when one GL 3.3 function is missing") 
     const char* names[] = {"glCreateShader",     // checked by the plugin: the harness's control case
                            "glGenSamplers",      "glSamplerParameteri", "glGenVertexArrays",
                            "glUniformBlockBinding", "glDrawArrays",     "glBindBufferBase",
-                           "glCheckFramebufferStatus", "glClearBufferfv", "glDeleteTextures"};
+                           "glCheckFramebufferStatus", "glClearBufferfv", "glDeleteTextures",
+                           "glDrawBuffers"};
     for (const char* name : names) check_child_without(name, SSAO_ERROR_GL_LOAD);
 }
 
