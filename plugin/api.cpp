@@ -39,7 +39,7 @@ const char* SSAO_CALL status_string(ssao_status status) {
         case SSAO_ERROR_INVALID_ENUM: return "an enum field holds a value outside its documented list";
         case SSAO_ERROR_INVALID_VALUE: return "a number is non-finite or outside its documented range";
         case SSAO_ERROR_INVALID_SIZE: return "a size or viewport is zero, too large, or outside the textures";
-        case SSAO_ERROR_INVALID_TEXTURE: return "a texture name is missing, not a 2D texture, or of the wrong size";
+        case SSAO_ERROR_INVALID_TEXTURE: return "a texture name is missing, not a 2D texture, of the wrong size or sample count, or both input and output";
         case SSAO_ERROR_UNSUPPORTED_FORMAT: return "a texture's format is not supported";
         case SSAO_ERROR_INVALID_PROJECTION: return "the projection matrix is not a supported projection";
         case SSAO_ERROR_GL_VERSION: return "no GL context is current, or it is older than 3.3 core";

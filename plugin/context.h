@@ -41,8 +41,8 @@ struct ssao_context {
     // multisampled inputs raises no failed-bind GL error frame after frame.
     GLenum last_input_target = GL_TEXTURE_2D;
 
-    // The compiled programs (program_cache.cpp): variant 0 of every
-    // ProgramId first, then each variant a plan has used.
+    // The compiled programs (program_cache.cpp): each ProgramId's base
+    // variant first, then each variant a plan has used.
     std::vector<ssao_impl::CompiledProgram> programs;
     GLuint vao = 0, fbo = 0, ubo_frame = 0, ubo_kernel = 0, noise_texture = 0, sampler = 0;
     // The framebuffer the host's depth is copied from (runner.cpp,

@@ -1,5 +1,6 @@
 // debug.h - names a debugger shows (KHR_debug: GL 4.3 or the extension).
-// Each pass runs inside a debug group named after it ("ssao: ao"), the whole
+// Each pass runs inside a debug group named after it ("ssao: grid", "ssao:
+// kernel", ...: pass_table.cpp), the whole
 // execute inside "ssao", and the library's GL objects carry glObjectLabel
 // names "ssao: ...". Without KHR_debug none of it calls GL.
 #pragma once

@@ -36,8 +36,8 @@ struct AnalysedInputs {
     uint32_t depth_texture = 0, normal_texture = 0;  // the host's inputs (checked)
     uint32_t output_texture = 0;  // the host's output texture (checked), 0 = the library's own
     bool output_rgb = false;      // the host's output texture has red, green and blue channels
-    // Multisampled depth and normal (GL_TEXTURE_2D_MULTISAMPLE): the
-    // grid pass reads sample `sample_index` of each pixel.
+    // Multisampled depth and normal (GL_TEXTURE_2D_MULTISAMPLE): the grid
+    // pass and the upsample read sample `sample_index` of each pixel.
     bool multisample = false;
     int sample_index = 0;
     int samples = 0;  // the inputs' sample count (0: single-sample GL_TEXTURE_2D)
@@ -46,8 +46,10 @@ struct AnalysedInputs {
     bool multiply_output = false;
     // No normal texture: the grid pass rebuilds normals from depth.
     bool normals_from_depth = false;
-    // inputs.frame_index: 0 = the fixed noise pattern, else the
-    // sampling pass's rotation and jitter move with it (variant FRAME_NOISE).
+    // inputs.frame_index: 0 = the fixed noise pattern, else the sampling
+    // pass's rotation and jitter move with it and, below full resolution, the
+    // grid's picks swap corners every other frame (variant FRAME_NOISE on
+    // every pass that maps grid texels to pixels).
     uint32_t frame_index = 0;
     // Not the inputs' but the context's (GlCaps::software_rasterizer): the
     // renderer runs every instruction of a batch of pixels whose lanes are
@@ -58,14 +60,15 @@ struct AnalysedInputs {
 };
 
 // Checks that need no GL state change: the enums, view matrix and projection,
-// and which texture names are 2D textures. Fills in.proj, world_normals,
-// signed_normals. On failure returns the status with ctx.fail() called.
+// and which texture names are 2D textures. Fills every field of `out` but
+// those inspect_textures fills (below). On failure returns the status with ctx.fail() called.
 ssao_status check_inputs(ssao_context& ctx, const ssao_inputs& in, AnalysedInputs& out);
 
 // Inspects the textures (binds them on the library's units to query them:
 // call it inside the state guard, which also saves a D24S8/D32FS8 input's
 // depth-stencil mode before it is changed to read depth). Fills depth,
-// texture size, viewport, output_texture and output_rgb. Leaves nothing a
+// texture size, viewport, the three texture names, output_rgb, multisample,
+// samples and sample_index. Leaves nothing a
 // later step relies on: each binds what it uses.
 ssao_status inspect_textures(ssao_context& ctx, const ssao_inputs& in, GlStateGuard& guard, AnalysedInputs& out);
 

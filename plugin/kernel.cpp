@@ -25,7 +25,7 @@ glm::vec3 direction(Random& rng, ssao_kernel_shape shape, int plane) {
         // One draw per statement: the order in which a constructor's
         // arguments are evaluated is unspecified (GCC goes right to left,
         // clang left to right), and the kernel must not depend on the
-        // compiler. This is GCC's order, so kernels stay what they were.
+        // compiler. This is GCC's order, which the reference kernels and golden images were made with.
         const float z = rng.next_float();
         const float y = rng.next_float() * 2.0f - 1.0f;
         const float x = rng.next_float() * 2.0f - 1.0f;

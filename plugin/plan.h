@@ -38,7 +38,7 @@ constexpr int kMaxMasks = 2;
 enum class PassKind : uint8_t {
     clear,         // strength 0: the output's rectangle cleared to 1, nothing sampled
     grid,          // one picked texel's view z and normal per block (every pixel at full resolution)
-    kernel,        // the occlusion estimator with the hemisphere kernel (method KERNEL)
+    kernel,        // the point-kernel occlusion estimator (method KERNEL, any kernel_shape)
     visibility,    // the occlusion estimator marching directions (method VISIBILITY)
     normals_view,  // the debug views NORMALS and RECONSTRUCTED_NORMALS: the grid's normal packed into RGB
     blur_x,        // horizontal blur (or the box blur's single pass)
@@ -56,8 +56,8 @@ enum class ProgramId : int8_t { none = -1, grid, kernel, visibility, normals_vie
 // default and free when off: its shader code sits behind `#ifdef SSAO_<NAME>`
 // (shader_source.cpp adds the defines), so a plan that does not ask for it
 // runs not one instruction or branch of it. The runner compiles a variant the
-// first time a plan uses it (program_cache.cpp); variant 0 of every program is
-// compiled at create_context. A new bit: a constant here, its name in
+// first time a plan uses it (program_cache.cpp); each program's base variant
+// (ProgramInfo::base_variant, pass_table.cpp) is compiled at create_context. A new bit: a constant here, its name in
 // kVariantNames (shader_source.cpp), the #ifdef code, and the plan sets it.
 namespace variant {
 constexpr uint32_t grid_input = 1u << 0;          // GRID_INPUT: the sampling pass reads the prepared grid (depth,
@@ -213,7 +213,7 @@ struct FramePlan {
     Intermediate masks[kMaxMasks] = {};  // of a depth format
     int mask_count = 0;
     // The final output: the host's texture at the viewport's origin, or the
-    // library's own (owned_output) of output_size and output_format at (0,0).
+    // library's own (owned_output) of output_width x output_height and output_format at (0,0).
     bool owned_output = true;
     int output_width = 0, output_height = 0;
     TexFormat output_format = TexFormat::r8;

@@ -1,5 +1,5 @@
-// program_cache.h - the compiled pass programs: variant 0 of every ProgramId
-// at create_context (so a driver that cannot compile the shaders fails
+// program_cache.h - the compiled pass programs: each ProgramId's base variant
+// (pass_table.cpp) at create_context (so a driver that cannot compile the shaders fails
 // there), and each other variant the first time a plan asks for it (plan.h,
 // namespace variant), kept until destroy_context.
 #pragma once
@@ -27,7 +27,7 @@ struct CompiledProgram {
     bool failed = false;
 };
 
-// create_context: variant 0 of every program but the debug views' (compiled
+// create_context: the base variant of every program but the debug views' (compiled
 // on first use, like the variants) and, on a software rasteriser, the sky
 // fill's. SHADER (last_error holds the
 // driver's log) when one fails.

@@ -94,7 +94,7 @@ ssao_status analyse_projection(const float m[16], ssao_clip_range clip, Projecti
         p.near_distance = b / (ndc_near - a);
         const double denom = ndc_far - a;
         const double far_t = denom != 0.0 ? b / denom : std::numeric_limits<double>::infinity();
-        // A far plane at or past ~1e7 * near behaves as infinite in float depth.
+        // A far plane past 1e12 * near is taken as infinite.
         p.infinite_far = !(far_t > 0.0) || far_t > p.near_distance * 1e12 || std::isinf(far_t);
         p.far_distance = p.infinite_far ? std::numeric_limits<double>::infinity() : far_t;
         if (!(p.near_distance > 0.0) || !std::isfinite(p.near_distance)) {

@@ -20,8 +20,9 @@
 // Variant BLUR_WEIGHTS (debug view SSAO_DEBUG_VIEW_BLUR_WEIGHTS) writes, in
 // place of the blurred AO, the share of the pass's gaussian (box: uniform)
 // weight that the depth test let through: sum(w * depth weight) / sum(w) over
-// the taps the blur uses. Sky taps and taps beyond the border take no part in
-// either sum (every blur skips them, depth test or not), so a blur that
+// the taps the blur uses. Sky taps take no part in either sum (every blur
+// skips them, depth test or not); beyond the border the gaussian skips taps
+// and the box repeats the edge texel, in both sums alike. So a blur that
 // ignores depth gives exactly 1. The vertical pass of a separable blur reads
 // the horizontal pass's share at its centre and multiplies it in: the view is
 // the product of both passes' shares at the pixel.

@@ -110,7 +110,7 @@ ivec2 grid_pixel(ivec2 t) { return grid_pixel(grid_map(), t); }
 
 // The host's depth at grid texel t (read only where the kernel pass reads
 // the host's textures directly: full resolution, single sample, stored
-// normals; variant GRID_INPUT reads view z instead: texel_surface below).
+// normals, no depth-aware blur; variant GRID_INPUT reads view z instead: texel_surface below).
 float fetch_depth(ivec2 t) { return input_depth(t); }
 
 // The grid pass stores view z (its plane texels' .r, grid.frag) and the AO
@@ -201,7 +201,7 @@ float view_z_of_depth(ivec2 p, float d) { return view_position_at(vec2(p) + 0.5,
 // change of one depth-format step there. False for the sky (and a depth whose
 // position is not finite, which the grid pass stores as sky). Variant
 // GRID_INPUT (the visibility pass always; the kernel below full resolution,
-// with multisampled inputs or normals from depth): the view z of the grid
+// with the depth-aware blur, multisampled inputs or normals from depth): the view z of the grid
 // pass's plane texel, the position by multiply-adds.
 // Else the host's depth through the inverse projection.
 #ifdef SSAO_GRID_INPUT
@@ -237,7 +237,7 @@ float depth_step(vec4 p, float d) {
     // [-1,1] clip range: the rasteriser held NDC z = 2d - 1 in float before
     // storing d, and view_position goes back through it, so no float depth is
     // finer than one ulp of NDC z (reverse-Z without a [0,1] clip range keeps
-    // standard-Z precision; README "Depth precision").
+    // standard-Z precision; docs/hard-cases.md, "Depth precision").
     if (consts.unorm_depth_step == 0.0 && consts.ndc_per_depth == 2.0)
         ulp = max(ulp, abs(d * 2.0 - 1.0) * 0.5 * 1.1920929e-7);
     return abs(dz_dndc) * consts.ndc_per_depth * ulp;

@@ -1,5 +1,5 @@
 // The sky fill: drawn with the complement of a sky-tested pass's depth test
-// (runner.cpp fill_sky), so it runs exactly on the pixels that pass skips and
+// (runner.cpp draw_sky_fill), so it runs exactly on the pixels that pass skips and
 // writes there what that pass's shader writes at the sky (ao_texture.glsl
 // result): every texel of the pass's rectangle is written once, by the pass
 // or by the fill.

@@ -17,8 +17,9 @@
 /* The depth tests against a tangent plane (the blur's, the upsample's) accept
  * this share of the blur's relative depth tolerance (ao_texture.glsl). */
 #define SSAO_PLANE_TOLERANCE 0.2
-/* The depth-aware blur fits a line through its taps (blur.frag); this is
- * added to the taps' offset variance (squared pass texels) to damp its slope. */
+/* The depth-aware blur's line and the upsample's plane fit (blur.frag,
+ * upsample.frag) add this to the taps' offset variance (squared pass or grid
+ * texels) to damp the slope. */
 #define SSAO_BLUR_SLOPE_DAMPING 0.25
 /* The view z that marks the sky (and a depth whose position is not finite)
  * in the grid's plane texels and the AO texture (common.glsl SKY_Z); the

@@ -143,9 +143,10 @@ bool step_surface(vec3 s, float sn, vec2 spf, ivec2 spx, Surface sf, StepSetup s
 // approached late in the march (the far part of a contact shadow or a
 // crease's falloff, which read too light). Stretched so that the last step
 // reaches R at u = 1, the steps lie further apart and pass over more thin
-// occluders. SSAO_MARCH_STRETCH = 0.5, halfway, read best in quick runs of
-// every benchmark case against 0, 0.25, 0.75 and 1 (docs/benchmark.md,
-// "Where the last step lands").
+// occluders. SSAO_MARCH_STRETCH = 0.5, halfway, read best on the mean for
+// MEDIUM and HIGH, and within 0.01 dB of the best for LOW and ULTRA, in quick
+// runs of every benchmark case against 0, 0.25, 0.75 and 1
+// (docs/benchmark.md, "Where the last step lands").
 float march_step_length(float radius, int steps, float jitter) {
     return radius / (float(steps) - SSAO_MARCH_STRETCH * (1.0 - jitter));
 }
@@ -155,7 +156,7 @@ float march_step_length(float radius, int steps, float jitter) {
 // consts.max_step_texels on screen: as many as keep each step within it, up
 // to SSAO_MARCH_MAX_STEPS. Steps many texels apart pass over
 // thin occluders (a crease's rim, an edge seen close up) that a continuous
-// march meets, which left close-ups and large radii too light. The span is
+// march meets, which leaves close-ups and large radii too light. The span is
 // the projected segment from P to the radius, at most the viewport's
 // diagonal (also where the segment's end lies behind the eye), so that a
 // huge max_step_texels keeps step_count. Written so that a NaN keeps

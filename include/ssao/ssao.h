@@ -182,7 +182,9 @@ typedef enum ssao_status {
      * viewport does not lie inside the input textures. */
     SSAO_ERROR_INVALID_SIZE = 6,
     /** A texture name is 0 where one is required, is not a texture, is not a
-     * GL_TEXTURE_2D, or the depth and normal textures differ in size. */
+     * GL_TEXTURE_2D ((1.2) the depth and normal textures may both be
+     * GL_TEXTURE_2D_MULTISAMPLE), the depth and normal textures differ in
+     * size, target or sample count, or the output is also an input. */
     SSAO_ERROR_INVALID_TEXTURE = 7,
     /** The depth texture's internal format is not D16, D24, D24S8, D32F or
      * D32FS8, the normal texture has fewer than three channels or an integer
@@ -252,8 +254,10 @@ typedef enum ssao_blur {
     SSAO_BLUR_DEFAULT = 0,      /**< = SSAO_BLUR_DEPTH_AWARE */
     SSAO_BLUR_DEPTH_AWARE = 1,  /**< separable gaussian whose taps beyond blur_depth_tolerance are dropped;
                                      a line fitted through the rest, read at the centre */
-    SSAO_BLUR_BOX_4X4 = 2,      /**< the chapter's 4x4 box (offsets -2..1), ignores depth */
-    SSAO_BLUR_GAUSSIAN = 3,     /**< separable gaussian of blur_sigma over blur_radius, ignores depth */
+    SSAO_BLUR_BOX_4X4 = 2,      /**< the chapter's 4x4 box (offsets -2..1); ignores depth at full
+                                     resolution (below it, taps are weighed by depth as DEPTH_AWARE's) */
+    SSAO_BLUR_GAUSSIAN = 3,     /**< separable gaussian of blur_sigma over blur_radius; ignores depth at
+                                     full resolution (below it, as BOX_4X4) */
     SSAO_BLUR_NONE = 4, /**< no blur pass runs */
     SSAO_BLUR_MAX_ENUM = 0x7fffffff  /**< not a value: keeps the enum 32 bits wide */
 } ssao_blur;
@@ -313,8 +317,8 @@ typedef enum ssao_debug_view {
                                          weights below full resolution) */
     SSAO_DEBUG_VIEW_BLUR_WEIGHTS = 4, /**< the share of the blur's gaussian weight that passed the depth test
                                          (1 = nothing rejected; separable blurs: the product of both
-                                         passes' shares); 1 everywhere for blurs that ignore depth and
-                                         without a blur */
+                                         passes' shares); 1 everywhere for BOX_4X4 and GAUSSIAN at full
+                                         resolution and without a blur */
     SSAO_DEBUG_VIEW_MAX_ENUM = 0x7fffffff  /**< not a value: keeps the enum 32 bits wide */
 } ssao_debug_view;
 
