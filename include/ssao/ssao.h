@@ -497,8 +497,9 @@ typedef struct ssao_inputs {
                                     indexed by it, so a host's TAA averages the noise away: pass the frame
                                     number (any uint32; a fixed index gives bit-identical output). With
                                     rotation NONE the whole kernel turns from frame to frame. Below full
-                                    resolution the upsample then fits a plane through its taps, so the
-                                    averaged AO keeps no pattern of the grid's picked pixels. The first
+                                    resolution each block's picked pixel alternates between two corners
+                                    (odd and even indices) and the upsample fits a plane through its
+                                    taps, so the averaged AO keeps no pattern of the grid's picked pixels. The first
                                     execute with a nonzero index compiles the variants that do this
                                     (a one-time cost; SHADER if the driver cannot compile them) */
 } ssao_inputs;
