@@ -244,7 +244,10 @@ void set_pass_state(const GladGLContext& gl, const GlCaps& caps) {
     gl.Disable(GL_SAMPLE_ALPHA_TO_COVERAGE);
     gl.Disable(GL_BLEND);  // every draw buffer
     for (int i = 0; i < std::min(caps.max_clip_distances, 8); ++i) gl.Disable(GL_CLIP_DISTANCE0 + static_cast<GLenum>(i));
-    gl.ColorMaski(0, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    // Both draw buffers a pass may write (the grid pass writes two): the
+    // colour mask is context state per draw buffer index, so the host's mask
+    // on buffer 1 would otherwise hold back channels of the grid's normals.
+    for (GLuint b = 0; b < 2; ++b) gl.ColorMaski(b, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     gl.PolygonMode(GL_FRONT_AND_BACK, GL_FILL);
     if (caps.clip_control) gl.ClipControl(GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE);
 }

@@ -368,6 +368,35 @@ TEST_CASE("every listed piece of GL state is identical before and after execute,
   }
 }
 
+TEST_CASE("a host's colour mask on draw buffer 1 does not reach the grid pass's second target on the first frame") {
+    // The grid pass writes plane texels and normals to two draw buffers. The
+    // colour mask is context state per draw buffer index, so the host's mask
+    // on buffer 1 applies to the library's framebuffer too unless the passes
+    // reset it; a first frame has no earlier normals to hide a masked write.
+    const auto proj = analytic::perspective(kFov, 1.0, 0.1, 100.0);
+    const GBuffer g = analytic::render(crease_scene(), proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, 40, 40);
+    std::vector<float> clean;
+    {
+        testgl::Fixture fx;
+        fx.settings(ssao_settings{});
+        const auto r = fx.run(g, proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE);
+        REQUIRE(r.status == SSAO_OK);
+        clean = r.ao;
+    }
+    testgl::Fixture fx;
+    fx.settings(ssao_settings{});
+    GLboolean mask[4] = {};
+    fx.gl().ColorMaski(1, GL_TRUE, GL_FALSE, GL_FALSE, GL_FALSE);
+    const auto r = fx.run(g, proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE);
+    REQUIRE(r.status == SSAO_OK);
+    fx.gl().GetBooleani_v(GL_COLOR_WRITEMASK, 1, mask);
+    CHECK((mask[0] == GL_TRUE && mask[1] == GL_FALSE && mask[2] == GL_FALSE && mask[3] == GL_FALSE));
+    REQUIRE(r.ao.size() == clean.size());
+    float worst = 0.0f;
+    for (size_t i = 0; i < clean.size(); ++i) worst = std::max(worst, std::abs(r.ao[i] - clean[i]));
+    CHECK(worst < 1e-6f);
+}
+
 TEST_CASE("GL errors are caught by the KHR_debug capture (the detector itself can fail)") {
     testgl::Fixture fx;
     CHECK(fx.gl_errors().empty());
