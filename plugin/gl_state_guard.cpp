@@ -24,7 +24,8 @@ GlStateGuard::GlStateGuard(const GladGLContext& gl, const GlCaps& caps, GLuint u
     : gl_(gl), caps_(caps) {
     gl.GetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &draw_fbo_);
     gl.GetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &read_fbo_);
-    gl.GetIntegerv(GL_CURRENT_PROGRAM, &program_);
+    gl.GetIntegerv(GL_CURRENT_PROGRAM, &host_program_);
+    program_ = host_program_;
     if (program_ != 0) {
         // A program the host flagged for deletion while current is deleted as
         // soon as the passes bind theirs: it cannot be made current again.
@@ -145,7 +146,12 @@ GlStateGuard::~GlStateGuard() {
     gl.ActiveTexture(static_cast<GLenum>(active_texture_));
     gl.BindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(draw_fbo_));
     gl.BindFramebuffer(GL_READ_FRAMEBUFFER, static_cast<GLuint>(read_fbo_));
-    gl.UseProgram(static_cast<GLuint>(program_));
+    // Only where a pass bound its own: a call that bound none (refused, or a
+    // frame that only clears) leaves the host's program current, flagged for
+    // deletion or not.
+    GLint current = 0;
+    gl.GetIntegerv(GL_CURRENT_PROGRAM, &current);
+    if (current != host_program_) gl.UseProgram(static_cast<GLuint>(program_));
     gl.BindVertexArray(static_cast<GLuint>(vao_));
     // Indexed uniform bindings first: glBindBufferRange/Base also set the
     // generic binding, which is restored after them.

@@ -490,6 +490,46 @@ TEST_CASE("a refused execute changes nothing: no host texture stays attached, th
     CHECK(fx.gl_errors().empty());
 }
 
+TEST_CASE("a host program flagged for deletion stays current through a refused execute and a frame that binds no "
+          "program") {
+    // The header: a failing call changes nothing, and the flagged program is
+    // deleted only when execute binds its own.
+    testgl::Fixture fx;
+    auto& gl = fx.gl();
+    const auto proj = analytic::perspective(kFov, 1.0, 0.1, 100.0);
+    const GBuffer g = analytic::render(crease_scene(), proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, 16, 16);
+    const GLuint program = link_trivial_program(gl);
+    gl.UseProgram(program);
+    gl.DeleteProgram(program);
+    const auto still_current = [&] {
+        GLint current = -1;
+        gl.GetIntegerv(GL_CURRENT_PROGRAM, &current);
+        return current == static_cast<GLint>(program) && gl.IsProgram(program) == GL_TRUE;
+    };
+    // Refused after the state guard is up: a colour texture where the depth belongs.
+    GLuint colour = 0;
+    gl.GenTextures(1, &colour);
+    gl.BindTexture(GL_TEXTURE_2D, colour);
+    gl.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, g.width, g.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+    gl.BindTexture(GL_TEXTURE_2D, 0);
+    const GLuint normal = fx.make_normals(GL_RGBA16F, g.width, g.height, g.normal);
+    ssao_inputs in = fx.inputs(colour, normal, proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE);
+    ssao_output out{};
+    out.size = sizeof out;
+    CHECK(fx.api().execute(fx.ctx(), &in, &out) == SSAO_ERROR_UNSUPPORTED_FORMAT);
+    CHECK(still_current());
+    // Strength 0: the output is cleared to 1 and no pass draws.
+    ssao_settings off{};
+    off.strength = SSAO_STRENGTH_OFF;
+    fx.settings(off);
+    REQUIRE(fx.run(g, proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE).status == SSAO_OK);
+    CHECK(still_current());
+    gl.UseProgram(0);  // the host lets it go
+    CHECK(gl.IsProgram(program) == GL_FALSE);
+    gl.DeleteTextures(1, &colour);
+    CHECK(fx.gl_errors().empty());
+}
+
 TEST_CASE("a host program flagged for deletion while current does not make the restore raise an error") {
     testgl::Fixture fx;
     auto& gl = fx.gl();
