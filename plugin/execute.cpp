@@ -81,7 +81,7 @@ ssao_status execute(ssao_context& ctx, const ssao_inputs& in, ssao_output* out) 
     upload_frame_block(ctx, make_frame_block(ctx.settings, analysed));
 
     ++ctx.executes;
-    run_plan(ctx, plan, textures, framebuffer);
+    run_plan(ctx, plan, textures, framebuffer, guard);
 
     record_frame_info(ctx, analysed);
     if (out) {

@@ -79,21 +79,6 @@ GlStateGuard::GlStateGuard(const GladGLContext& gl, const GlCaps& caps, GLuint u
         blend_[i] = gl.IsEnabledi(GL_BLEND, static_cast<GLuint>(i));
         gl.GetBooleani_v(GL_COLOR_WRITEMASK, static_cast<GLuint>(i), color_mask_[i]);
     }
-    if (caps.indexed_blend) {
-        gl.GetIntegeri_v(GL_BLEND_SRC_RGB, 0, &blend_src_rgb_);
-        gl.GetIntegeri_v(GL_BLEND_DST_RGB, 0, &blend_dst_rgb_);
-        gl.GetIntegeri_v(GL_BLEND_SRC_ALPHA, 0, &blend_src_alpha_);
-        gl.GetIntegeri_v(GL_BLEND_DST_ALPHA, 0, &blend_dst_alpha_);
-        gl.GetIntegeri_v(GL_BLEND_EQUATION_RGB, 0, &blend_equation_rgb_);
-        gl.GetIntegeri_v(GL_BLEND_EQUATION_ALPHA, 0, &blend_equation_alpha_);
-    } else {
-        gl.GetIntegerv(GL_BLEND_SRC_RGB, &blend_src_rgb_);
-        gl.GetIntegerv(GL_BLEND_DST_RGB, &blend_dst_rgb_);
-        gl.GetIntegerv(GL_BLEND_SRC_ALPHA, &blend_src_alpha_);
-        gl.GetIntegerv(GL_BLEND_DST_ALPHA, &blend_dst_alpha_);
-        gl.GetIntegerv(GL_BLEND_EQUATION_RGB, &blend_equation_rgb_);
-        gl.GetIntegerv(GL_BLEND_EQUATION_ALPHA, &blend_equation_alpha_);
-    }
     for (int i = 0; i < std::min(caps.max_clip_distances, 8); ++i)
         clip_distance_[i] = gl.IsEnabled(GL_CLIP_DISTANCE0 + static_cast<GLenum>(i));
     // A core profile's state table holds one polygon mode, and a driver may
@@ -120,6 +105,27 @@ void GlStateGuard::save_unpack_state() {
     unpack_saved_ = true;
     gl_.GetIntegerv(GL_PIXEL_UNPACK_BUFFER_BINDING, &unpack_buffer_);
     for (int i = 0; i < 8; ++i) gl_.GetIntegerv(kUnpackParams[i], &unpack_[i]);
+}
+
+void GlStateGuard::save_blend_function() {
+    if (blend_function_saved_) return;
+    blend_function_saved_ = true;
+    const GladGLContext& gl = gl_;
+    if (caps_.indexed_blend) {
+        gl.GetIntegeri_v(GL_BLEND_SRC_RGB, 0, &blend_src_rgb_);
+        gl.GetIntegeri_v(GL_BLEND_DST_RGB, 0, &blend_dst_rgb_);
+        gl.GetIntegeri_v(GL_BLEND_SRC_ALPHA, 0, &blend_src_alpha_);
+        gl.GetIntegeri_v(GL_BLEND_DST_ALPHA, 0, &blend_dst_alpha_);
+        gl.GetIntegeri_v(GL_BLEND_EQUATION_RGB, 0, &blend_equation_rgb_);
+        gl.GetIntegeri_v(GL_BLEND_EQUATION_ALPHA, 0, &blend_equation_alpha_);
+    } else {
+        gl.GetIntegerv(GL_BLEND_SRC_RGB, &blend_src_rgb_);
+        gl.GetIntegerv(GL_BLEND_DST_RGB, &blend_dst_rgb_);
+        gl.GetIntegerv(GL_BLEND_SRC_ALPHA, &blend_src_alpha_);
+        gl.GetIntegerv(GL_BLEND_DST_ALPHA, &blend_dst_alpha_);
+        gl.GetIntegerv(GL_BLEND_EQUATION_RGB, &blend_equation_rgb_);
+        gl.GetIntegerv(GL_BLEND_EQUATION_ALPHA, &blend_equation_alpha_);
+    }
 }
 
 void GlStateGuard::save_depth_stencil_mode(GLuint texture, GLuint unit, GLenum target) {
@@ -198,10 +204,10 @@ GlStateGuard::~GlStateGuard() {
         gl.ColorMaski(b, color_mask_[i][0], color_mask_[i][1], color_mask_[i][2], color_mask_[i][3]);
     }
     const auto e = [](GLint v) { return static_cast<GLenum>(v); };
-    if (caps_.indexed_blend) {
+    if (blend_function_saved_ && caps_.indexed_blend) {
         gl.BlendFuncSeparatei(0, e(blend_src_rgb_), e(blend_dst_rgb_), e(blend_src_alpha_), e(blend_dst_alpha_));
         gl.BlendEquationSeparatei(0, e(blend_equation_rgb_), e(blend_equation_alpha_));
-    } else {
+    } else if (blend_function_saved_) {
         gl.BlendFuncSeparate(e(blend_src_rgb_), e(blend_dst_rgb_), e(blend_src_alpha_), e(blend_dst_alpha_));
         gl.BlendEquationSeparate(e(blend_equation_rgb_), e(blend_equation_alpha_));
     }

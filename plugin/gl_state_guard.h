@@ -37,6 +37,12 @@ public:
     // not query them at all.
     void save_unpack_state();
 
+    // Save draw buffer 0's blend function and equation (all buffers' below
+    // GL 4.0), before the output's multiply blend changes them: a frame that
+    // does not multiply leaves them alone, so a host's per-buffer functions
+    // survive even where the library cannot set one buffer's.
+    void save_blend_function();
+
 private:
     static constexpr int kUnits = 4;
     static constexpr int kMaxBuffers = 16;
@@ -77,6 +83,7 @@ private:
     GLint clip_origin_ = 0, clip_depth_mode_ = 0;
     GLint unpack_[8] = {};
     bool unpack_saved_ = false;
+    bool blend_function_saved_ = false;
     GLuint ds_texture_ = 0, ds_unit_ = 0;
     GLenum ds_target_ = GL_TEXTURE_2D;
     GLint ds_mode_ = 0;

@@ -152,7 +152,8 @@ void draw_sky_fill(const ssao_context& ctx, const FramePlan& plan, const Pass& p
 
 }  // namespace
 
-void run_plan(ssao_context& ctx, const FramePlan& plan, const PlanTextures& textures, TargetFramebuffer& framebuffer) {
+void run_plan(ssao_context& ctx, const FramePlan& plan, const PlanTextures& textures, TargetFramebuffer& framebuffer,
+              GlStateGuard& guard) {
     const GladGLContext& gl = ctx.gl;
     for (GLuint u = 0; u < SSAO_UNITS_USED; ++u) gl.BindSampler(u, ctx.sampler);
     set_pass_state(gl, ctx.caps);
@@ -181,7 +182,10 @@ void run_plan(ssao_context& ctx, const FramePlan& plan, const PlanTextures& text
                 set_depth_use(gl, pass.depth, plan.sky_depth);
                 units.bind_for(pass, textures);
                 if (pass.fills_sky() && plan.sky_fill == SkyFill::draw) draw_sky_fill(ctx, plan, pass);
-                if (pass.multiply) begin_multiply_blend(gl, ctx.caps);
+                if (pass.multiply) {
+                    guard.save_blend_function();
+                    begin_multiply_blend(gl, ctx.caps);
+                }
                 draw_with(gl, program_for(ctx, pass), pass);
                 if (pass.multiply) end_multiply_blend(gl);
             }

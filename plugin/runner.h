@@ -5,6 +5,7 @@
 // plan and the resolved textures.
 #pragma once
 
+#include "gl_state_guard.h"
 #include "plan.h"
 #include "resources.h"
 
@@ -13,7 +14,9 @@ struct ssao_context;
 namespace ssao_impl {
 
 // Runs `plan` into `framebuffer` (the constants uploaded, the resources
-// updated and resolved in `textures`).
-void run_plan(ssao_context& ctx, const FramePlan& plan, const PlanTextures& textures, TargetFramebuffer& framebuffer);
+// updated and resolved in `textures`); `guard` saves the blend function
+// before a pass multiplies into the output.
+void run_plan(ssao_context& ctx, const FramePlan& plan, const PlanTextures& textures, TargetFramebuffer& framebuffer,
+              GlStateGuard& guard);
 
 }  // namespace ssao_impl

@@ -204,7 +204,8 @@ void set_host_state(GladGLContext& gl) {
 
 // ---- child mode: create_context (and one execute) where get_proc_address
 // returns NULL for one GL function. Exits with the status create_context
-// returned (0 when it accepted and execute then ran).
+// returned (0 when it accepted and execute then ran and left the host's
+// per-draw-buffer blend functions as they were, 94 when it changed them).
 namespace {
 
 const char* g_missing = nullptr;
@@ -232,9 +233,18 @@ int child_missing_function(const char* name) {
     const GLuint normal = make_normals(gl, 8, 8);
     ssao_inputs in = make_inputs(depth, normal);
     ssao_output out = sized<ssao_output>();
+    // The host sets blend functions per draw buffer (its own loader has
+    // them); a library that cannot set one buffer's must not set them all.
+    gl.BlendFuncSeparatei(0, GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ZERO);
+    gl.BlendFuncSeparatei(1, GL_ONE, GL_ONE, GL_ZERO, GL_ONE);
+    gl.BlendEquationSeparatei(1, GL_MAX, GL_MIN);
     const ssao_status executed = a.execute(ctx, &in, &out);
+    GLint src1 = 0, eq1 = 0;
+    gl.GetIntegeri_v(GL_BLEND_SRC_RGB, 1, &src1);
+    gl.GetIntegeri_v(GL_BLEND_EQUATION_RGB, 1, &eq1);
     a.destroy_context(ctx);
-    return executed == SSAO_OK ? 0 : 93;
+    if (executed != SSAO_OK) return 93;
+    return src1 == GL_ONE && eq1 == GL_MAX ? 0 : 94;
 }
 
 }  // namespace
