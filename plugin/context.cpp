@@ -110,8 +110,10 @@ ssao_status initialise(ssao_context& ctx, const ssao_context_desc& desc) {
     ctx.caps.texture_target_query = v >= 45 && gl.GetTextureParameteriv != nullptr && gl.GetTextureLevelParameteriv != nullptr;
     ctx.caps.query_buffer = v >= 44 || has_gl_extension(gl, "GL_ARB_query_buffer_object");
     ctx.caps.indexed_blend = v >= 40 && gl.BlendFuncSeparatei != nullptr && gl.BlendEquationSeparatei != nullptr;
-    if (v >= 41 && gl.GetFloati_v && gl.ViewportIndexedfv && gl.ScissorIndexedv && gl.GetDoublei_v &&
-        gl.DepthRangeIndexed) {
+    // Viewport arrays: GL 4.1, or GL_ARB_viewport_array below it (Mesa offers
+    // it at 3.3), where glViewport, glScissor and glDepthRange set every index.
+    if ((v >= 41 || gl.ARB_viewport_array) && gl.GetFloati_v && gl.ViewportIndexedfv && gl.ScissorIndexedv &&
+        gl.GetDoublei_v && gl.DepthRangeIndexed) {
         gl.GetIntegerv(GL_MAX_VIEWPORTS, &ctx.caps.viewports);
         ctx.caps.viewports = std::max(1, std::min(ctx.caps.viewports, 16));
     }

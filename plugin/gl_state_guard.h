@@ -14,7 +14,7 @@ struct GlCaps {
     bool texture_target_query = false;// GL 4.5: GL_TEXTURE_TARGET
     bool indexed_blend = false;       // GL 4.0: glBlendFuncSeparatei / glBlendEquationSeparatei
     bool query_buffer = false;        // GL 4.4 or ARB_query_buffer_object: GL_QUERY_BUFFER exists
-    int viewports = 1;                // GL 4.1 viewport arrays: how many indices to save (<= 16)
+    int viewports = 1;                // viewport arrays (GL 4.1 or ARB_viewport_array): indices to save (<= 16)
     int max_draw_buffers = 8;
     int max_clip_distances = 8;
     bool software_rasterizer = false; // GL_RENDERER names one (renderer.h): the plan's sky tests depend on it

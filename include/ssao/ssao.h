@@ -74,11 +74,13 @@
  *   texture and sampler bindings of every unit it uses (units
  *   0..SSAO_TEXTURE_UNITS_USED-1), array, uniform and
  *   pixel-unpack buffer bindings (and the indexed uniform bindings 0 and 1),
- *   viewport and scissor box (every index of a GL 4.1 viewport array), enables
+ *   viewport and scissor box (every index of a viewport array: GL 4.1 or
+ *   GL_ARB_viewport_array), enables
  *   (scissor, depth, stencil, blend per draw buffer, cull face, rasterizer
  *   discard, polygon offset, colour logic op, sample mask, dither, framebuffer
  *   sRGB, multisample, alpha-to-coverage, clip distances 0-7), (1.2) the blend
- *   function and equation of draw buffer 0 (all buffers' below GL 4.0), polygon mode,
+ *   function and equation of draw buffer 0 (all buffers' below GL 4.0) where
+ *   the output is multiplied in, polygon mode,
  *   colour/depth/stencil write masks, the depth function and depth range
  *   (every index of a viewport array), clip control (where supported), the
  *   depth-stencil texture mode of a D24S8/D32FS8 input (GL 4.3+) and the

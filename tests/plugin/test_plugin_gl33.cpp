@@ -225,6 +225,33 @@ TEST_CASE("GL 3.3: create_context with the host's program flagged for deletion l
     CHECK(fx.gl_errors().empty());
 }
 
+TEST_CASE("GL 3.3 with GL_ARB_viewport_array: the host's other viewports, scissor boxes and depth ranges are kept") {
+    // The extension gives a 3.3 context GL 4.1's viewport arrays (Mesa offers
+    // it); glViewport, glScissor and glDepthRange set every index, so the
+    // guard must restore the others one by one here too.
+    testgl::Gl33Fixture fx;
+    auto& gl = fx.gl();
+    if (!gl.ARB_viewport_array) {
+        MESSAGE("no GL_ARB_viewport_array on this GL 3.3 context: nothing to observe");
+        return;
+    }
+    gl.ViewportIndexedf(1, 5.0f, 6.0f, 7.0f, 8.0f);
+    gl.ScissorIndexed(1, 1, 2, 3, 4);
+    gl.DepthRangeIndexed(1, 0.25, 0.75);
+    const testscenes::CreaseTextures scene(fx, 16);
+    REQUIRE(fx.run(scene.g, scene.proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE).status == SSAO_OK);
+    GLfloat v[4] = {};
+    GLint box[4] = {};
+    GLdouble range[2] = {};
+    gl.GetFloati_v(GL_VIEWPORT, 1, v);
+    gl.GetIntegeri_v(GL_SCISSOR_BOX, 1, box);
+    gl.GetDoublei_v(GL_DEPTH_RANGE, 1, range);
+    CHECK((v[0] == 5.0f && v[1] == 6.0f && v[2] == 7.0f && v[3] == 8.0f));
+    CHECK((box[0] == 1 && box[1] == 2 && box[2] == 3 && box[3] == 4));
+    CHECK((range[0] == 0.25 && range[1] == 0.75));
+    CHECK(fx.gl_errors().empty());
+}
+
 int main(int argc, char** argv) {
     if (argc == 2 && std::strcmp(argv[1], "--child-without-khr-debug") == 0) return child_without_khr_debug();
     doctest::Context context(argc, argv);
