@@ -301,6 +301,15 @@ GLuint link_trivial_program(GladGLContext& gl) {
                                  "#version 330 core\nout vec4 c;\nvoid main() { c = vec4(1.0); }\n");
 }
 
+// A host program made current, then flagged for deletion: GL deletes it once
+// another program is made current. Returns its name.
+GLuint current_flagged_program(GladGLContext& gl) {
+    const GLuint program = link_trivial_program(gl);
+    gl.UseProgram(program);
+    gl.DeleteProgram(program);
+    return program;
+}
+
 }  // namespace
 
 TEST_CASE("every listed piece of GL state is identical before and after execute, and the result is unaffected, on "
@@ -498,9 +507,7 @@ TEST_CASE("a host program flagged for deletion stays current through a refused e
     auto& gl = fx.gl();
     const auto proj = analytic::perspective(kFov, 1.0, 0.1, 100.0);
     const GBuffer g = analytic::render(crease_scene(), proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, 16, 16);
-    const GLuint program = link_trivial_program(gl);
-    gl.UseProgram(program);
-    gl.DeleteProgram(program);
+    const GLuint program = current_flagged_program(gl);
     const auto still_current = [&] {
         GLint current = -1;
         gl.GetIntegerv(GL_CURRENT_PROGRAM, &current);
@@ -535,9 +542,7 @@ TEST_CASE("a host program flagged for deletion while current does not make the r
     auto& gl = fx.gl();
     const auto proj = analytic::perspective(kFov, 1.0, 0.1, 100.0);
     const GBuffer g = analytic::render(crease_scene(), proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, 16, 16);
-    const GLuint program = link_trivial_program(gl);
-    gl.UseProgram(program);
-    gl.DeleteProgram(program);  // flagged: deleted once another program is made current
+    current_flagged_program(gl);
     REQUIRE(fx.run(g, proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE).status == SSAO_OK);
     GLint current = -1;
     gl.GetIntegerv(GL_CURRENT_PROGRAM, &current);
