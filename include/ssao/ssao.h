@@ -587,7 +587,10 @@ typedef enum ssao_log_level {
     SSAO_LOG_ERROR = 2,    /**< the call failed; the same sentence as last_error */
     SSAO_LOG_MAX_ENUM = 0x7fffffff  /**< not a value: keeps the enum 32 bits wide */
 } ssao_log_level;
-/** Receives the library's messages (one line each, no newline), on the calling thread. */
+/** Receives the library's messages (one line each, no newline), on the calling thread,
+ * possibly in the middle of execute while the library's GL state is in place:
+ * it must not call GL (what it changed would disturb the frame, or be undone
+ * by the state guard). */
 typedef void (SSAO_CALL *ssao_log_fn)(void* user, ssao_log_level level, const char* message);
 
 /** What create_context needs: the host's GL loader, and optionally a log and initial settings. */
