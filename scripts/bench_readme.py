@@ -411,18 +411,17 @@ def main():
     if os.path.exists(d + "/grid_study/plane_fit/llvmpipe/old_1.csv"):
         blocks["plane_fit_time"] = ab_table(d + "/grid_study/plane_fit", "the weighted mean (frame index 0)",
                                             "the plane fit (a moving frame index)", "upsample")
-        blocks["plane_fit_quick"] = ("Quick runs of every case (the build before the once-per-pixel bias, without "
-                                     "and with the fit): " + quick_means(d + "/upsample/taps2x2_dirs8.csv",
-                                                                          d + "/grid_study/plane_fit/quick_new.csv") + ".")
+        blocks["plane_fit_quick"] = quick_line("the build before the once-per-pixel bias, without and with the fit",
+                                               d + "/upsample/taps2x2_dirs8.csv", d + "/grid_study/plane_fit/quick_new.csv")
     if os.path.exists(d + "/grid_study/block_plane/llvmpipe/old_1.csv"):
         blocks["block_plane_time"] = ab_table(d + "/grid_study/block_plane", "every texel's plane (shipped)",
                                               "a plane past an edge read through the snap (not shipped)", "grid")
-        blocks["block_plane_quick"] = ("Quick runs of every case (without and with the check): " + quick_means(
-            d + "/grid_study/block_plane/quick_old.csv", d + "/grid_study/block_plane/quick_new.csv") + ".")
+        blocks["block_plane_quick"] = quick_line("without and with the check", d + "/grid_study/block_plane/quick_old.csv",
+                                                 d + "/grid_study/block_plane/quick_new.csv")
     if os.path.exists(d + "/step_length/steps_by_elevation.csv"):
-        blocks["steps_by_elevation"] = ("Quick runs of every case (the evenly spaced march, then steps by elevation): " +
-                                        quick_means(d + "/grid_study/block_plane/quick_old.csv",
-                                                    d + "/step_length/steps_by_elevation.csv") + ".")
+        blocks["steps_by_elevation"] = quick_line("the evenly spaced march, then steps by elevation",
+                                                  d + "/grid_study/block_plane/quick_old.csv",
+                                                  d + "/step_length/steps_by_elevation.csv")
     if os.path.exists(d + "/step_length/stretch/stretch_0.5.csv"):
         blocks["march_stretch"] = stretch_table(d)
     if os.path.exists(d + "/step_length/stretch/stretch_0.5_thickness_1.0.csv"):
@@ -992,6 +991,11 @@ def quick_means(old, new):
         return {label: mean(r["psnr"] for r in rows if r["config"] == name) for label, name, _ in PRESETS}
     a, b = means(old), means(new)
     return ", ".join("%s %s -> %s dB" % (label, f(a[label]), f(b[label])) for label, _, _ in PRESETS)
+
+
+def quick_line(what, old, new):
+    """One sentence of quick_means: "Quick runs of every case (WHAT): LOW a -> b dB, ..."."""
+    return "Quick runs of every case (%s): %s." % (what, quick_means(old, new))
 
 
 def stretch_table(d):

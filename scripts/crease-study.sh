@@ -19,10 +19,8 @@ while [ $# -gt 0 ]; do
     *) echo "crease-study: unknown argument '$1' (--out DIR)" >&2; exit 2 ;;
   esac
 done
-mkdir -p "$out"
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
 . scripts/bench-scenes.sh
+study_folders "$out"
 scenes=$bench_scenes
 runs="half:
 half_converged:--accumulate 64 --frame-index 1

@@ -26,11 +26,9 @@ while [ $# -gt 0 ]; do
   esac
 done
 cd "$(dirname "$0")/.."
-mkdir -p "$out"
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
 export LP_NUM_THREADS=1
 . scripts/bench-scenes.sh
+study_folders "$out"
 scenes=$bench_scenes
 configs="DEFAULT:build/plugin/libssao.so:
 every pixel, 8 directions:build/plugin/libssao.so:--resolution full --samples 8

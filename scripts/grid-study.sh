@@ -22,10 +22,8 @@ while [ $# -gt 0 ]; do
     *) echo "grid-study: unknown argument '$1' (--plugin PATH, --out DIR)" >&2; exit 2 ;;
   esac
 done
-mkdir -p "$out"
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
 . scripts/bench-scenes.sh
+study_folders "$out"
 scenes=$bench_scenes
 configs="DEFAULT:
 DEFAULT converged:--accumulate 64 --frame-index 1
