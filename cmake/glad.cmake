@@ -7,7 +7,7 @@ if(NOT SSAO_SYSTEM_PYTHON)
   set(SSAO_SYSTEM_PYTHON ${Python3_EXECUTABLE})
 endif()
 set(GLAD_DIR ${PROJECT_BINARY_DIR}/glad)
-set(GLAD_EXTENSIONS GL_KHR_debug,GL_ARB_clip_control,GL_ARB_timer_query,GL_ARB_direct_state_access,GL_ARB_viewport_array)
+set(GLAD_EXTENSIONS GL_KHR_debug,GL_ARB_clip_control,GL_ARB_timer_query,GL_ARB_direct_state_access,GL_ARB_viewport_array,GL_ARB_draw_buffers_blend)
 add_custom_command(
   OUTPUT ${GLAD_DIR}/src/gl.c ${GLAD_DIR}/include/glad/gl.h
   COMMAND ${SSAO_SYSTEM_PYTHON} -m glad --quiet --reproducible --api gl:core=4.5

@@ -109,7 +109,15 @@ ssao_status initialise(ssao_context& ctx, const ssao_context_desc& desc) {
     ctx.caps.depth_stencil_mode = v >= 43;
     ctx.caps.texture_target_query = v >= 45 && gl.GetTextureParameteriv != nullptr && gl.GetTextureLevelParameteriv != nullptr;
     ctx.caps.query_buffer = v >= 44 || has_gl_extension(gl, "GL_ARB_query_buffer_object");
-    ctx.caps.indexed_blend = v >= 40 && gl.BlendFuncSeparatei != nullptr && gl.BlendEquationSeparatei != nullptr;
+    // Per-draw-buffer blend functions: GL 4.0, or GL_ARB_draw_buffers_blend
+    // below it (Mesa offers it at 3.3), whose calls carry the ARB suffix;
+    // there the global glBlendFunc* calls set every buffer.
+    if (v < 40 && gl.ARB_draw_buffers_blend) {
+        gl.BlendFuncSeparatei = gl.BlendFuncSeparateiARB;
+        gl.BlendEquationSeparatei = gl.BlendEquationSeparateiARB;
+    }
+    ctx.caps.indexed_blend = (v >= 40 || gl.ARB_draw_buffers_blend) && gl.BlendFuncSeparatei != nullptr &&
+                             gl.BlendEquationSeparatei != nullptr;
     // Viewport arrays: GL 4.1, or GL_ARB_viewport_array below it (Mesa offers
     // it at 3.3), where glViewport, glScissor and glDepthRange set every index.
     if ((v >= 41 || gl.ARB_viewport_array) && gl.GetFloati_v && gl.ViewportIndexedfv && gl.ScissorIndexedv &&

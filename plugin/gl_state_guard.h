@@ -12,7 +12,7 @@ struct GlCaps {
     bool clip_control = false;        // GL 4.5 or ARB_clip_control
     bool depth_stencil_mode = false;  // GL 4.3: GL_DEPTH_STENCIL_TEXTURE_MODE
     bool texture_target_query = false;// GL 4.5: GL_TEXTURE_TARGET
-    bool indexed_blend = false;       // GL 4.0: glBlendFuncSeparatei / glBlendEquationSeparatei
+    bool indexed_blend = false;       // GL 4.0 or ARB_draw_buffers_blend: glBlendFuncSeparatei / glBlendEquationSeparatei
     bool query_buffer = false;        // GL 4.4 or ARB_query_buffer_object: GL_QUERY_BUFFER exists
     int viewports = 1;                // viewport arrays (GL 4.1 or ARB_viewport_array): indices to save (<= 16)
     int max_draw_buffers = 8;

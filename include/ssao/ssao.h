@@ -79,7 +79,8 @@
  *   (scissor, depth, stencil, blend per draw buffer, cull face, rasterizer
  *   discard, polygon offset, colour logic op, sample mask, dither, framebuffer
  *   sRGB, multisample, alpha-to-coverage, clip distances 0-7), (1.2) the blend
- *   function and equation of draw buffer 0 (all buffers' below GL 4.0) where
+ *   function and equation of draw buffer 0 (all buffers' below GL 4.0
+ *   without GL_ARB_draw_buffers_blend) where
  *   the output is multiplied in, polygon mode,
  *   colour/depth/stencil write masks, the depth function and depth range
  *   (every index of a viewport array), clip control (where supported), the

@@ -109,7 +109,7 @@ TEST_CASE("GL 3.3: MSAA inputs give the single-sample AO and errors are refused 
     CHECK(std::string(fx.api().last_error(fx.ctx())).find("sample_index") != std::string::npos);
 }
 
-TEST_CASE("GL 3.3: MULTIPLY blends through the non-indexed blend state and restores it and the blend enable") {
+TEST_CASE("GL 3.3: MULTIPLY multiplies the lit image and restores the blend function, equation and enable") {
     testgl::Gl33Fixture fx;
     auto& gl = fx.gl();
     const int w = 32, h = 24;
@@ -160,6 +160,51 @@ TEST_CASE("GL 3.3: MULTIPLY blends through the non-indexed blend state and resto
         }
         CHECK(wrong == 0);
         CHECK(*std::min_element(ao.begin(), ao.end()) < 0.9f);  // there was occlusion to multiply
+    }
+    CHECK(fx.gl_errors().empty());
+}
+
+TEST_CASE("GL 3.3 with GL_ARB_draw_buffers_blend: MULTIPLY keeps every draw buffer's own blend function and equation") {
+    // The extension gives a 3.3 context GL 4.0's per-buffer blend state
+    // through ARB-suffixed calls (Mesa offers it); the global glBlendFunc*
+    // sets every buffer, so a restore through it would give buffer 1 buffer 0's.
+    testgl::Gl33Fixture fx;
+    auto& gl = fx.gl();
+    if (!gl.ARB_draw_buffers_blend) {
+        MESSAGE("no GL_ARB_draw_buffers_blend on this GL 3.3 context: nothing to observe");
+        return;
+    }
+    const int w = 16, h = 16;
+    const auto proj = analytic::perspective(kFov, double(w) / h, 0.1, 100.0);
+    const GBuffer g = analytic::render(crease_scene(), proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, w, h);
+    const GLuint depth = fx.make_depth(GL_DEPTH_COMPONENT32F, w, h, g.depth);
+    GLuint target = 0;
+    gl.GenTextures(1, &target);
+    gl.BindTexture(GL_TEXTURE_2D, target);
+    gl.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, w, h, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+    gl.BindTexture(GL_TEXTURE_2D, 0);
+    gl.BlendFuncSeparateiARB(0, GL_SRC_ALPHA, GL_ONE, GL_DST_COLOR, GL_ZERO);
+    gl.BlendEquationSeparateiARB(0, GL_FUNC_SUBTRACT, GL_MAX);
+    gl.BlendFuncSeparateiARB(1, GL_ONE_MINUS_DST_ALPHA, GL_CONSTANT_COLOR, GL_SRC_COLOR, GL_ONE);
+    gl.BlendEquationSeparateiARB(1, GL_MIN, GL_FUNC_REVERSE_SUBTRACT);
+    fx.settings(testscenes::make(8, SSAO_BLUR_NONE));
+    ssao_inputs in = fx.inputs(depth, 0, proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE);
+    in.output_texture = target;
+    in.output_mode = SSAO_OUTPUT_MODE_MULTIPLY;
+    REQUIRE(fx.api().execute(fx.ctx(), &in, nullptr) == SSAO_OK);
+    const GLenum queries[] = {GL_BLEND_SRC_RGB, GL_BLEND_DST_RGB, GL_BLEND_SRC_ALPHA,
+                              GL_BLEND_DST_ALPHA, GL_BLEND_EQUATION_RGB, GL_BLEND_EQUATION_ALPHA};
+    const GLint expected[2][6] = {
+        {GL_SRC_ALPHA, GL_ONE, GL_DST_COLOR, GL_ZERO, GL_FUNC_SUBTRACT, GL_MAX},
+        {GL_ONE_MINUS_DST_ALPHA, GL_CONSTANT_COLOR, GL_SRC_COLOR, GL_ONE, GL_MIN, GL_FUNC_REVERSE_SUBTRACT}};
+    for (GLuint buffer : {0u, 1u}) {
+        CAPTURE(buffer);
+        for (int q = 0; q < 6; ++q) {
+            CAPTURE(q);
+            GLint got = 0;
+            gl.GetIntegeri_v(queries[q], buffer, &got);
+            CHECK(got == expected[buffer][q]);
+        }
     }
     CHECK(fx.gl_errors().empty());
 }
