@@ -27,11 +27,14 @@ GlStateGuard::GlStateGuard(const GladGLContext& gl, const GlCaps& caps, GLuint u
     gl.GetIntegerv(GL_CURRENT_PROGRAM, &host_program_);
     program_ = host_program_;
     if (program_ != 0) {
-        // A program the host flagged for deletion while current is deleted as
-        // soon as the passes bind theirs: it cannot be made current again.
-        GLint flagged = GL_FALSE;
+        // Two current programs cannot be made current again once the passes
+        // bind theirs: one the host flagged for deletion (GL deletes it then),
+        // and one whose last re-link failed (GL keeps its old executable in
+        // use but refuses glUseProgram on it).
+        GLint flagged = GL_FALSE, linked = GL_TRUE;
         gl.GetProgramiv(static_cast<GLuint>(program_), GL_DELETE_STATUS, &flagged);
-        if (flagged) program_ = 0;
+        if (!flagged) gl.GetProgramiv(static_cast<GLuint>(program_), GL_LINK_STATUS, &linked);
+        if (flagged || !linked) program_ = 0;
     }
     gl.GetIntegerv(GL_VERTEX_ARRAY_BINDING, &vao_);
     gl.GetIntegerv(GL_ACTIVE_TEXTURE, &active_texture_);

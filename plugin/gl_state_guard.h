@@ -52,6 +52,7 @@ private:
     GLint draw_fbo_ = 0, read_fbo_ = 0, vao_ = 0, active_texture_ = 0;
     GLint host_program_ = 0;  // current at construction
     GLint program_ = 0;       // made current again where a pass bound its own: 0 if the host's was flagged
+                              // for deletion or its last re-link failed
     GLint texture_2d_[kUnits] = {}, texture_2d_ms_[kUnits] = {}, sampler_[kUnits] = {};
     GLint array_buffer_ = 0, uniform_buffer_ = 0, unpack_buffer_ = 0;
     GLuint ubo_index_[2] = {};

@@ -101,9 +101,11 @@
  *   feedback, conditional render or occlusion/primitive query is active (GL
  *   would refuse, skip or count its draws). A current program the host already
  *   flagged for deletion is deleted when execute binds its own; the guard then
- *   leaves program 0 current. It never calls glGetError (so the host's pending
- *   errors stay the host's, and a GL allocation failure cannot be reported as
- *   OUT_OF_MEMORY).
+ *   leaves program 0 current. It does the same for a current program whose
+ *   last re-link failed: GL keeps its old executable in use until another
+ *   program is made current, and refuses to make it current again. It never
+ *   calls glGetError (so the host's pending errors stay the host's, and a GL
+ *   allocation failure cannot be reported as OUT_OF_MEMORY).
  * - Below GL 4.5 a texture name of another target (a 2D array, say) cannot be
  *   told from a 2D texture without binding it: the failed bind raises
  *   GL_INVALID_OPERATION, which the host's debug output will see, and execute

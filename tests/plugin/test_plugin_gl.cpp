@@ -549,3 +549,31 @@ TEST_CASE("a host program flagged for deletion while current does not make the r
     CHECK(current == 0);  // it no longer exists; the documented fallback
     CHECK(fx.gl_errors().empty());
 }
+
+TEST_CASE("a current host program whose re-link failed does not make the restore raise an error") {
+    // GL keeps such a program's old executable in use but refuses to make it
+    // current again (GL_INVALID_OPERATION), so it cannot be restored.
+    testgl::Fixture fx;
+    auto& gl = fx.gl();
+    const auto proj = analytic::perspective(kFov, 1.0, 0.1, 100.0);
+    const GBuffer g = analytic::render(crease_scene(), proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, 16, 16);
+    const GLuint program = link_trivial_program(gl);
+    gl.UseProgram(program);
+    // A second fragment shader with its own main: the re-link fails.
+    const GLuint second = gl.CreateShader(GL_FRAGMENT_SHADER);
+    const char* source = "#version 330 core\nvoid main() {}\n";
+    gl.ShaderSource(second, 1, &source, nullptr);
+    gl.CompileShader(second);
+    gl.AttachShader(program, second);
+    gl.LinkProgram(program);
+    GLint linked = GL_TRUE;
+    gl.GetProgramiv(program, GL_LINK_STATUS, &linked);
+    REQUIRE(linked == GL_FALSE);
+    REQUIRE(fx.run(g, proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE).status == SSAO_OK);
+    GLint current = -1;
+    gl.GetIntegerv(GL_CURRENT_PROGRAM, &current);
+    CHECK(current == 0);  // not the library's program: the documented fallback
+    CHECK(fx.gl_errors().empty());
+    gl.DeleteProgram(program);
+    gl.DeleteShader(second);
+}
