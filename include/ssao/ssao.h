@@ -99,7 +99,9 @@
  *   through its own sampler objects, so filters, wrap and compare modes do not
  *   matter; base level 0 and no swizzle are assumed); that no transform
  *   feedback, conditional render or occlusion/primitive query is active (GL
- *   would refuse, skip or count its draws). A current program the host already
+ *   would refuse, skip or count its draws); that the depth range lies in
+ *   [0, 1] (one set unclamped through GL_NV_depth_buffer_float comes back
+ *   clamped). A current program the host already
  *   flagged for deletion is deleted when execute binds its own; the guard then
  *   leaves program 0 current. It does the same for a current program whose
  *   last re-link failed: GL keeps its old executable in use until another
