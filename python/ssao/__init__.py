@@ -13,7 +13,8 @@ of its function table:
                           normal_packing=ssao.SSAO_NORMAL_PACKING_SIGNED)
         print(out.texture, ctx.timings().total_ms)
 
-Where Library() finds the library (search_order()), the first that loads of:
+Where Library() finds the library (search_order()), the first that loads, has
+ssao_get_api and accepts this interface version, of:
   1. beside this module: <package dir>/libssao.so.1 (a copy installed as package data);
   2. the build tree this copy of the module was generated into (build/python/ssao:
      the build's plugin/libssao.so.1, named by a _build_paths.py that only the
@@ -56,7 +57,7 @@ import sys
 from typing import Any, Callable, Iterable, List, Optional, Sequence, Type, Union
 
 __all__ = ["Library", "Context", "Error", "search_order", "matrix16", "make_inputs", "__version__"]
-# plus every SSAO_* constant and ssao_* type below
+# plus every SSAO_* constant and ssao_* type below (appended at the end of the module)
 
 
 def _read_version() -> str:
@@ -265,13 +266,32 @@ _enum = ctypes.c_int
 # ------------------------------------------------------------------- structs
 
 
+# The integer field types and the values they hold: ctypes would wrap any other
+# silently (2**32 + 1 becomes 1, which may be a valid enum value).
+_INT_RANGES = {ctypes.c_uint32: (0, 2**32), ctypes.c_int32: (-2**31, 2**31), ctypes.c_int: (-2**31, 2**31)}
+
+
 class _Sized(ctypes.Structure):
-    """A struct whose first field is `uint32_t size`, set to sizeof on creation."""
+    """A struct whose first field is `uint32_t size`, set to sizeof on creation.
+    An integer field refuses a value its C type cannot hold."""
 
     def __init__(self, *args, **kwargs):
         super().__init__(*args, **kwargs)
         if "size" not in kwargs:
             self.size = ctypes.sizeof(self)
+
+    def __setattr__(self, name: str, value: Any) -> None:
+        kind = dict(self._fields_).get(name)
+        if kind in _INT_RANGES:
+            number = _integer(value)
+            low, high = _INT_RANGES[kind]
+            if number is not None and not low <= number < high:
+                what = "%s.%s" % (type(self).__name__, name)
+                if name in _ENUM_FIELDS:
+                    _check_enum(what, what, _ENUM_FIELDS[name], value)
+                raise ValueError("%s %d does not fit a%s 32-bit field" %
+                                 (what, number, "n unsigned" if kind is ctypes.c_uint32 else ""))
+        super().__setattr__(name, value)
 
     def __repr__(self):
         fields = ", ".join("%s=%r" % (name, _plain(getattr(self, name))) for name, _ in self._fields_)
@@ -524,7 +544,7 @@ def matrix16(value: Matrix, name: str = "matrix") -> "ctypes.Array[ctypes.c_floa
         raise TypeError("%s holds something that is not a number: %r" % (name, flat)) from None
 
 
-def _vector(value: Any, count: int, name: str, ctype: Any, convert: Callable[[Any], Any]) -> Any:
+def _vector(value: Any, count: int, name: str, ctype: Any, convert: Callable[[Any], Any], what: str) -> Any:
     items = _as_list(value)
     try:
         items = list(items)
@@ -537,7 +557,7 @@ def _vector(value: Any, count: int, name: str, ctype: Any, convert: Callable[[An
     except OverflowError as e:
         raise ValueError("%s: %s" % (name, e)) from None
     except (TypeError, ValueError):
-        raise TypeError("%s holds something that is not a number: %r" % (name, items)) from None
+        raise TypeError("%s holds something that is not %s: %r" % (name, what, items)) from None
 
 
 def _int32(value: Any) -> int:
@@ -566,7 +586,7 @@ def make_inputs(**fields: Any) -> ssao_inputs:
         if name in ("projection", "view_matrix"):
             value = matrix16(value, name)
         elif name == "viewport":
-            value = _vector(value, 4, name, ctypes.c_int32, _int32)
+            value = _vector(value, 4, name, ctypes.c_int32, _int32, "an integer")
         elif name in _ENUM_FIELDS:
             value = _check_enum("execute", "ssao_inputs." + name, _ENUM_FIELDS[name], value)
         elif name == "size" or not hasattr(inputs, name):
@@ -645,6 +665,7 @@ class Library:
         if path is not None and not os.fspath(path):
             raise OSError("cannot load the SSAO plugin: the path given is empty")
         errors = []
+        refused = None  # the last candidate whose ssao_get_api refused this interface version
         self._dll = None
         for candidate in search_order(path):
             # A path that is not there is skipped quietly unless it was the one asked for.
@@ -652,19 +673,28 @@ class Library:
                 errors.append("%s: not there" % candidate)
                 continue
             try:
-                self._dll = ctypes.CDLL(candidate, mode=os.RTLD_NOW | os.RTLD_LOCAL)
-                self.path = candidate
-                break
+                dll = ctypes.CDLL(candidate, mode=os.RTLD_NOW | os.RTLD_LOCAL)
+                get_api = PFN_ssao_get_api(("ssao_get_api", dll))
             except OSError as e:
                 errors.append(str(e))
+                continue
+            except AttributeError:
+                errors.append("%s: not the SSAO plugin (no ssao_get_api)" % candidate)
+                continue
+            api = ssao_api()
+            status = get_api(SSAO_API_VERSION, ctypes.byref(api))
+            if status != SSAO_OK:
+                refused = status
+                errors.append("%s refused interface version %d.%d" %
+                              (candidate, SSAO_API_VERSION >> 16, SSAO_API_VERSION & 0xFFFF))
+                continue
+            self._dll, self.api, self.path = dll, api, candidate
+            break
         if self._dll is None:
-            raise OSError("cannot load the SSAO plugin (pass a path or set SSAO_PLUGIN); tried: " + "; ".join(errors))
-        get_api = PFN_ssao_get_api(("ssao_get_api", self._dll))
-        self.api = ssao_api()
-        status = get_api(SSAO_API_VERSION, ctypes.byref(self.api))
-        if status != SSAO_OK:
-            raise Error("ssao_get_api", status, "%s refused interface version %d.%d" %
-                        (self.path, SSAO_API_VERSION >> 16, SSAO_API_VERSION & 0xFFFF))
+            tried = "; ".join(errors)
+            if refused is not None:
+                raise Error("ssao_get_api", refused, tried)
+            raise OSError("cannot load the SSAO plugin (pass a path or set SSAO_PLUGIN); tried: " + tried)
         self.version = (self.api.version >> 16, self.api.version & 0xFFFF)
 
     def status_string(self, status: int) -> str:
@@ -716,17 +746,34 @@ class Context:
                  settings: Optional[ssao_settings], log: Optional[Callable[[ssao_log_level, str], None]]) -> None:
         self._lib = library
         self._api = library.api
-        self._messages: List[str] = []
+        self._last_message: Optional[str] = None  # the last ERROR-level log line
+        self._loader_error: Optional[str] = None
 
         def on_log(_user: Any, level: int, message: Optional[bytes]) -> None:
             text = _text(message)
             if level == SSAO_LOG_ERROR:
-                self._messages.append(text)
+                self._last_message = text
             if log:
                 log(ssao_log_level(level), text)
 
+        def get_proc(user: Any, name: bytes) -> Optional[int]:
+            # A ctypes callback that raises, or returns what is not an address,
+            # hands C whatever the previous call returned: answer NULL instead.
+            try:
+                address = get_proc_address(user, name)
+                if isinstance(address, ctypes.c_void_p):
+                    address = address.value
+                if address is None or _integer(address) is not None:
+                    return address
+                raise TypeError("returned %s, not an address (an int or None)" % type(address).__name__)
+            except Exception as e:  # noqa: BLE001 - any failure of the host's loader is reported, not raised in C
+                if self._loader_error is None:
+                    self._loader_error = "get_proc_address failed for %s: %s: %s" % (
+                        _text(name), type(e).__name__, e)
+                return None
+
         # The callbacks must live as long as the context: the library may call them any time.
-        self._get_proc = ssao_get_proc_address_fn(get_proc_address)
+        self._get_proc = ssao_get_proc_address_fn(get_proc)
         self._log = ssao_log_fn(on_log)
         desc = ssao_context_desc()
         desc.get_proc_address = self._get_proc
@@ -736,11 +783,20 @@ class Context:
         self._ctx = _ctx_p()
         status = self._api.create_context(ctypes.byref(desc), ctypes.byref(self._ctx))
         if status != SSAO_OK:
-            raise Error("create_context", status, self._messages[-1] if self._messages else library.status_string(status))
+            message = self._last_message or library.status_string(status)
+            if self._loader_error:  # what the NULL it returned instead stood for
+                message += " (%s)" % self._loader_error
+            raise Error("create_context", status, message)
 
     def last_error(self) -> str:
         """The context's own sentence on its last failure."""
         return _text(self._api.last_error(self._ctx))
+
+    def _handle(self, function: str) -> Any:
+        """The C context, for a call; Error(NULL_POINTER) once destroy() has freed it."""
+        if not self._ctx:
+            raise Error(function, SSAO_ERROR_NULL_POINTER, "this Context was destroyed")
+        return self._ctx
 
     def _check(self, function: str, status: int) -> None:
         if status != SSAO_OK:
@@ -749,11 +805,13 @@ class Context:
     def set_settings(self, settings: ssao_settings) -> None:
         _check_struct("set_settings", settings, ssao_settings)
         _check_enum_fields("set_settings", settings)
-        self._check("set_settings", self._api.set_settings(self._ctx, ctypes.byref(settings)))
+        ctx = self._handle("set_settings")
+        self._check("set_settings", self._api.set_settings(ctx, ctypes.byref(settings)))
 
     def get_settings(self) -> ssao_settings:
         out = ssao_settings()
-        self._check("get_settings", self._api.get_settings(self._ctx, ctypes.byref(out)))
+        ctx = self._handle("get_settings")
+        self._check("get_settings", self._api.get_settings(ctx, ctypes.byref(out)))
         return out
 
     def execute(self, inputs: Optional[ssao_inputs] = None, **fields: Any) -> ssao_output:
@@ -768,28 +826,31 @@ class Context:
             _check_struct("execute", inputs, ssao_inputs)
             _check_enum_fields("execute", inputs)
         out = ssao_output()
-        self._check("execute", self._api.execute(self._ctx, ctypes.byref(inputs), ctypes.byref(out)))
+        ctx = self._handle("execute")
+        self._check("execute", self._api.execute(ctx, ctypes.byref(inputs), ctypes.byref(out)))
         return out
 
     def timings(self) -> ssao_timings:
         out = ssao_timings()
-        self._check("get_timings", self._api.get_timings(self._ctx, ctypes.byref(out)))
+        ctx = self._handle("get_timings")
+        self._check("get_timings", self._api.get_timings(ctx, ctypes.byref(out)))
         return out
 
     def frame_info(self) -> ssao_frame_info:
         out = ssao_frame_info()
-        self._check("get_frame_info", self._api.get_frame_info(self._ctx, ctypes.byref(out)))
+        ctx = self._handle("get_frame_info")
+        self._check("get_frame_info", self._api.get_frame_info(ctx, ctypes.byref(out)))
         return out
 
     def destroy(self) -> None:
         """Deletes the context's GL objects (its GL context must be current). Idempotent."""
         if self._ctx:
+            self._last_message = None
             status = self._api.destroy_context(self._ctx)
             self._ctx = _ctx_p()
             # The context is gone: its sentence came through the log, if at all.
             if status != SSAO_OK:
-                raise Error("destroy_context", status,
-                            self._messages[-1] if self._messages else self._lib.status_string(status))
+                raise Error("destroy_context", status, self._last_message or self._lib.status_string(status))
 
     def __enter__(self) -> "Context":
         return self
@@ -797,3 +858,6 @@ class Context:
     def __exit__(self, *exc: Any) -> bool:
         self.destroy()
         return False
+
+
+__all__ += sorted(name for name in globals() if name.startswith(("SSAO_", "ssao_", "PFN_ssao_")))

@@ -119,6 +119,26 @@ def main():
     check(ssao.make_inputs(depth_texture=2**32 - 1).depth_texture == 2**32 - 1, "the largest GL name is taken")
     ok, e = raises(lambda: lib.status_string(2**40), ValueError)
     check(ok, "status_string(2**40) is refused, not read as 0 ('success'): %s" % e)
+    ok, e = raises(lambda: ssao.make_inputs(viewport=[0, 0, 64.0, 48.0]), TypeError)
+    check(ok and "not an integer" in str(e), "a float viewport is named as not an integer: %s" % e)
+    # A struct field set by attribute is range-checked too: 2**32 + 1 is not KERNEL (1).
+    s = ssao.ssao_settings()
+    ok, e = raises(lambda: setattr(s, "method", 2**32 + 1), ssao.Error)
+    check(ok and e.status == ssao.SSAO_ERROR_INVALID_ENUM and str(2**32 + 1) in str(e) and "SSAO_METHOD_KERNEL" in str(e),
+          "settings.method = 2**32 + 1 is refused naming it: %s" % e)
+    ok, e = raises(lambda: ssao.ssao_settings(method=2**32 + 1), ssao.Error)
+    check(ok and e.status == ssao.SSAO_ERROR_INVALID_ENUM, "ssao_settings(method=2**32 + 1) is refused: %s" % e)
+    for field, value in (("seed", 2**32 + 7), ("seed", -1), ("step_count", 2**33)):
+        ok, e = raises(lambda: setattr(s, field, value), ValueError)
+        check(ok and "ssao_settings.%s" % field in str(e) and "32-bit" in str(e),
+              "settings.%s = %d is refused, not wrapped: %s" % (field, value, e))
+    check(s.method == 0 and s.seed == 0, "a refused value leaves the field as it was")
+    inputs = ssao.ssao_inputs()
+    ok, e = raises(lambda: setattr(inputs, "frame_index", 2**32), ValueError)
+    check(ok and "ssao_inputs.frame_index" in str(e), "inputs.frame_index = 2**32 is refused: %s" % e)
+    s.seed = 2**32 - 1
+    s.method = ssao.SSAO_METHOD_KERNEL
+    check(s.seed == 2**32 - 1 and s.method == 1, "values that fit are taken")
 
     # Structs of the wrong type and callbacks that are not callable are TypeErrors naming the function.
     for what, fn in (("resolve_settings({})", lambda: lib.resolve_settings({})),

@@ -87,6 +87,14 @@ def main():
         prefix = os.path.join(work, "prefix")
         site = os.path.join(prefix, "lib", "python3.11", "site-packages")
         shutil.copytree(package, os.path.join(site, "ssao"))
+        # A shared library there that is not the plugin (a Python extension module) does not end the search.
+        import _ctypes
+        shutil.copy(_ctypes.__file__, os.path.join(prefix, "lib", SONAME))
+        code, out, err = run_python(LOAD, site, work, {"SSAO_PLUGIN": plugin})
+        check(code == 0 and out == plugin, "a file that is not the plugin is passed over: %r %s" % (out, err))
+        code, out, err = run_python(LOAD, site, work)
+        check(code != 0 and "OSError" in err and "not the SSAO plugin" in err,
+              "and named when nothing else is found: %s" % err.splitlines()[-1:])
         shutil.copy(plugin, os.path.join(prefix, "lib", SONAME))
         code, out, err = run_python(LOAD, site, work, {"SSAO_PLUGIN": plugin})
         check(code == 0 and out == os.path.join(prefix, "lib", SONAME),

@@ -66,17 +66,32 @@ def main():
 
     # destroy() after the library freed the context (WRONG_CONTEXT): the message is the one the
     # log carried, not last_error(NULL)'s "no context". A stand-in table, so no second GL context is needed.
+    context = ssao.Context.__new__(ssao.Context)
+
     class Table:
+        logs = True
+
         @staticmethod
         def destroy_context(_ctx):
+            if Table.logs:  # what the log callback would do during the call
+                context._last_message = "destroy_context: another GL context is current"
             return ssao.SSAO_ERROR_WRONG_CONTEXT
-    context = ssao.Context.__new__(ssao.Context)
     context._lib, context._api, context._ctx = lib, Table(), ctypes.c_void_p(1)
-    context._messages = ["destroy_context: another GL context is current"]
+    context._last_message = "an older, unrelated failure"
     ok, e = raises(context.destroy, ssao.SSAO_ERROR_WRONG_CONTEXT)
     check(ok and "another GL context" in e.last_error, "destroy() reports the logged sentence: %r" % (e,))
     check(not context._ctx, "destroy() forgets the freed context")
+    ok, e = raises(lambda: context.execute(depth_texture=1), ssao.SSAO_ERROR_NULL_POINTER)
+    check(ok and "destroyed" in e.last_error, "execute() after destroy() says the context was destroyed: %r" % (e,))
+    Table.logs = False
+    context._ctx, context._last_message = ctypes.c_void_p(1), "an older, unrelated failure"
+    ok, e = raises(context.destroy, ssao.SSAO_ERROR_WRONG_CONTEXT)
+    check(ok and "older" not in e.last_error, "a failure that logged nothing does not carry an older sentence: %r" % (e,))
 
+    names = {}
+    exec("from ssao import *", names)
+    check(all(n in names for n in ("SSAO_OK", "SSAO_PRESET_HIGH", "ssao_settings", "ssao_status", "Library")),
+          "from ssao import * gives the constants and types too")
     try:
         ssao.Library("/nonexistent/libssao.so")
         check(False, "a missing library raises OSError")
