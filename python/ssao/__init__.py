@@ -15,7 +15,7 @@ of its function table:
 
 Where Library() finds the library (search_order()), the first that loads, has
 ssao_get_api and accepts this interface version, of:
-  1. beside this module: <package dir>/libssao.so.1 (a copy installed as package data);
+  1. beside this module: <package dir>/libssao.so.1 (a copy shipped there as package data);
   2. the build tree this copy of the module was generated into (build/python/ssao:
      the build's plugin/libssao.so.1, named by a _build_paths.py that only the
      build tree has; an installed module has none);
