@@ -46,9 +46,17 @@ ssao_status analyse_projection(const float m[16], ssao_clip_range clip, Projecti
             return SSAO_ERROR_INVALID_VALUE;
         }
     }
+    // A projection is homogeneous: k P maps every view point to the same NDC
+    // for any k > 0, but a k far from 1 would overflow the shaders' squares
+    // of clip w (AO 1 everywhere). Scaled by the power of two that brings its
+    // largest element into [1, 2), which is exact in binary floating point,
+    // every such k P gives the same constants as P does.
+    double largest = 0.0;
+    for (int i = 0; i < 16; ++i) largest = std::max(largest, std::abs(double(m[i])));
+    const double scale = largest > 0.0 ? std::ldexp(1.0, -std::ilogb(largest)) : 1.0;
     ProjectionInfo p;
     for (int c = 0; c < 4; ++c)
-        for (int r = 0; r < 4; ++r) p.proj[c][r] = m[c * 4 + r];
+        for (int r = 0; r < 4; ++r) p.proj[c][r] = m[c * 4 + r] * scale;
     p.ndc_per_depth = clip == SSAO_CLIP_ZERO_TO_ONE ? 1.0 : 2.0;
     const double ndc_lo = clip == SSAO_CLIP_ZERO_TO_ONE ? 0.0 : -1.0;
 
@@ -110,6 +118,13 @@ ssao_status analyse_projection(const float m[16], ssao_clip_range clip, Projecti
         p.near_distance = (ndc_near - a) / b;
         p.far_distance = (ndc_far - a) / b;
         p.infinite_far = false;
+    }
+    // get_frame_info reports both as floats; a finite far plane must stay finite.
+    const double float_max = std::numeric_limits<float>::max();
+    if (!(std::abs(p.near_distance) <= float_max) || !(std::abs(p.far_distance) <= float_max || p.infinite_far)) {
+        why = "the projection's near or far plane lies beyond 32-bit float range (" + std::to_string(p.near_distance) +
+              ", " + std::to_string(p.far_distance) + ")";
+        return SSAO_ERROR_INVALID_PROJECTION;
     }
     p.sky_depth = p.reverse_z ? 0.0f : 1.0f;
     out = p;

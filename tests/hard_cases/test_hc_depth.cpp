@@ -114,6 +114,37 @@ TEST_CASE("depth conventions: orthographic in [-1,1], [0,1] and reversed give th
     CHECK(fx.gl_errors().empty());
 }
 
+TEST_CASE("depth conventions: a projection scaled by any factor from 1e-19 to 1e19 gives the unscaled one's AO") {
+    // k P maps every view point to the same NDC. Unless the library takes the
+    // scale out, k = 1e19 or 1e-19 overflows the shaders' squares of clip w
+    // and gives AO 1 everywhere with an OK status.
+    HC_EACH_METHOD(method);
+    testgl::Fixture fx;
+    const int W = 48, H = 36;
+    const Scene scene = hc::crease_scene();
+    const ssao_settings s = fx.settings(hc::make(16, SSAO_BLUR_NONE, SSAO_ROTATION_HASH, 1.0f, method));
+    for (const glm::dmat4& proj : {analytic::perspective(hc::kFov, double(W) / H, 0.1, 100.0),
+                                   hc::ortho_zo(4.0, 3.0, 0.5, 60.0)}) {
+        const bool ortho = proj[3][3] != 0.0;
+        CAPTURE(ortho);
+        const ssao_clip_range clip = ortho ? SSAO_CLIP_ZERO_TO_ONE : SSAO_CLIP_NEGATIVE_ONE_TO_ONE;
+        const GBuffer g = analytic::render(scene, proj, clip, W, H);
+        const auto ref = hc::run(fx, g, proj, clip);
+        REQUIRE(ref.status == SSAO_OK);
+        CHECK(*std::min_element(ref.ao.begin(), ref.ao.end()) < 0.8f);  // the crease darkens
+        for (double k : {std::ldexp(1.0, -60), std::ldexp(1.0, 60), 1e-19, 1e19, 3.0}) {
+            CAPTURE(k);
+            const auto r = hc::run(fx, g, proj * k, clip);
+            REQUIRE(r.status == SSAO_OK);
+            if (std::ldexp(1.0, std::ilogb(k)) == k)  // a power of two: exact in floats, the same AO bit for bit
+                CHECK(r.ao == ref.ao);
+            else
+                hc::check_same_ao(ref.ao, r.ao, s.sample_count, "k P vs P");
+        }
+    }
+    CHECK(fx.gl_errors().empty());
+}
+
 TEST_CASE("depth conventions: an off-centre frustum gives the AO of the matching half of the symmetric one") {
     HC_EACH_METHOD(method);
     testgl::Fixture fx;
