@@ -5,6 +5,7 @@
 
 #include "context.h"
 #include "raw_enum.h"
+#include "resources.h"
 
 #include <cmath>
 #include <string>
@@ -178,6 +179,12 @@ ssao_status check_inputs(ssao_context& ctx, const ssao_inputs& in, AnalysedInput
     }
     if (in.output_texture != 0 && (in.output_texture == in.depth_texture || in.output_texture == in.normal_texture))
         return ctx.fail(SSAO_ERROR_INVALID_TEXTURE, "inputs.output_texture is also an input (a feedback loop)");
+    // With no output_texture the library writes (and may reallocate) its own.
+    if (in.output_texture == 0 && ctx.output != 0 &&
+        (ctx.output == in.depth_texture || (!from_depth && ctx.output == in.normal_texture)) && owned_output_alive(ctx))
+        return ctx.fail(SSAO_ERROR_INVALID_TEXTURE,
+                        std::string(ctx.output == in.depth_texture ? "inputs.depth_texture" : "inputs.normal_texture") +
+                            " is the library's own output texture, which this execute writes (a feedback loop)");
 
     out.proj = proj;
     out.world_normals = world_normals;

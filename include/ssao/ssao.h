@@ -191,7 +191,8 @@ typedef enum ssao_status {
     /** A texture name is 0 where one is required, is not a texture, is not a
      * GL_TEXTURE_2D ((1.2) the depth and normal textures may both be
      * GL_TEXTURE_2D_MULTISAMPLE), the depth and normal textures differ in
-     * size, target or sample count, or the output is also an input. */
+     * size, target or sample count, or the output (the host's output_texture,
+     * or without one the library's own) is also an input. */
     SSAO_ERROR_INVALID_TEXTURE = 7,
     /** The depth texture's internal format is not D16, D24, D24S8, D32F or
      * D32FS8, the normal texture has fewer than three channels or an integer

@@ -2,7 +2,8 @@
 // execute makes a new one (same size, or after a size change) with the AO a
 // fresh context gives, without a GL error. (A host texture that took the
 // deleted name is told apart by its label; Mesa does not hand a freed name
-// out again, so that case cannot be made here.)
+// out again, so that case cannot be made here.) The library's output handed
+// back as an input is refused.
 #include <doctest/doctest.h>
 
 #include "gl_fixture.h"
@@ -88,5 +89,53 @@ TEST_CASE("deleted output: the host deletes the library's output, the next execu
     CHECK(gl.IsTexture(scene.depth));
     CHECK(gl.IsTexture(scene.normal));
     for (const std::string& e : fx.gl_errors()) MESSAGE(e);
+    CHECK(fx.gl_errors().empty());
+}
+
+TEST_CASE("the library's own output passed back as an input is refused and left as it was") {
+    // An execute without output_texture writes, and may reallocate, the
+    // library's output: reading it as an input would be a feedback loop.
+    testgl::Fixture fx;
+    auto& gl = fx.gl();
+    Scene scene(fx);
+    ssao_output out{};
+    out.size = sizeof out;
+    REQUIRE(fx.api().execute(fx.ctx(), &scene.in, &out) == SSAO_OK);
+    const GLuint own = out.texture;
+    const std::vector<float> ao = fx.read_red(own, kSize, kSize);
+    GLint format = 0;
+    gl.BindTexture(GL_TEXTURE_2D, own);
+    gl.GetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_INTERNAL_FORMAT, &format);
+    ssao_settings normals_view{};
+    normals_view.debug_view = SSAO_DEBUG_VIEW_NORMALS;  // an RGBA output, which would pass as a normal texture
+    fx.settings(normals_view);
+    for (const char* field : {"depth_texture", "normal_texture"}) {
+        CAPTURE(field);
+        ssao_inputs in = scene.in;
+        (std::string(field) == "depth_texture" ? in.depth_texture : in.normal_texture) = own;
+        ssao_output refused{};
+        refused.size = sizeof refused;
+        CHECK(fx.api().execute(fx.ctx(), &in, &refused) == SSAO_ERROR_INVALID_TEXTURE);
+        const std::string why = fx.api().last_error(fx.ctx());
+        CHECK(why.find(std::string("inputs.") + field + " is the library's own output") != std::string::npos);
+    }
+    GLint after = 0;
+    gl.BindTexture(GL_TEXTURE_2D, own);
+    gl.GetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_INTERNAL_FORMAT, &after);
+    gl.BindTexture(GL_TEXTURE_2D, 0);
+    CHECK(after == format);
+    CHECK(fx.read_red(own, kSize, kSize) == ao);
+    // With a host output the library's own is not written: reading it is fine.
+    GLuint host_output = 0;
+    gl.GenTextures(1, &host_output);
+    gl.BindTexture(GL_TEXTURE_2D, host_output);
+    gl.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, kSize, kSize, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+    gl.BindTexture(GL_TEXTURE_2D, 0);
+    ssao_inputs in = scene.in;
+    in.normal_texture = own;
+    in.normal_packing = SSAO_NORMAL_PACKING_UNORM;
+    in.output_texture = host_output;
+    CHECK(fx.api().execute(fx.ctx(), &in, nullptr) != SSAO_ERROR_INVALID_TEXTURE);
+    gl.DeleteTextures(1, &host_output);
     CHECK(fx.gl_errors().empty());
 }
