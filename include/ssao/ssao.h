@@ -563,7 +563,8 @@ typedef struct ssao_timings {
     double blur_ms;              /**< all blur passes and the upsample */
     double total_ms;             /**< whole execute on the GPU (= the sum of pass_ms) */
     /** 1.1 */
-    uint32_t pass_count;         /**< passes that frame ran, 1..SSAO_MAX_PASSES (0 when not available) */
+    uint32_t pass_count;         /**< passes that frame ran, 0..SSAO_MAX_PASSES (0 when not available, or for a
+                                      frame that ran none: strength off in MULTIPLY mode) */
     uint32_t pass_kind[SSAO_MAX_PASSES]; /**< the ssao_pass value of pass i, in the order they ran; 0 beyond pass_count */
     uint32_t reserved;           /**< 0; keeps pass_ms 8-byte aligned without implicit padding */
     double pass_ms[SSAO_MAX_PASSES];     /**< GPU time of pass i; 0 beyond pass_count */
@@ -669,8 +670,8 @@ typedef struct ssao_api {
      * current: the timer queries live there. */
     ssao_status (SSAO_CALL *get_timings)(ssao_context* ctx, ssao_timings* out);
 
-    /** What the last successful execute read from its inputs. Returns OK,
-     * NULL_POINTER, STRUCT_SIZE. */
+    /** What the last successful execute read from its inputs (every field 0
+     * before the first). Returns OK, NULL_POINTER, STRUCT_SIZE. */
     ssao_status (SSAO_CALL *get_frame_info)(const ssao_context* ctx, ssao_frame_info* out);
 
     /** The context's last error message ("" when none); valid until the next
