@@ -481,7 +481,8 @@ typedef struct ssao_inputs {
     float projection[16];        /**< the projection that rendered the depth, column-major.
                                     Perspective (any near/far, infinite far, reverse-Z,
                                     off-centre, jittered) or orthographic; which one, and
-                                    whether depth is reversed, is read from the matrix. */
+                                    whether depth is reversed, is read from the matrix.
+                                    Taken up to a positive scale: k P gives P's AO. */
     float view_matrix[16];       /**< world -> view, column-major; read only for world-space
                                     normals (its upper 3x3 must be a rotation) */
     ssao_clip_range clip_range;  /**< the clip-control depth mode the depth was rendered with */
