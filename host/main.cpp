@@ -64,7 +64,11 @@ std::string with_commas(size_t n) {
 struct PluginContext {
     const ssao_api& api;
     ssao_context* ctx = nullptr;
+    // The last error the plugin logged: its log_user, so it lives as long as the context.
+    std::string logged_error;
     explicit PluginContext(const ssao_api& a) : api(a) {}
+    PluginContext(const PluginContext&) = delete;
+    PluginContext& operator=(const PluginContext&) = delete;
     ~PluginContext() {
         if (ctx) api.destroy_context(ctx);
     }
@@ -278,19 +282,18 @@ gbuffer::Desc gbuffer_desc(const cli::Options& o, const Setup& s) {
 }
 
 void start_plugin(const ssao_api& api, const ssao_settings& settings, PluginContext& plugin) {
-    std::string plugin_message;
     ssao_context_desc desc{};
     desc.size = sizeof desc;
     desc.get_proc_address = [](void* user, const char* name) -> ssao_gl_proc {
         return eglctx::Context::get_proc(user, name);
     };
     desc.log = plugin_log;
-    desc.log_user = &plugin_message;
+    desc.log_user = &plugin.logged_error;
     desc.settings = &settings;
     const ssao_status st = api.create_context(&desc, &plugin.ctx);
     if (st != SSAO_OK)
         throw RunError("the SSAO plugin could not start: " + std::string(api.status_string(st)) +
-                       (plugin_message.empty() ? "" : ": " + plugin_message));
+                       (plugin.logged_error.empty() ? "" : ": " + plugin.logged_error));
 }
 
 ssao_inputs plugin_inputs(const cli::Options& o, const Setup& s, const gbuffer::GBuffer& g) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 namespace ssao_impl {
@@ -16,6 +17,13 @@ namespace {
 // of the inverse) may flush to zero harmlessly.
 constexpr double kMaxElement = 1e30;
 
+// A magnitude as a message prints it: 6.4e+30, not 31 digits.
+std::string number(double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", v);
+    return text;
+}
+
 bool usable_in_float(const glm::dmat4& m, std::string& why) {
     double largest = 0.0;
     for (int c = 0; c < 4; ++c)
@@ -26,7 +34,7 @@ bool usable_in_float(const glm::dmat4& m, std::string& why) {
             const bool too_large = !(v <= kMaxElement);
             const bool denormal = v > 0.0 && v < double(std::numeric_limits<float>::min()) && v >= largest * 1e-20;
             if (too_large || denormal) {
-                why = "the projection (or its inverse) has an element of magnitude " + std::to_string(v) +
+                why = "the projection (or its inverse) has an element of magnitude " + number(v) +
                       ", outside what 32-bit float shaders can use (" +
                       (too_large ? "above 1e30, it overflows" : "a denormal, flushed to zero") + ")";
                 return false;
@@ -122,8 +130,8 @@ ssao_status analyse_projection(const float m[16], ssao_clip_range clip, Projecti
     // get_frame_info reports both as floats; a finite far plane must stay finite.
     const double float_max = std::numeric_limits<float>::max();
     if (!(std::abs(p.near_distance) <= float_max) || !(std::abs(p.far_distance) <= float_max || p.infinite_far)) {
-        why = "the projection's near or far plane lies beyond 32-bit float range (" + std::to_string(p.near_distance) +
-              ", " + std::to_string(p.far_distance) + ")";
+        why = "the projection's near or far plane lies beyond 32-bit float range (" + number(p.near_distance) + ", " +
+              number(p.far_distance) + ")";
         return SSAO_ERROR_INVALID_PROJECTION;
     }
     p.sky_depth = p.reverse_z ? 0.0f : 1.0f;

@@ -607,7 +607,8 @@ typedef struct ssao_context_desc {
     ssao_get_proc_address_fn get_proc_address; /**< required: e.g. a wrapper of eglGetProcAddress */
     void* get_proc_address_user;             /**< passed back to get_proc_address */
     ssao_log_fn log;                         /**< optional: receives every error message too */
-    void* log_user;                          /**< passed back to log */
+    void* log_user;                          /**< passed back to log, until destroy_context: the
+                                                  context keeps it (and log) */
     const ssao_settings* settings;           /**< optional initial settings; NULL = defaults */
 } ssao_context_desc;
 

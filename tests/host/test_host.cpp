@@ -522,6 +522,9 @@ TEST_CASE("bad input: one message, a non-zero exit, earlier output untouched") {
         {{"--gl33=yes"}, "--gl33"},
         {{kSpot, kSpot}, "more than one scene"},
         {{"--plugin", fs::path(kWork) / "no-such-plugin.so"}, "no-such-plugin.so"},
+        // Refused by the plugin at execute, after create_context: its log line must land in live memory.
+        {{"--ortho", "1e-30"}, "projection"},
+        {{"--near", "1e30", "--far", "inf"}, "projection"},
     };
     for (const Case& c : cases) {
         std::vector<std::string> args = c.args;
