@@ -138,6 +138,26 @@ Camera apply(const scene::Scene& s, Camera c, const Overrides& o) {
 
 const glm::vec3 kBundledEye(2.3f, 1.6f, -2.6f), kBundledTarget(0.0f, 0.65f, 0.0f);
 
+namespace {
+
+// Throws Error where the camera cannot render: one the tools would otherwise
+// run with, getting NaN positions or an all-sky image.
+void check_usable(const Camera& c, float aspect) {
+    if (!(glm::length(c.target - c.eye) > 0.0f)) throw Error("the camera's eye and target are the same point");
+    if (c.orthographic && std::isinf(c.zfar)) throw Error("an orthographic camera needs a finite far plane");
+    if (!c.orthographic && !(c.znear > 0.0f)) throw Error("the near plane " + num(c.znear) + " must be > 0");
+    if (!(c.zfar > c.znear))
+        throw Error("the far plane " + num(c.zfar) + " must lie beyond the near plane " + num(c.znear));
+    const glm::mat4 view = view_matrix(c), projection = projection_matrix(c, aspect);
+    for (int col = 0; col < 4; ++col)
+        for (int row = 0; row < 4; ++row)
+            if (!std::isfinite(view[col][row]) || !std::isfinite(projection[col][row]))
+                throw Error("the camera gives a non-finite view or projection matrix; check --eye, --target, --fov, "
+                            "--ortho, --near, --far and the scene's camera");
+}
+
+}  // namespace
+
 Camera initial(const scene::Scene& s, float aspect, const Overrides& o, bool bundled_scene, Source* source) {
     Overrides ov = o;
     Source from = s.camera ? Source::Scene : Source::Framed;
@@ -147,7 +167,9 @@ Camera initial(const scene::Scene& s, float aspect, const Overrides& o, bool bun
         from = Source::Bundled;
     }
     if (source) *source = from;
-    return apply(s, choose(s, aspect), ov);
+    const Camera c = apply(s, choose(s, aspect), ov);
+    check_usable(c, aspect);
+    return c;
 }
 
 const char* describe(Source s) {

@@ -59,7 +59,9 @@ extern const glm::vec3 kBundledEye, kBundledTarget;
 // the scene's camera, else one framed from its bounds; but for the bundled
 // scene (`bundled_scene`: no scene argument given) without --eye, --target or
 // --ortho, the bundled view kBundledEye -> kBundledTarget. Then the overrides.
-// `source` (optional) receives which of the three it was.
+// `source` (optional) receives which of the three it was. Throws Error for a
+// camera that cannot render: eye = target, far not beyond near, a perspective
+// near <= 0, an orthographic infinite far, a non-finite view or projection.
 Camera initial(const scene::Scene& s, float aspect, const Overrides& o, bool bundled_scene, Source* source = nullptr);
 
 // "the scene's camera", "framed from the bounds" or "the bundled view of the cow".

@@ -231,9 +231,6 @@ void load(const cli::Options& o, const ssao_api& api, Setup& s) {
     s.cam = run_setup::build_camera(o, s.sc, aspect, s.camera_source);
     s.view = camera::view_matrix(s.cam);
     s.projection = camera::projection_matrix(s.cam, aspect);
-    for (int i = 0; i < 16; ++i)
-        if (!std::isfinite(glm::value_ptr(s.view)[i]) || !std::isfinite(glm::value_ptr(s.projection)[i]))
-            throw RunError("the camera gives a non-finite view or projection matrix; check --eye, --target, --fov, --near, --far");
     s.depth_format = o.depth_format.value_or(cli::DepthFormat::D32F);
 }
 

@@ -122,13 +122,7 @@ ssao_settings build_settings(const ssao_api& api, const cli::Options& o, const s
 }
 
 camera::Camera build_camera(const cli::Options& o, const scene::Scene& sc, float aspect, camera::Source& source) {
-    const camera::Camera c = camera::initial(sc, aspect, o.cam, o.scene_path.empty(), &source);
-    if (!(glm::length(c.target - c.eye) > 0.0f)) throw Error("the camera's eye and target are the same point");
-    if (c.orthographic && std::isinf(c.zfar)) throw Error("an orthographic camera needs a finite far plane");
-    if (!c.orthographic && !(c.znear > 0.0f)) throw Error("the near plane " + fmt(c.znear) + " must be > 0");
-    if (!(c.zfar > c.znear))
-        throw Error("the far plane " + fmt(c.zfar) + " must lie beyond the near plane " + fmt(c.znear));
-    return c;
+    return camera::initial(sc, aspect, o.cam, o.scene_path.empty(), &source);
 }
 
 }  // namespace run_setup

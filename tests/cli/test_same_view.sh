@@ -5,7 +5,8 @@
 # Without a scene argument both use the bundled view of the cow, so their
 # images compare (all-pixels PSNR above 20 dB; two different cameras gave
 # 15.9 dB with exit 0). An ao.exr made from another eye, radius or size is
-# refused naming the field, unless --allow-mismatch.
+# refused naming the field, unless --allow-mismatch. A camera that cannot
+# render is refused by both.
 set -uo pipefail
 host=$1 reference=$2 error=$3
 . "$(dirname "$0")/checks.sh"
@@ -36,5 +37,17 @@ check "another --radius: refused, naming radius and both values" expect_refused 
 check "--allow-mismatch compares them anyway, saying so" bash -c \
   '"$1" "$2/eye/ao.exr" "$2/ref" --allow-mismatch | grep -q "^mismatch   eye: 3,2,-3 vs 2.3,1.6,-2.6, compared anyway"' \
   _ "$error" "$work"
+
+# A camera that cannot render is refused by both tools, with the same sentence
+# (ssao-reference traced an all-sky image from an infinite projection and exited 0).
+both_refuse() {  # both_refuse FRAGMENT FLAGS...: exit 1 from each, stderr naming FRAGMENT
+  local fragment=$1; shift
+  "$host" "$@" --only ao --frames 1 --out "$work/bad" >/dev/null 2>"$work/host.err"; local h=$?
+  "$reference" "$@" --samples 4 --quiet --out "$work/bad" >/dev/null 2>"$work/ref.err"; local r=$?
+  [ "$h" -eq 1 ] && [ "$r" -eq 1 ] && grep -q "$fragment" "$work/host.err" && grep -q "$fragment" "$work/ref.err" &&
+    [ ! -e "$work/bad/reference_ao.exr" ] || { echo "  exits $h $r: $(cat "$work/host.err") / $(cat "$work/ref.err")"; return 1; }
+}
+check "an orthographic half height of 1.2e-38 (an infinite projection): both refuse" \
+  both_refuse "non-finite view or projection" --width 1 --height 8 --ortho 1.2e-38
 
 finish "same view"
