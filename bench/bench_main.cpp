@@ -35,12 +35,16 @@ int run(bench::Options& o) {
     plugin::Library lib;
     std::string error;
     if (!lib.open_default(o.plugin, error)) throw std::runtime_error(error);
+    // What can fail before minutes of measuring does: the output folder and every scene.
+    bench::prepare_output(o);
+    std::vector<bench::LoadedScene> scenes;
+    for (const std::string& path : o.scenes) scenes.push_back(bench::load_scene(path, o));
     const std::vector<bench::Config> sweep = bench::sweep();
     const std::vector<bench::Config> presets = bench::shipped_presets();
     std::vector<bench::Row> rows;
-    for (const std::string& scene : o.scenes)
+    for (const bench::LoadedScene& scene : scenes)
         for (int scale : o.scales) {
-            std::fprintf(stderr, "scene %s at %dx%d\n", scene.c_str(), o.width * scale, o.height * scale);
+            std::fprintf(stderr, "scene %s at %dx%d\n", scene.path.c_str(), o.width * scale, o.height * scale);
             bench::measure_scene(scene, o, scale, lib.api(), sweep, presets, scale == 1 && !o.time_only, rows);
         }
     bench::write_report(o, rows);

@@ -324,20 +324,26 @@ void measure_case(GladGLContext& gl, const ssao_api& api, const Options& o, int 
 
 }  // namespace
 
-void measure_scene(const std::string& path, const Options& o, int scale, const ssao_api& api,
-                   const std::vector<Config>& sweep, const std::vector<Config>& presets, bool with_errors,
-                   std::vector<Row>& rows) {
-    scene::Scene sc;
+LoadedScene load_scene(const std::string& path, const Options& o) {
+    LoadedScene loaded{path, {}};
     std::string error;
     scene::Limits limits;
     limits.allow_outside_files = o.allow_outside_files;
-    if (!scene::load(path, sc, error, limits)) throw std::runtime_error(error);
+    if (!scene::load(path, loaded.sc, error, limits)) throw std::runtime_error(error);
+    if (!scene::ao_radius(loaded.sc)) throw std::runtime_error(path + " has no extent to scale the radius to");
+    return loaded;
+}
+
+void measure_scene(const LoadedScene& scene, const Options& o, int scale, const ssao_api& api,
+                   const std::vector<Config>& sweep, const std::vector<Config>& presets, bool with_errors,
+                   std::vector<Row>& rows) {
+    const scene::Scene& sc = scene.sc;
+    std::string error;
     const int w = o.width * scale, h = o.height * scale;
     const float aspect = static_cast<float>(w) / static_cast<float>(h);
     // The same radius as ssao-host and ssao-reference use, so all agree on R.
     const auto scene_radius = scene::ao_radius(sc);
-    if (!scene_radius) throw std::runtime_error(path + " has no extent to scale the radius to");
-    const std::string name = std::filesystem::path(path).stem().string();
+    const std::string name = std::filesystem::path(scene.path).stem().string();
     raytrace::Tracer tracer(sc.mesh);
     if (!tracer.ok()) throw std::runtime_error(tracer.error());
     const std::vector<float> scales = with_errors ? o.radius_scales : std::vector<float>{1.0f};

@@ -7,6 +7,7 @@
 #pragma once
 
 #include "metrics.h"
+#include "scene.h"
 #include "options.h"
 #include "sweep.h"
 #include "views.h"
@@ -46,13 +47,21 @@ struct Row {
     bool variant = false;  // a sweep configuration with a setting no preset carries: its own thickness or rotation
 };
 
+// A scene the benchmark can measure: loaded, with an extent to scale the
+// radius to. Throws std::runtime_error naming the file.
+struct LoadedScene {
+    std::string path;
+    scene::Scene sc;
+};
+LoadedScene load_scene(const std::string& path, const Options& o);
+
 // Measures every view in o.views of one scene at o.width/height x scale and
 // appends the rows. with_errors (the base size): every radius in
 // o.radius_scales, with the reference and the limit traced and the errors
 // filled; otherwise the 1x radius only, timing alone. `sweep` runs on the
 // standard view at 1x radius with errors; `presets`, the textbook pass and the
 // floor on every view and radius.
-void measure_scene(const std::string& path, const Options& o, int scale, const ssao_api& api,
+void measure_scene(const LoadedScene& scene, const Options& o, int scale, const ssao_api& api,
                    const std::vector<Config>& sweep, const std::vector<Config>& presets, bool with_errors,
                    std::vector<Row>& rows);
 

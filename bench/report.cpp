@@ -12,11 +12,20 @@
 #include <map>
 #include <set>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 
 namespace bench {
 
 namespace {
+
+// Writes a whole file; throws naming it when it could not be written.
+void write_file(const std::string& path, const std::string& text) {
+    std::ofstream f(path, std::ios::binary);
+    f << text;
+    f.close();
+    if (!f) throw std::runtime_error("cannot write " + path);
+}
 
 std::string fmt(double v, int digits = 3) {
     if (!std::isfinite(v)) return "-";
@@ -199,7 +208,7 @@ const Summary* fastest_on_front(const std::vector<Summary>& sum) {
 
 void write_csv(const Options& o, const std::vector<Row>& rows) {
     const Anchors anchors(rows);
-    std::ofstream csv(o.out + "/bench.csv");
+    std::ostringstream csv;
     csv << "scene,view,radius_scale,ao_radius,config,family,kind,width,height,method,samples,steps,blur,thickness,"
            "rotation,radius,resolution,distribution,"
            "cpu_ms,cpu_min_ms,cpu_max_ms,rounds,x_textbook_cpu,x_floor_cpu,"
@@ -232,6 +241,7 @@ void write_csv(const Options& o, const std::vector<Row>& rows) {
         else
             csv << ",,,,,,,,,,,\n";
     }
+    write_file(o.out + "/bench.csv", csv.str());
 }
 
 // cell_pattern.csv: for each configuration measured on more than one case at
@@ -247,7 +257,7 @@ void write_cell_patterns(const Options& o, const std::vector<Row>& rows) {
         if (!by_config.count(r.config)) order.push_back(r.config);
         by_config[r.config].push_back(&r);
     }
-    std::ofstream csv(o.out + "/cell_pattern.csv");
+    std::ostringstream csv;
     csv << "config,kind,cases,common_pattern,mean_cell_spread\n";
     for (const std::string& c : order) {
         const std::vector<const Row*>& rs = by_config[c];
@@ -261,6 +271,7 @@ void write_cell_patterns(const Options& o, const std::vector<Row>& rows) {
         csv << "\"" << c << "\"," << kind_name(rs[0]->kind) << "," << rs.size() << ","
             << fmt(metrics::common_pattern(patterns), 6) << "," << fmt(spread / double(rs.size()), 6) << "\n";
     }
+    write_file(o.out + "/cell_pattern.csv", csv.str());
 }
 
 std::string summary_table(const std::vector<Summary>& sum) {
@@ -404,7 +415,7 @@ std::string scaling_table(const Options& o, const std::vector<Row>& rows) {
 }
 
 void write_plot(const Options& o, const std::vector<Summary>& sum) {
-    std::ofstream dat(o.out + "/bench.dat");
+    std::ostringstream dat;
     dat << "# x_textbook psnr_vs_VR psnr_vs_limit family(0 kernel,1 visibility,2 preset,3 preset 1.0,4 textbook)\n";
     double limit_psnr = NAN;
     for (const Summary& s : sum) {
@@ -416,16 +427,17 @@ void write_plot(const Options& o, const std::vector<Summary>& sum) {
         const int f = s.kind == Row::Kind::textbook ? 4 : static_cast<int>(s.family);
         dat << s.ratio_textbook << " " << s.psnr << " " << s.psnr_vs_limit << " " << f << "\n";
     }
-    dat.close();  // complete on disk before gnuplot reads it below
+    write_file(o.out + "/bench.dat", dat.str());
     for (int which = 0; which < 2; ++which) {
         std::vector<Summary> f;
         for (const Summary& s : sum)
             if (which == 0 ? s.front_vr : s.front_limit) f.push_back(s);
         std::sort(f.begin(), f.end(), [](const Summary& a, const Summary& b) { return a.ratio_textbook < b.ratio_textbook; });
-        std::ofstream front(o.out + (which == 0 ? "/front_vr.dat" : "/front_limit.dat"));
+        std::ostringstream front;
         for (const Summary& s : f) front << s.ratio_textbook << " " << (which == 0 ? s.psnr : s.psnr_vs_limit) << "\n";
+        write_file(o.out + (which == 0 ? "/front_vr.dat" : "/front_limit.dat"), front.str());
     }
-    std::ofstream gp(o.out + "/plot.gp");
+    std::ostringstream gp;
     gp << "set terminal pngcairo size 1300,560 font 'DejaVu Sans,10'\nset output 'error_vs_time.png'\n"
           "set multiplot layout 1,2 title 'SSAO accuracy against CPU time (standard view, scene radius; mean over the scenes, one run)'\n"
           "set logscale x\nset grid\nset key bottom right\nset xlabel 'CPU time relative to the textbook pass'\n"
@@ -450,7 +462,7 @@ void write_plot(const Options& o, const std::vector<Summary>& sum) {
           "set title 'against what one depth layer allows'\n";
     plot("3", "front_limit.dat");
     gp << "unset multiplot\n";
-    gp.close();
+    write_file(o.out + "/plot.gp", gp.str());
     const std::string cmd = "cd '" + o.out + "' && gnuplot plot.gp 2>/dev/null";
     if (std::system("command -v gnuplot >/dev/null 2>&1") == 0 && std::system(cmd.c_str()) == 0)
         std::printf("plot: %s/error_vs_time.png\n", o.out.c_str());
@@ -472,15 +484,23 @@ void write_timing_report(const Options& o, const std::vector<Row>& rows) {
        << default_ratios(o, rows, &Row::median_ms, "GPU") << "\nThe same by CPU time:\n\n"
        << default_ratios(o, rows) << "\nTime against pixels (means over scenes and views):\n\n"
        << scaling_table(o, rows);
-    std::ofstream(o.out + "/bench.md") << md.str();
+    write_file(o.out + "/bench.md", md.str());
     std::printf("%s", md.str().c_str());
     std::printf("results: %s/bench.csv, %s/bench.md\n", o.out.c_str(), o.out.c_str());
 }
 
 }  // namespace
 
+void prepare_output(const Options& o) {
+    std::error_code ec;
+    std::filesystem::create_directories(o.out, ec);
+    if (ec) throw std::runtime_error("cannot create the output folder " + o.out + ": " + ec.message());
+    const std::string probe = o.out + "/.ssao-bench-write-test";
+    write_file(probe, "");
+    std::filesystem::remove(probe, ec);
+}
+
 void write_report(const Options& o, const std::vector<Row>& rows) {
-    std::filesystem::create_directories(o.out);
     write_csv(o, rows);
     if (o.time_only) {
         write_timing_report(o, rows);
@@ -515,7 +535,7 @@ void write_report(const Options& o, const std::vector<Row>& rows) {
        << cases_table(rows, o.width) << "\nDEFAULT against the anchors, by CPU time, over every case of a size:\n\n"
        << default_ratios(o, rows) << "\nTime against pixels (means over scenes and views at 1x radius):\n\n"
        << scaling_table(o, rows);
-    std::ofstream(o.out + "/bench.md") << md.str();
+    write_file(o.out + "/bench.md", md.str());
 
     std::ostringstream pr;
     pr << "Rule: low = the fastest configuration on the front against V_R; medium = the most accurate (mean PSNR\n"
@@ -538,7 +558,7 @@ void write_report(const Options& o, const std::vector<Row>& rows) {
            << "\n";
         prev = s;
     }
-    std::ofstream(o.out + "/presets.txt") << pr.str();
+    write_file(o.out + "/presets.txt", pr.str());
     std::printf("%s\n%s", md.str().c_str(), pr.str().c_str());
     write_plot(o, sum);
     std::printf("results: %s/bench.csv, %s/bench.md, %s/presets.txt, %s/cell_pattern.csv\n", o.out.c_str(), o.out.c_str(),

@@ -10,6 +10,11 @@
 
 namespace bench {
 
+// Creates o.out and checks that a file can be written there; throws
+// std::runtime_error naming the folder. Run before measuring.
+void prepare_output(const Options& o);
+
+// Throws std::runtime_error naming a file that could not be written.
 void write_report(const Options& o, const std::vector<Row>& rows);
 
 }  // namespace bench

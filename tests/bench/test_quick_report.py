@@ -147,6 +147,22 @@ with tempfile.TemporaryDirectory() as tmp:
         check(p.returncode == 2, "%s %s exits 2, got %d" % (flag, value, p.returncode))
         check(len(p.stderr.strip().splitlines()) == 1 and flag in p.stderr, "one-line error naming %s: %r" % (flag, p.stderr))
 
+    # What would fail only after minutes of measuring fails before the first scene is measured: an output
+    # folder that cannot be written, or a scene that does not load after a good one. One line, exit 1.
+    not_a_folder = os.path.join(tmp, "a-file")
+    open(not_a_folder, "w").close()
+    broken = os.path.join(tmp, "broken.gltf")
+    with open(broken, "w") as f:
+        f.write('{"asset": {"version": "2.0"}, "buffers": [{"byteLength": 12, "uri": "missing.bin"}]}')
+    for what, args, fragment in (("an --out that is a file", ["--out", not_a_folder, scene], not_a_folder),
+                                 ("an --out under /proc", ["--out", "/proc/ssao-bench-out", scene], "/proc/ssao-bench-out"),
+                                 ("a broken second scene", ["--out", os.path.join(tmp, "broken"), scene, broken], "broken.gltf")):
+        p = subprocess.run([bench, "--quick", "--time-only", "--width", "16", "--height", "16", "--plugin", plugin] + args,
+                           capture_output=True, text=True)
+        check(p.returncode == 1, "%s exits 1, got %d" % (what, p.returncode))
+        # One line: no "scene ... at WxH" progress line before it, so nothing was measured.
+        check(len(p.stderr.strip().splitlines()) == 1 and fragment in p.stderr, "%s: one line naming it: %r" % (what, p.stderr))
+
 for f in failures:
     print("FAIL:", f)
 print("%d failure(s)" % len(failures) if failures else "ok: every view, radius and pass, CPU times and ratios")

@@ -39,7 +39,7 @@ check "--allow-mismatch compares them anyway, saying so" bash -c \
   _ "$error" "$work"
 
 # A camera that cannot render is refused by both tools, with the same sentence
-# (ssao-reference traced an all-sky image from an infinite projection and exited 0).
+# (an infinite projection would trace an all-sky image).
 both_refuse() {  # both_refuse FRAGMENT FLAGS...: exit 1 from each, stderr naming FRAGMENT
   local fragment=$1; shift
   "$host" "$@" --only ao --frames 1 --out "$work/bad" >/dev/null 2>"$work/host.err"; local h=$?
