@@ -301,8 +301,11 @@ void print_report(const Args& a, const Images& im, const Results& r, const std::
 
 // --csv's file, opened for appending before anything is compared or printed,
 // so that a path it cannot write fails first, with the reason; fresh: it is new.
+// Opened before comparing, so an unwritable path fails first. An empty file
+// (one a failed run left) takes the header as a missing one does.
 std::ofstream open_csv(const Args& a, bool& fresh) {
-    fresh = !is_file(a.csv_path);
+    struct stat st;
+    fresh = !is_file(a.csv_path) || (stat(a.csv_path.c_str(), &st) == 0 && st.st_size == 0);
     std::ofstream csv(a.csv_path, std::ios::app);
     if (!csv) throw Failure("cannot write " + a.csv_path + " (" + std::strerror(errno) + ").");
     return csv;

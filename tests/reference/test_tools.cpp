@@ -288,6 +288,13 @@ TEST_CASE("a tiny reference run, compared with itself by ssao-error") {
     const Run empty_csv = run(kErr + " " + out + "/reference_ao.exr " + out + " --csv ''");
     CHECK(empty_csv.code == 2);
     CHECK(empty_csv.output.find("--csv expects a file") != std::string::npos);
+    // A failed comparison leaves the CSV it opened empty; the next run still writes the header.
+    const std::string after_failure = (dir.path / "after.csv").string();
+    CHECK(run(kErr + " " + small + "/reference_ao.exr " + out + " --csv " + after_failure).code == 1);
+    REQUIRE(run(kErr + " " + out + "/reference_ao.exr " + out + " --csv " + after_failure + " --label self").code == 0);
+    std::ifstream again(after_failure);
+    const std::string rows((std::istreambuf_iterator<char>(again)), std::istreambuf_iterator<char>());
+    CHECK(rows.rfind("label,mask,", 0) == 0);
 }
 
 TEST_CASE("ssao-error refuses images that are not AO, and a reference with nothing to compare") {
