@@ -35,10 +35,11 @@ int run(bench::Options& o) {
     plugin::Library lib;
     std::string error;
     if (!lib.open_default(o.plugin, error)) throw std::runtime_error(error);
-    // What can fail before minutes of measuring does: the output folder and every scene.
-    bench::prepare_output(o);
+    // What can fail before minutes of measuring does: every scene, then the
+    // output folder (made only for a run that can measure).
     std::vector<bench::LoadedScene> scenes;
     for (const std::string& path : o.scenes) scenes.push_back(bench::load_scene(path, o));
+    bench::prepare_output(o);
     const std::vector<bench::Config> sweep = bench::sweep();
     const std::vector<bench::Config> presets = bench::shipped_presets();
     std::vector<bench::Row> rows;

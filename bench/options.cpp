@@ -8,6 +8,7 @@
 #include <ssao/ssao.h>
 
 #include <algorithm>
+#include <set>
 #include <sstream>
 
 namespace bench {
@@ -48,6 +49,7 @@ std::string help_text() {
            "  --extra-directions N   limit directions on the other views and radii (default 128)\n"
            "  --out DIR              where results go (default bench-out)\n"
            "  --quick                one timed frame a round, fewer rays and directions, base size only\n"
+           "                         (defaults: a flag given beside it wins)\n"
            "  --time-only            the timing part alone: presets, textbook pass and floor at every size\n"
            "                         and view (1x radius), no ground truth, no limit, no errors; GPU-timer\n"
            "                         ratios beside the CPU ones (for a real GPU)\n"
@@ -178,22 +180,35 @@ Parse parse(int argc, char** argv, Options& o, std::string& error) {
              o.normals_from_depth = v == "depth";
          }},
     };
+    // --quick sets defaults: a flag given beside it wins wherever it stands.
+    std::set<std::string> given;
+    flags::Valued recorded;
+    for (const auto& [flag, take] : valued)
+        recorded[flag] = [&given, take = take](const std::string& f, const std::string& v) {
+            given.insert(f);
+            take(f, v);
+        };
+    bool quick = false;
     const flags::Switches switches = {
         {"--allow-outside-files", [&] { o.allow_outside_files = true; }},
         {"--time-only", [&] { o.time_only = true; }},
-        {"--quick", [&] {
-             o.frames = 1;
-             o.warmup = 1;
-             o.rounds = 3;
-             o.reference_samples = 128;
-             o.limit_directions = 64;
-             o.extra_samples = 32;
-             o.extra_directions = 16;
-             o.scales = {1};
-         }},
+        {"--quick", [&] { quick = true; }},
     };
-    const Parse parsed = flags::parse(argc, argv, valued, switches,
+    const Parse parsed = flags::parse(argc, argv, recorded, switches,
                                       [&](const std::string& a) { o.scenes.push_back(a); }, error);
+    if (quick) {
+        const auto unless_given = [&](const char* flag, auto& field, auto value) {
+            if (!given.count(flag)) field = value;
+        };
+        unless_given("--frames", o.frames, 1);
+        unless_given("--warmup", o.warmup, 1);
+        unless_given("--rounds", o.rounds, 3);
+        unless_given("--reference-samples", o.reference_samples, 128);
+        unless_given("--limit-directions", o.limit_directions, 64);
+        unless_given("--extra-samples", o.extra_samples, 32);
+        unless_given("--extra-directions", o.extra_directions, 16);
+        unless_given("--scales", o.scales, std::vector<int>{1});
+    }
     if (o.scenes.empty()) o.scenes = default_scenes();
     return parsed;
 }

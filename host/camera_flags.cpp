@@ -1,6 +1,7 @@
 #include "camera_flags.h"
 
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace flags {
@@ -28,6 +29,14 @@ float fov_degrees(const std::string& flag, const std::string& text) {
              ", more than 32-bit float shaders can use");
     }
     return static_cast<float>(deg);
+}
+
+float far_plane(const std::string& flag, const std::string& text) {
+    const double d = number(flag, text, true);
+    if (!(d > 0.0)) fail(flag + " " + text + " must be > 0 (or 'inf')");
+    if (std::isfinite(d) && d > static_cast<double>(std::numeric_limits<float>::max()))
+        fail(flag + " " + text + " is beyond 32-bit float range (3.4e38); 'inf' gives an infinite far plane");
+    return static_cast<float>(d);
 }
 
 }  // namespace flags

@@ -124,11 +124,7 @@ void camera_flags(flags::Valued& table, Options& o) {
         {"--target", [&](const std::string& f, const std::string& v) { o.cam.target = flags::vec3(f, v); }},
         {"--fov", [&](const std::string& f, const std::string& v) { o.cam.fov_deg = flags::fov_degrees(f, v); }},
         {"--near", [&](const std::string& f, const std::string& v) { o.cam.znear = ranged(f, v, 0, true, kBig, false); }},
-        {"--far", [&](const std::string& f, const std::string& v) {
-             const double d = flags::number(f, v, true);
-             if (!(d > 0)) fail(f + " " + v + " must be > 0 (or 'inf')");
-             o.cam.zfar = static_cast<float>(d);
-         }},
+        {"--far", [&](const std::string& f, const std::string& v) { o.cam.zfar = flags::far_plane(f, v); }},
         {"--ortho", [&](const std::string& f, const std::string& v) {
              o.cam.ortho_half_height = ranged(f, v, 0, true, kBig, false);
          }},

@@ -206,6 +206,8 @@ namespace {
 Positional one_scene_file(std::string& scene_path) {
     return [&scene_path, seen = false](const std::string& arg) mutable {
         if (seen) fail("more than one scene file given: " + quoted(scene_path) + " and " + quoted(arg));
+        // Empty, it would read as "no scene" and render the bundled one.
+        if (arg.empty()) fail("the scene file argument is empty");
         scene_path = arg;
         seen = true;
     };

@@ -30,8 +30,7 @@ ssao_settings build_settings(const ssao_api& api, const cli::Options& o, const s
         if (st != SSAO_OK) throw Error(std::string("the plugin refused the preset: ") + api.status_string(st));
     }
     const scene::AoHints& h = sc.hints;
-    if (h.radius && !(std::isfinite(*h.radius) && *h.radius > 0.0f))
-        throw Error("the scene's hint ssao.radius = " + fmt(*h.radius) + " is not a number > 0");
+    if (const std::string problem = scene::radius_hint_problem(h); !problem.empty()) throw Error(problem);
     if (const auto r = scene::ao_radius(sc)) {
         s.radius = r->radius;
         radius_note = r->source;
@@ -39,8 +38,8 @@ ssao_settings build_settings(const ssao_api& api, const cli::Options& o, const s
         radius_note = "plugin default; the scene has no extent";
     }
     if (h.samples) {
-        if (*h.samples < 1 || *h.samples > SSAO_MAX_SAMPLES)
-            throw Error("the scene's hint ssao.samples = " + std::to_string(*h.samples) + " is out of range 1..64");
+        if (!(*h.samples >= 1 && *h.samples <= SSAO_MAX_SAMPLES && *h.samples == std::floor(*h.samples)))
+            throw Error("the scene's hint ssao.samples = " + fmt(*h.samples) + " is not a whole number in 1..64");
         s.sample_count = static_cast<uint32_t>(*h.samples);
     }
     if (h.blur) {
@@ -48,31 +47,33 @@ ssao_settings build_settings(const ssao_api& api, const cli::Options& o, const s
         if (!b) throw Error("the scene's hint ssao.blur = '" + *h.blur + "' is not depth-aware|box|gaussian|none");
         s.blur = *b;
     }
+    // Scene units within 32-bit float range: a larger number would become inf.
+    const double float_max = FLT_MAX;
     if (h.bias) {
-        if (!(std::isfinite(*h.bias) && *h.bias >= 0.0f))
-            throw Error("the scene's hint ssao.bias = " + fmt(*h.bias) + " is not a number >= 0");
-        s.bias = *h.bias > 0.0f ? *h.bias : FLT_MIN;
+        if (!(*h.bias >= 0.0 && *h.bias <= float_max))
+            throw Error("the scene's hint ssao.bias = " + fmt(*h.bias) + " is not a number >= 0 (at most 3.4e38)");
+        s.bias = *h.bias > 0.0 ? static_cast<float>(*h.bias) : FLT_MIN;
     }
     if (h.power) {
-        if (!(std::isfinite(*h.power) && *h.power > 0.0f && *h.power <= SSAO_MAX_POWER))
+        if (!(*h.power > 0.0 && *h.power <= SSAO_MAX_POWER))
             throw Error("the scene's hint ssao.power = " + fmt(*h.power) + " is out of range (0, " +
                         fmt(SSAO_MAX_POWER) + "]");
-        s.power = *h.power;
+        s.power = static_cast<float>(*h.power);
     }
     if (h.fade_start) {
-        if (!(std::isfinite(*h.fade_start) && *h.fade_start >= 0.0f))
-            throw Error("the scene's hint ssao.fade_start = " + fmt(*h.fade_start) + " is not a number >= 0");
-        s.fade_start = *h.fade_start;
+        if (!(*h.fade_start >= 0.0 && *h.fade_start <= float_max))
+            throw Error("the scene's hint ssao.fade_start = " + fmt(*h.fade_start) + " is not a number >= 0 (at most 3.4e38)");
+        s.fade_start = static_cast<float>(*h.fade_start);
     }
     if (h.fade_end) {
-        if (!(std::isfinite(*h.fade_end) && *h.fade_end >= 0.0f))
-            throw Error("the scene's hint ssao.fade_end = " + fmt(*h.fade_end) + " is not a number >= 0");
-        s.fade_end = *h.fade_end;
+        if (!(*h.fade_end >= 0.0 && *h.fade_end <= float_max))
+            throw Error("the scene's hint ssao.fade_end = " + fmt(*h.fade_end) + " is not a number >= 0 (at most 3.4e38)");
+        s.fade_end = static_cast<float>(*h.fade_end);
     }
     if (h.radius_pixels) {
-        if (!(std::isfinite(*h.radius_pixels) && *h.radius_pixels >= 0.0f && *h.radius_pixels <= SSAO_MAX_DIMENSION))
+        if (!(*h.radius_pixels >= 0.0 && *h.radius_pixels <= SSAO_MAX_DIMENSION))
             throw Error("the scene's hint ssao.radius_pixels = " + fmt(*h.radius_pixels) + " is out of range [0, 16384]");
-        s.radius_pixels = *h.radius_pixels;
+        s.radius_pixels = static_cast<float>(*h.radius_pixels);
     }
     // Flags. A zero field means "default" in the ABI, so an explicit 0 for a
     // bias becomes the smallest positive float and strength 0 SSAO_STRENGTH_OFF.

@@ -479,13 +479,13 @@ void read_hints(const tinygltf::Value& extras, AoHints& h) {
         if (!std::isfinite(d)) return std::nullopt;
         return d;
     };
-    if (auto v = number("radius"); v && !h.radius) h.radius = float(*v);
-    if (auto v = number("samples"); v && !h.samples && *v >= 0 && *v <= 1e6) h.samples = int(*v);
-    if (auto v = number("bias"); v && !h.bias) h.bias = float(*v);
-    if (auto v = number("power"); v && !h.power) h.power = float(*v);
-    if (auto v = number("fade_start"); v && !h.fade_start) h.fade_start = float(*v);
-    if (auto v = number("fade_end"); v && !h.fade_end) h.fade_end = float(*v);
-    if (auto v = number("radius_pixels"); v && !h.radius_pixels) h.radius_pixels = float(*v);
+    if (auto v = number("radius"); v && !h.radius) h.radius = v;
+    if (auto v = number("samples"); v && !h.samples) h.samples = v;
+    if (auto v = number("bias"); v && !h.bias) h.bias = v;
+    if (auto v = number("power"); v && !h.power) h.power = v;
+    if (auto v = number("fade_start"); v && !h.fade_start) h.fade_start = v;
+    if (auto v = number("fade_end"); v && !h.fade_end) h.fade_end = v;
+    if (auto v = number("radius_pixels"); v && !h.radius_pixels) h.radius_pixels = v;
     if (!h.blur && s.Has("blur") && s.Get("blur").IsString()) h.blur = s.Get("blur").Get<std::string>();
 }
 
@@ -667,9 +667,16 @@ bool load_from_memory(const std::vector<unsigned char>& bytes, const std::string
     return false;
 }
 
+std::string radius_hint_problem(const AoHints& h) {
+    if (!h.radius || (*h.radius > 0.0 && *h.radius <= double(std::numeric_limits<float>::max()))) return "";
+    char text[96];
+    std::snprintf(text, sizeof text, "the scene's hint ssao.radius = %g is not a number > 0 (at most 3.4e38)", *h.radius);
+    return text;
+}
+
 std::optional<AoRadius> ao_radius(const Scene& s) {
-    if (s.hints.radius && std::isfinite(*s.hints.radius) && *s.hints.radius > 0.0f)
-        return AoRadius{*s.hints.radius, "scene hint"};
+    if (s.hints.radius && radius_hint_problem(s.hints).empty())
+        return AoRadius{static_cast<float>(*s.hints.radius), "scene hint"};
     const float diagonal = glm::length(s.bounds_max - s.bounds_min);
     if (!(std::isfinite(diagonal) && diagonal > 0.0f)) return std::nullopt;
     char note[64];

@@ -35,14 +35,15 @@ struct GltfCamera {
 // AO settings a scene may carry in the extras of its scene or of its root
 // glTF object: {"ssao": {"radius": 0.3, "samples": 32, "blur": "depth-aware", ...}}
 // (also "fade_start", "fade_end", "radius_pixels": the ssao_settings fields).
+// As the JSON holds them (any finite number): the tools check their ranges.
 struct AoHints {
-    std::optional<float> radius;        // scene units
-    std::optional<int> samples;
+    std::optional<double> radius;       // scene units
+    std::optional<double> samples;
     std::optional<std::string> blur;    // names as the host's --blur flag takes
-    std::optional<float> bias;
-    std::optional<float> power;
-    std::optional<float> fade_start, fade_end;  // view depth (scene units)
-    std::optional<float> radius_pixels;         // viewport pixels, 0 = off
+    std::optional<double> bias;
+    std::optional<double> power;
+    std::optional<double> fade_start, fade_end;  // view depth (scene units)
+    std::optional<double> radius_pixels;         // viewport pixels, 0 = off
 };
 
 struct Scene {
@@ -53,16 +54,19 @@ struct Scene {
 };
 
 // The AO radius a scene calls for, one rule for every tool: its hint
-// extras.ssao.radius when that is a finite number > 0, else 0.05 x its
-// bounding-box diagonal (so a scene in millimetres looks like one in metres).
-// Empty when the scene has neither (no extent). `source` says which, for
-// printing ("scene hint", "0.05 x scene diagonal 11.48").
+// extras.ssao.radius, else 0.05 x its bounding-box diagonal (so a scene in
+// millimetres looks like one in metres). Empty when the scene has neither (no
+// extent). `source` says which, for printing ("scene hint", "0.05 x scene
+// diagonal 11.48"). A radius hint that radius_hint_problem refuses is not used.
 struct AoRadius {
     float radius = 0.0f;
     std::string source;
 };
 constexpr float kAoRadiusPerDiagonal = 0.05f;
 std::optional<AoRadius> ao_radius(const Scene& s);
+// Why the scene's radius hint cannot be a radius (not a number > 0 within
+// 32-bit float range), or "" when it can or there is none.
+std::string radius_hint_problem(const AoHints& h);
 
 // The scene every tool uses when none is given: the bundled
 // models/spot-on-ground.glb (locate::bundled). With it and no camera flags the

@@ -138,11 +138,7 @@ Parse parse(int argc, char** argv, Options& o, std::string& error) {
         {"--target", [&](const std::string& f, const std::string& v) { o.cam.target = flags::vec3(f, v); }},
         {"--fov", [&](const std::string& f, const std::string& v) { o.cam.fov_deg = flags::fov_degrees(f, v); }},
         {"--near", [&](const std::string& f, const std::string& v) { o.cam.znear = positive(f, v); }},
-        {"--far", [&](const std::string& f, const std::string& v) {
-             const double d = flags::number(f, v, true);
-             if (!(d > 0.0)) fail(f + " " + v + " must be greater than 0");
-             o.cam.zfar = float(d);
-         }},
+        {"--far", [&](const std::string& f, const std::string& v) { o.cam.zfar = flags::far_plane(f, v); }},
         {"--ortho", [&](const std::string& f, const std::string& v) { o.cam.ortho_half_height = positive(f, v); }},
         {"--thickness", [&](const std::string& f, const std::string& v) {
              const double d = flags::number(f, v, true);
@@ -231,7 +227,9 @@ Setup load(Options& o) {
         throw Failure(e.what());
     }
     // --radius, else the scene's hint, else 0.05 x the bounding-box diagonal
-    // (else the plugin's default 0.5).
+    // (else the plugin's default 0.5). A hint that is no radius is refused, as
+    // ssao-host refuses it.
+    if (const std::string problem = scene::radius_hint_problem(s.sc.hints); !problem.empty()) throw Failure(problem);
     if (o.radius) {
         s.radius = *o.radius;
     } else if (const auto r = scene::ao_radius(s.sc)) {

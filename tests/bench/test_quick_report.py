@@ -147,6 +147,15 @@ with tempfile.TemporaryDirectory() as tmp:
         check(p.returncode == 2, "%s %s exits 2, got %d" % (flag, value, p.returncode))
         check(len(p.stderr.strip().splitlines()) == 1 and flag in p.stderr, "one-line error naming %s: %r" % (flag, p.stderr))
 
+    # --quick sets defaults: a flag given before it is not overridden.
+    out = os.path.join(tmp, "order")
+    p = subprocess.run([bench, "--frames", "2", "--quick", "--time-only", "--width", "16", "--height", "16", "--views",
+                        "standard", "--plugin", plugin, "--out", out, scene], capture_output=True, text=True)
+    check(p.returncode == 0, "--frames 2 --quick runs: %s" % p.stderr[-500:])
+    if p.returncode == 0:
+        text = open(os.path.join(out, "bench.md")).read()
+        check("1 untimed and 2 timed frames" in text, "--frames 2 before --quick keeps 2 frames: %r" % text[:300])
+
     # What would fail only after minutes of measuring fails before the first scene is measured: an output
     # folder that cannot be written, or a scene that does not load after a good one. One line, exit 1.
     not_a_folder = os.path.join(tmp, "a-file")

@@ -49,5 +49,8 @@ both_refuse() {  # both_refuse FRAGMENT FLAGS...: exit 1 from each, stderr namin
 }
 check "an orthographic half height of 1.2e-38 (an infinite projection): both refuse" \
   both_refuse "non-finite view or projection" --width 1 --height 8 --ortho 1.2e-38
+sed 's/"radius": 0.75/"radius": 1e300/' "$(dirname "$0")/../host/data/hinted.gltf" >"$work/far_radius.gltf"
+check "a radius hint beyond float range: both refuse, naming it" \
+  both_refuse "ssao.radius = 1e+300" "$work/far_radius.gltf" --width 8 --height 8
 
 finish "same view"

@@ -771,6 +771,36 @@ TEST_CASE("scene hints set the AO settings and flags override them") {
     CHECK(r3.out.find("0.05 x scene diagonal") != std::string::npos);
 }
 
+TEST_CASE("a scene hint that is no setting is refused naming it, not wrapped, truncated or ignored") {
+    const std::string dir = fresh_dir("bad_hints");
+    const std::string hinted = read_file(kData + "/hinted.gltf");
+    struct Case {
+        std::string from, to, expect;
+    };
+    const std::vector<Case> cases = {
+        {"\"radius\": 0.75", "\"radius\": 1e300", "ssao.radius = 1e+300"},  // beyond float: not inf
+        {"\"samples\": 8", "\"samples\": 8.9", "ssao.samples = 8.9"},       // not a whole number: not 8
+        {"\"samples\": 8", "\"samples\": 1e300", "ssao.samples = 1e+300"},  // not ignored
+        {"\"samples\": 8", "\"samples\": 8, \"bias\": -1e300", "ssao.bias = -1e+300"},
+        {"\"samples\": 8", "\"samples\": 8, \"fade_end\": 1e300", "ssao.fade_end = 1e+300"},
+    };
+    for (const Case& c : cases) {
+        CAPTURE(c.to);
+        std::string text = hinted;
+        const size_t at = text.find(c.from);
+        REQUIRE(at != std::string::npos);
+        text.replace(at, c.from.size(), c.to);
+        const std::string scene = (fs::path(kWork) / "bad_hint.gltf").string();
+        std::ofstream(scene, std::ios::binary) << text;
+        const Run r = run_host({scene, "--out", dir, "--width", "32", "--height", "32", "--only", "ao"});
+        CAPTURE(r.err);
+        CHECK(r.exit_code == 1);
+        const auto lines = r.own_error_lines();
+        CHECK(lines.size() == 1);
+        if (!lines.empty()) CHECK(lines[0].find(c.expect) != std::string::npos);
+    }
+}
+
 TEST_CASE("reverse-Z, an infinite far plane and 16-bit depth give the same AO") {
     // A perspective view of the nested scene from the side.
     const std::vector<std::string> common = {kData + "/nested.gltf", "--width", "96", "--height", "96",
