@@ -463,7 +463,10 @@ void write_plot(const Options& o, const std::vector<Summary>& sum) {
     plot("3", "front_limit.dat");
     gp << "unset multiplot\n";
     write_file(o.out + "/plot.gp", gp.str());
-    const std::string cmd = "cd '" + o.out + "' && gnuplot plot.gp 2>/dev/null";
+    // The folder in single quotes, each quote in it closed, escaped and reopened.
+    std::string folder;
+    for (char c : o.out) folder += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    const std::string cmd = "cd '" + folder + "' && gnuplot plot.gp 2>/dev/null";
     if (std::system("command -v gnuplot >/dev/null 2>&1") == 0 && std::system(cmd.c_str()) == 0)
         std::printf("plot: %s/error_vs_time.png\n", o.out.c_str());
     else

@@ -10,9 +10,11 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <limits>
 #include <stdexcept>
 #include <system_error>
 
@@ -64,6 +66,10 @@ std::string StagedOutput::temp_path(const std::string& name) const {
 
 void StagedOutput::png(const std::string& name, int width, int height, int channels,
                        const std::vector<uint8_t>& pixels) {
+    // stb_image_write sizes its buffer as (width * channels + 1) * height in int.
+    if ((int64_t(width) * channels + 1) * height > int64_t(std::numeric_limits<int>::max()))
+        throw std::runtime_error("'" + name + "' at " + std::to_string(width) + "x" + std::to_string(height) +
+                                 " is too large for the PNG writer (2 GiB of pixel rows); use a smaller size");
     const std::string tmp = temp_path(name);
     staged_.emplace_back(tmp, (fs::path(dir_) / name).string());
     if (!stbi_write_png(tmp.c_str(), width, height, channels, pixels.data(), width * channels))

@@ -288,7 +288,8 @@ public:
             const glm::dvec3 p = glm::dvec3(w) / w.w;
             if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z) ||
                 std::fabs(p.x) > 1e30 || std::fabs(p.y) > 1e30 || std::fabs(p.z) > 1e30)
-                return fail(where + " has a non-finite vertex position (vertex " + std::to_string(i) + ")");
+                return fail(where + " has a vertex position that is not finite or beyond 1e30 in world space (vertex " +
+                            std::to_string(i) + ")");
             wpos[i] = glm::vec3(p);
         }
         if (mirrored)
