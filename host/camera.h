@@ -37,8 +37,9 @@ struct Overrides {
     bool reverse_z = false;                  // sets reverse_z and zero_to_one
 };
 
-// A near or far plane the command line gave that the other plane, given or
-// fitted, contradicts: the message names the flag.
+// A camera that cannot render: a near or far plane the command line gave
+// that the other plane, given or fitted, contradicts (the message names the
+// flag), or one initial() refuses.
 struct Error : std::runtime_error {
     using std::runtime_error::runtime_error;
 };

@@ -3,6 +3,7 @@
 #include "run_setup.h"
 
 
+#include <algorithm>
 #include <cfloat>
 #include <cmath>
 #include <sstream>
@@ -52,7 +53,8 @@ ssao_settings build_settings(const ssao_api& api, const cli::Options& o, const s
     if (h.bias) {
         if (!(*h.bias >= 0.0 && *h.bias <= float_max))
             throw Error("the scene's hint ssao.bias = " + fmt(*h.bias) + " is not a number >= 0 (at most 3.4e38)");
-        s.bias = *h.bias > 0.0 ? static_cast<float>(*h.bias) : FLT_MIN;
+        // 0 (or a positive bias below float's range) is the smallest bias, not the default.
+        s.bias = std::max(static_cast<float>(*h.bias), FLT_MIN);
     }
     if (h.power) {
         if (!(*h.power > 0.0 && *h.power <= SSAO_MAX_POWER))

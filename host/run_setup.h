@@ -28,7 +28,7 @@ struct Error : std::runtime_error {
 ssao_settings build_settings(const ssao_api& api, const cli::Options& o, const scene::Scene& sc, std::string& radius_note);
 
 // camera::initial for these options (the bundled view when no scene was
-// given), validated. `source` receives where it came from. Throws camera::Error.
+// given). `source` receives where it came from. Throws camera::Error.
 camera::Camera build_camera(const cli::Options& o, const scene::Scene& sc, float aspect, camera::Source& source);
 
 }  // namespace run_setup

@@ -669,9 +669,14 @@ bool load_from_memory(const std::vector<unsigned char>& bytes, const std::string
 }
 
 std::string radius_hint_problem(const AoHints& h) {
-    if (!h.radius || (*h.radius > 0.0 && *h.radius <= double(std::numeric_limits<float>::max()))) return "";
-    char text[96];
-    std::snprintf(text, sizeof text, "the scene's hint ssao.radius = %g is not a number > 0 (at most 3.4e38)", *h.radius);
+    // A normal 32-bit float: below that it would become 0 ("default") or a
+    // denormal, beyond it inf.
+    if (!h.radius || (*h.radius >= double(std::numeric_limits<float>::min()) &&
+                      *h.radius <= double(std::numeric_limits<float>::max())))
+        return "";
+    char text[112];
+    std::snprintf(text, sizeof text, "the scene's hint ssao.radius = %g is not a number in [1.2e-38, 3.4e38]",
+                  *h.radius);
     return text;
 }
 

@@ -64,8 +64,8 @@ struct AoRadius {
 };
 constexpr float kAoRadiusPerDiagonal = 0.05f;
 std::optional<AoRadius> ao_radius(const Scene& s);
-// Why the scene's radius hint cannot be a radius (not a number > 0 within
-// 32-bit float range), or "" when it can or there is none.
+// Why the scene's radius hint cannot be a radius (not a normal 32-bit float
+// > 0), or "" when it can or there is none.
 std::string radius_hint_problem(const AoHints& h);
 
 // The scene every tool uses when none is given: the bundled

@@ -56,12 +56,13 @@ ssao_status analyse_projection(const float m[16], ssao_clip_range clip, Projecti
     }
     // A projection is homogeneous: k P maps every view point to the same NDC
     // for any k > 0, but a k far from 1 would overflow the shaders' squares
-    // of clip w (AO 1 everywhere). Scaled by the power of two that brings its
-    // largest element into [1, 2), which is exact in binary floating point,
-    // every such k P gives the same constants as P does.
-    double largest = 0.0;
-    for (int i = 0; i < 16; ++i) largest = std::max(largest, std::abs(double(m[i])));
-    const double scale = largest > 0.0 ? std::ldexp(1.0, -std::ilogb(largest)) : 1.0;
+    // of clip w (AO 1 everywhere). Scaled by the power of two that brings
+    // clip w's coefficient (of view z in perspective, the constant in
+    // orthographic) into [1, 2), which is exact in binary floating point,
+    // every such k P gives the same constants as P does; GL's and D3D's
+    // matrices (-1 and 1 there) are used as given.
+    const double w_coefficient = m[11] != 0.0f ? m[11] : m[15];
+    const double scale = w_coefficient != 0.0 ? std::ldexp(1.0, -std::ilogb(w_coefficient)) : 1.0;
     ProjectionInfo p;
     for (int c = 0; c < 4; ++c)
         for (int r = 0; r < 4; ++r) p.proj[c][r] = m[c * 4 + r] * scale;
@@ -126,13 +127,6 @@ ssao_status analyse_projection(const float m[16], ssao_clip_range clip, Projecti
         p.near_distance = (ndc_near - a) / b;
         p.far_distance = (ndc_far - a) / b;
         p.infinite_far = false;
-    }
-    // get_frame_info reports both as floats; a finite far plane must stay finite.
-    const double float_max = std::numeric_limits<float>::max();
-    if (!(std::abs(p.near_distance) <= float_max) || !(std::abs(p.far_distance) <= float_max || p.infinite_far)) {
-        why = "the projection's near or far plane lies beyond 32-bit float range (" + number(p.near_distance) + ", " +
-              number(p.far_distance) + ")";
-        return SSAO_ERROR_INVALID_PROJECTION;
     }
     p.sky_depth = p.reverse_z ? 0.0f : 1.0f;
     out = p;

@@ -300,9 +300,8 @@ void print_report(const Args& a, const Images& im, const Results& r, const std::
 }
 
 // --csv's file, opened for appending before anything is compared or printed,
-// so that a path it cannot write fails first, with the reason; fresh: it is new.
-// Opened before comparing, so an unwritable path fails first. An empty file
-// (one a failed run left) takes the header as a missing one does.
+// so that a path it cannot write fails first, with the reason. fresh: it is
+// new or empty (a failed run leaves it empty), so the rows need the header.
 std::ofstream open_csv(const Args& a, bool& fresh) {
     struct stat st;
     fresh = !is_file(a.csv_path) || (stat(a.csv_path.c_str(), &st) == 0 && st.st_size == 0);

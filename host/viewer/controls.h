@@ -39,7 +39,9 @@ class Controls {
 public:
     // `base` holds the scene path and the starting preset; the settings a
     // preset key gives are resolved like ssao-host's (run_setup::build_settings:
-    // scene-scaled radius, scene hints). Throws run_setup::Error.
+    // scene-scaled radius, scene hints). Throws run_setup::Error, and
+    // camera::Error for a camera that cannot render (also from set_aspect,
+    // which the window's resize calls: the viewer then ends with that line).
     Controls(const ssao_api& api, cli::Options base, const scene::Scene& scene, float aspect);
 
     // A key went down (GLFW_PRESS) or up (GLFW_RELEASE); repeats are ignored.

@@ -269,6 +269,14 @@ _enum = ctypes.c_int
 # The integer field types and the values they hold: ctypes would wrap any other
 # silently (2**32 + 1 becomes 1, which may be a valid enum value).
 _INT_RANGES = {ctypes.c_uint32: (0, 2**32), ctypes.c_int32: (-2**31, 2**31), ctypes.c_int: (-2**31, 2**31)}
+_FIELD_TYPES: dict = {}
+
+
+def _field_types(struct: type) -> dict:
+    """{field name: ctypes type} of a struct class, made once per class."""
+    if struct not in _FIELD_TYPES:
+        _FIELD_TYPES[struct] = dict(struct._fields_)
+    return _FIELD_TYPES[struct]
 
 
 class _Sized(ctypes.Structure):
@@ -281,7 +289,7 @@ class _Sized(ctypes.Structure):
             self.size = ctypes.sizeof(self)
 
     def __setattr__(self, name: str, value: Any) -> None:
-        kind = dict(self._fields_).get(name)
+        kind = _field_types(type(self)).get(name)
         if kind in _INT_RANGES:
             number = _integer(value)
             low, high = _INT_RANGES[kind]
@@ -757,15 +765,19 @@ class Context:
                 log(ssao_log_level(level), text)
 
         def get_proc(user: Any, name: bytes) -> Optional[int]:
-            # A ctypes callback that raises, or returns what is not an address,
-            # hands C whatever the previous call returned: answer NULL instead.
+            # A ctypes callback that raises, or returns what ctypes cannot make
+            # an address of, hands C whatever the previous call returned:
+            # answer NULL instead, and remember why.
             try:
-                address = get_proc_address(user, name)
-                if isinstance(address, ctypes.c_void_p):
-                    address = address.value
-                if address is None or _integer(address) is not None:
-                    return address
-                raise TypeError("returned %s, not an address (an int or None)" % type(address).__name__)
+                answer = get_proc_address(user, name)
+                if answer is None:
+                    return None
+                address = answer.value if isinstance(answer, ctypes.c_void_p) else _integer(answer)
+                if address is None and not isinstance(answer, ctypes.c_void_p):
+                    raise TypeError("returned %s, not an address (an int or None)" % type(answer).__name__)
+                if address is not None and not 0 <= address < 2 ** (8 * ctypes.sizeof(ctypes.c_void_p)):
+                    raise ValueError("returned %d, not an address" % address)
+                return None if address is None else int(address)  # a plain int: not a numpy integer
             except Exception as e:  # noqa: BLE001 - any failure of the host's loader is reported, not raised in C
                 if self._loader_error is None:
                     self._loader_error = "get_proc_address failed for %s: %s: %s" % (

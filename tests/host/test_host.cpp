@@ -779,6 +779,7 @@ TEST_CASE("a scene hint that is no setting is refused naming it, not wrapped, tr
     };
     const std::vector<Case> cases = {
         {"\"radius\": 0.75", "\"radius\": 1e300", "ssao.radius = 1e+300"},  // beyond float: not inf
+        {"\"radius\": 0.75", "\"radius\": 1e-50", "ssao.radius = 1e-50"},   // below float: not 0, the default
         {"\"samples\": 8", "\"samples\": 8.9", "ssao.samples = 8.9"},       // not a whole number: not 8
         {"\"samples\": 8", "\"samples\": 1e300", "ssao.samples = 1e+300"},  // not ignored
         {"\"samples\": 8", "\"samples\": 8, \"bias\": -1e300", "ssao.bias = -1e+300"},
@@ -799,6 +800,14 @@ TEST_CASE("a scene hint that is no setting is refused naming it, not wrapped, tr
         CHECK(lines.size() == 1);
         if (!lines.empty()) CHECK(lines[0].find(c.expect) != std::string::npos);
     }
+    // A bias below float's range is the smallest bias, not 0 (the plugin's default).
+    std::string tiny_bias = hinted;
+    tiny_bias.replace(tiny_bias.find("\"samples\": 8"), 12, "\"samples\": 8, \"bias\": 1e-50");
+    const std::string scene = (fs::path(kWork) / "tiny_bias.gltf").string();
+    std::ofstream(scene, std::ios::binary) << tiny_bias;
+    const Run r = run_host({scene, "--out", dir, "--width", "32", "--height", "32", "--only", "ao"});
+    CHECK(r.exit_code == 0);
+    CHECK(r.out.find("bias 1.175e-38") != std::string::npos);
 }
 
 TEST_CASE("reverse-Z, an infinite far plane and 16-bit depth give the same AO") {

@@ -60,11 +60,22 @@ def main():
         check(e.status == ssao.SSAO_ERROR_GL_LOAD and "glDrawArrays" in e.last_error and "str" in e.last_error,
               "a loader that returns a str: GL_LOAD naming the function and the type: %s" % e)
 
-    # A ctypes pointer is an address: the context works.
-    def as_pointer(user, name):
-        return ctypes.c_void_p(egl(user, name))
-    with lib.create_context(get_proc_address=as_pointer) as ctx:
-        check(ctx.get_settings().sample_count > 0, "a loader returning ctypes.c_void_p works")
+    for value in (2**64 + 5, -1):
+        try:
+            lib.create_context(get_proc_address=returning(value))
+            check(False, "a loader that returns %d: create_context refuses" % value)
+        except ssao.Error as e:
+            check(e.status == ssao.SSAO_ERROR_GL_LOAD and "not an address" in e.last_error,
+                  "a loader that returns %d: GL_LOAD, not a wrapped address: %s" % (value, e))
+
+    # A ctypes pointer and a numpy integer are addresses: the context works.
+    import numpy as np
+    for kind, convert in (("ctypes.c_void_p", ctypes.c_void_p), ("numpy.uint64", np.uint64)):
+        def converted(user, name, convert=convert):
+            address = egl(user, name)
+            return None if address is None else convert(address)
+        with lib.create_context(get_proc_address=converted) as ctx:
+            check(ctx.get_settings().sample_count > 0, "a loader returning %s works" % kind)
     check(gl.error == "GL_NO_ERROR", "no GL error pending: %s" % gl.error)
 
     print("test_loader: %s" % ("all checks passed" if not failures else "%d FAILED" % len(failures)))

@@ -340,7 +340,7 @@ TEST_CASE("projection: matrices whose float inverse is useless are rejected") {
     m = persp;
     m[3][2] = -3e38f;
     bad.push_back({"3e38 depth offset", m});
-    m = glm::mat4(0.0f);  // a near plane 9e59 away: finite in double, inf as get_frame_info's float
+    m = glm::mat4(0.0f);  // a near plane 9e59 away: its inverse overflows float
     m[0][0] = m[1][1] = 1.0f;
     m[2][3] = -1e-30f;
     m[3][2] = -9e29f;
