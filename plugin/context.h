@@ -35,7 +35,7 @@ struct ssao_context {
     // The settings the kernel block and noise texture were last made from.
     ssao_impl::KernelKey kernel_uploaded_for;
     bool kernel_uploaded = false;
-    // The target the last execute's inputs had (GL_TEXTURE_2D or
+    // The target the last successful execute's inputs had (GL_TEXTURE_2D or
     // GL_TEXTURE_2D_MULTISAMPLE). Below GL 4.5 inputs are told apart by
     // binding them, and that target is tried first: a host that keeps
     // multisampled inputs raises no failed-bind GL error frame after frame.

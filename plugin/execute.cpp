@@ -84,6 +84,7 @@ ssao_status execute(ssao_context& ctx, const ssao_inputs& in, ssao_output* out) 
     run_plan(ctx, plan, textures, framebuffer, guard);
 
     record_frame_info(ctx, analysed);
+    ctx.last_input_target = analysed.multisample ? GL_TEXTURE_2D_MULTISAMPLE : GL_TEXTURE_2D;
     if (out) {
         out->texture = textures.output;
         out->origin[0] = plan.output_origin[0];

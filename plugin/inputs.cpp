@@ -202,8 +202,9 @@ ssao_status check_inputs(ssao_context& ctx, const ssao_inputs& in, AnalysedInput
 
 ssao_status inspect_textures(ssao_context& ctx, const ssao_inputs& in, GlStateGuard& guard, AnalysedInputs& out) {
     const GladGLContext& gl = ctx.gl;
+    // The last successful execute's target first: execute keeps it only when
+    // the frame succeeds, so a refused call does not change which comes first.
     const GLenum target = bind_input(ctx, SSAO_UNIT_DEPTH, in.depth_texture, ctx.last_input_target);
-    if (target != 0) ctx.last_input_target = target;
     if (target == 0)
         return ctx.fail(SSAO_ERROR_INVALID_TEXTURE,
                         "inputs.depth_texture is not a GL_TEXTURE_2D or GL_TEXTURE_2D_MULTISAMPLE (it did not bind)");

@@ -113,8 +113,9 @@
  *   GL_INVALID_OPERATION, which the host's debug output will see, and execute
  *   returns SSAO_ERROR_INVALID_TEXTURE. (1.2) An input is tried as
  *   GL_TEXTURE_2D and as GL_TEXTURE_2D_MULTISAMPLE, the target the previous
- *   execute's inputs had first: a name of neither raises two errors, and a
- *   host whose inputs change between the two targets one per change.
+ *   successful execute's inputs had first: a name of neither raises two
+ *   errors, and a host whose inputs change between the two targets one per
+ *   change.
  * - Requirements: a GL 3.3 core context or newer. Clip control (4.5 or
  *   ARB_clip_control), timer queries and GL_TEXTURE_TARGET queries (4.5) are
  *   used when present.

@@ -109,6 +109,33 @@ TEST_CASE("GL 3.3: MSAA inputs give the single-sample AO and errors are refused 
     CHECK(std::string(fx.api().last_error(fx.ctx())).find("sample_index") != std::string::npos);
 }
 
+TEST_CASE("GL 3.3: a refused multisampled execute does not change the target the next execute tries first") {
+    // Below GL 4.5 the inputs' target is found by binding, the last
+    // successful execute's first: a refused call must leave that as it was,
+    // or the next single-sample frame raises a failed-bind error.
+    testgl::Gl33Fixture fx;
+    auto& gl = fx.gl();
+    const int w = 16, h = 12;
+    const auto proj = analytic::perspective(kFov, double(w) / h, 0.1, 100.0);
+    const GBuffer g = analytic::render(crease_scene(), proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, w, h);
+    const msaa::Textures single = fx.upload(g, GL_DEPTH_COMPONENT32F, GL_RGBA8);
+    const msaa::Textures ms = msaa::make(gl, {single}, w, h, 4, GL_DEPTH_COMPONENT32F, GL_RGBA8);
+    fx.settings(testscenes::make(8, SSAO_BLUR_NONE));
+    ssao_inputs in = fx.inputs(single.depth, single.normal, proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE);
+    in.normal_packing = SSAO_NORMAL_PACKING_UNORM;
+    REQUIRE(fx.api().execute(fx.ctx(), &in, nullptr) == SSAO_OK);
+    const size_t errors_single = fx.gl_errors().size();
+    ssao_inputs refused = in;
+    refused.depth_texture = ms.depth;
+    refused.normal_texture = ms.normal;
+    refused.sample_index = 9;  // out of range: refused after the inputs were bound
+    CHECK(fx.api().execute(fx.ctx(), &refused, nullptr) == SSAO_ERROR_INVALID_VALUE);
+    const size_t errors_refused = fx.gl_errors().size();
+    CHECK(errors_refused - errors_single <= 1);  // the documented failed 2D bind of a first multisampled input
+    REQUIRE(fx.api().execute(fx.ctx(), &in, nullptr) == SSAO_OK);
+    CHECK(fx.gl_errors().size() == errors_refused);
+}
+
 TEST_CASE("GL 3.3: MULTIPLY multiplies the lit image and restores the blend function, equation and enable") {
     testgl::Gl33Fixture fx;
     auto& gl = fx.gl();
