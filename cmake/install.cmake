@@ -7,7 +7,7 @@
 #   P/bin/ssao-host (with SSAO_BUILD_TOOLS), ssao-reference, ssao-error, ssao-bench
 #     (also SSAO_BUILD_REFERENCE), ssao-viewer (where GLFW was found)
 #   P/share/ssao/models, scenes (the bundled data the tools find beside bin/),
-#     viewer/demo.txt (ssao-viewer --script: a tour of its keys)
+#     viewer/demo.txt (ssao-viewer --script: a tour of the main keys)
 #   P/lib/python3/dist-packages/ssao (the Python package; cmake/python.cmake)
 #   P/share/doc/ssao/README.md, LICENSE, assets-README.md, docs/*.md (the manuals)
 # Every path inside is relative to P, so the tree may be moved after installing.

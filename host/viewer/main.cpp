@@ -161,7 +161,15 @@ int run(const viewer::Options& o) {
         if (controls.state().overlay)
             overlay.draw(viewer::overlay_lines(controls.state(), renderer.timings(), width, height), width, height,
                          viewer::overlay_scale(width, height));
-        if (controls.take_screenshot()) write_screenshot(*window, o.screenshot_dir, frame, width, height);
+        if (controls.take_screenshot()) {
+            // A person at the window keeps the session; a script's run fails on it.
+            try {
+                write_screenshot(*window, o.screenshot_dir, frame, width, height);
+            } catch (const std::exception& e) {
+                if (!o.script_path.empty()) throw;
+                std::fprintf(stderr, "ssao-viewer: screenshot not written: %s\n", e.what());
+            }
+        }
         window->swap();
     }
     return 0;

@@ -7,9 +7,9 @@
  * function pointers. Nothing else is exported.
  *
  * @code
- *   void* lib = dlopen("libssao.so", RTLD_NOW | RTLD_LOCAL);
+ *   void* lib = dlopen("libssao.so.1", RTLD_NOW | RTLD_LOCAL);
  *   PFN_ssao_get_api get_api = (PFN_ssao_get_api)dlsym(lib, "ssao_get_api");
- *   ssao_api api = {0};                     // {0}: no -Wmissing-field-initializers
+ *   ssao_api api = {0};                     // {0}: in C, no -Wmissing-field-initializers
  *   api.size = sizeof(api);
  *   if (get_api(SSAO_API_VERSION, &api) != SSAO_OK) { ... }
  *   ssao_context_desc desc = {0};
