@@ -49,16 +49,26 @@ std::vector<GLint> bindings(GladGLContext& gl) {
     return v;
 }
 
+// The crease scene at w x h, single-sample and as 4x MSAA textures whose
+// every sample holds it (D32F depth, RGBA8 normals).
+struct CreaseInputs {
+    glm::dmat4 proj;
+    msaa::Textures single, ms;
+    CreaseInputs(testgl::Gl33Fixture& fx, int w, int h)
+        : proj(analytic::perspective(kFov, double(w) / h, 0.1, 100.0)),
+          single(fx.upload(analytic::render(crease_scene(), proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, w, h),
+                           GL_DEPTH_COMPONENT32F, GL_RGBA8)),
+          ms(msaa::make(fx.gl(), {single}, w, h, 4, GL_DEPTH_COMPONENT32F, GL_RGBA8)) {}
+};
+
 }  // namespace
 
 TEST_CASE("GL 3.3: MSAA inputs give the single-sample AO and errors are refused and bindings are restored") {
     testgl::Gl33Fixture fx;
     auto& gl = fx.gl();
     const int w = 32, h = 24;
-    const auto proj = analytic::perspective(kFov, double(w) / h, 0.1, 100.0);
-    const GBuffer g = analytic::render(crease_scene(), proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, w, h);
-    const msaa::Textures single = fx.upload(g, GL_DEPTH_COMPONENT32F, GL_RGBA8);
-    const msaa::Textures ms = msaa::make(gl, {single}, w, h, 4, GL_DEPTH_COMPONENT32F, GL_RGBA8);
+    const CreaseInputs crease(fx, w, h);
+    const auto& [proj, single, ms] = crease;
     ssao_settings s = testscenes::make(16, SSAO_BLUR_DEPTH_AWARE);
     s.output_format = SSAO_OUTPUT_R16F;
     s.radius = 1.5f;
@@ -114,12 +124,8 @@ TEST_CASE("GL 3.3: a refused multisampled execute does not change the target the
     // successful execute's first: a refused call must leave that as it was,
     // or the next single-sample frame raises a failed-bind error.
     testgl::Gl33Fixture fx;
-    auto& gl = fx.gl();
-    const int w = 16, h = 12;
-    const auto proj = analytic::perspective(kFov, double(w) / h, 0.1, 100.0);
-    const GBuffer g = analytic::render(crease_scene(), proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, w, h);
-    const msaa::Textures single = fx.upload(g, GL_DEPTH_COMPONENT32F, GL_RGBA8);
-    const msaa::Textures ms = msaa::make(gl, {single}, w, h, 4, GL_DEPTH_COMPONENT32F, GL_RGBA8);
+    const CreaseInputs crease(fx, 16, 12);
+    const auto& [proj, single, ms] = crease;
     fx.settings(testscenes::make(8, SSAO_BLUR_NONE));
     ssao_inputs in = fx.inputs(single.depth, single.normal, proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE);
     in.normal_packing = SSAO_NORMAL_PACKING_UNORM;
