@@ -1036,6 +1036,7 @@ EXPERIMENTS = [
     ("steps_for_directions_16", "4 directions x 8 steps where the radius spans 16+ grid texels"),
     ("steps_for_directions_8", "the same from 8 grid texels"),
     ("rotation_within_one_direction_spacing", "rotation: the noise within one direction spacing"),
+    ("rotation_ordered_within_one_direction_spacing", "the same, an ordered 2x2 fraction of the spacing (grid only)"),
     ("visibility_bitmask_slices", "visibility bitmask, 2 slices x 2 x 8 samples (DEFAULT)"),
     ("visibility_bitmask_slices_4x4", "visibility bitmask, 4 slices x 2 x 4 samples (DEFAULT)"),
     ("medium_blur_radius_1", "the blur's default radius 1 (every preset), MEDIUM with the blur"),
