@@ -7,6 +7,7 @@
 #include "hc_util.h"
 
 #include <algorithm>
+#include <map>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -835,7 +836,9 @@ TEST_CASE("settings extremes: 1 or 64 samples, strength off..8, power 0.01..16, 
     const auto proj = analytic::reverse_z_infinite(hc::kFov, double(W) / H, 0.1);
     const GBuffer g = hc::crease_gbuffer(proj, SSAO_CLIP_ZERO_TO_ONE, W, H);
     for (uint32_t samples : {1u, 64u})
-        for (ssao_blur blur : {SSAO_BLUR_NONE, SSAO_BLUR_DEPTH_AWARE, SSAO_BLUR_GAUSSIAN, SSAO_BLUR_BOX_4X4})
+        for (ssao_blur blur : {SSAO_BLUR_NONE, SSAO_BLUR_DEPTH_AWARE, SSAO_BLUR_GAUSSIAN, SSAO_BLUR_BOX_4X4}) {
+            // Unblurred AO at each (power, strength), for the formula's check below.
+            std::map<std::pair<float, float>, std::vector<float>> raw;
             for (float power : {0.01f, 1.0f, 16.0f}) {
                 CAPTURE(samples);
                 CAPTURE(blur);
@@ -857,9 +860,34 @@ TEST_CASE("settings extremes: 1 or 64 samples, strength off..8, power 0.01..16, 
                         for (size_t i = 0; i < r.ao.size(); ++i) rose += r.ao[i] > prev[i] + 1e-3f;
                         CHECK(rose == 0);  // more strength never lightens a pixel
                     }
+                    if (blur == SSAO_BLUR_NONE) raw[{power, strength}] = r.ao;
                     prev = r.ao;
                 }
             }
+            if (blur != SSAO_BLUR_NONE || samples == 1) continue;  // one sample may see no occlusion
+            // The formula, AO = clamp(1 - strength x occlusion, 0, 1)^power, against the occlusion that strength 1,
+            // power 1 shows (the same noise, so the same occlusion): what ignoring either setting would fail.
+            CAPTURE(samples);
+            const std::vector<float>& plain = raw.at({1.0f, 1.0f});
+            REQUIRE(*std::min_element(plain.begin(), plain.end()) < 0.8f);  // there is occlusion to scale
+            for (const auto& [key, ao] : raw) {
+                const auto [power, strength] = key;
+                if (strength == SSAO_STRENGTH_OFF) continue;
+                CAPTURE(power);
+                CAPTURE(strength);
+                int checked = 0, off = 0;
+                for (size_t i = 0; i < ao.size(); ++i) {
+                    if (plain[i] < 0.05f) continue;  // power 0.01's slope there magnifies the R16F rounding
+                    const double want = std::pow(std::clamp(1.0 - strength * (1.0 - plain[i]), 0.0, 1.0), power);
+                    // R16F rounds the occlusion by 2^-11 at most; strength and power scale that.
+                    const double slope = strength * power * std::max(std::pow(std::max(want, 1e-6), 1.0 - 1.0 / power), 1.0);
+                    off += std::abs(ao[i] - want) > 1e-3 + slope * 1e-3;
+                    ++checked;
+                }
+                CHECK(checked > 100);
+                CHECK(off == 0);
+            }
+        }
     CHECK(fx.gl_errors().empty());
 }
 
