@@ -439,3 +439,54 @@ TEST_CASE("a rasterised 4x MSAA G-buffer gives the AO of the single-sample rende
     CHECK(fx.gl_errors().empty());
 }
 
+
+namespace {
+
+// A driver whose multisampled textures may differ in sample count (llvmpipe
+// makes every one 4-sampled): glGetTexLevelParameteriv reports 2 samples for
+// the texture named g_two_samples when it is bound.
+PFNGLGETTEXLEVELPARAMETERIVPROC g_get_level_parameter = nullptr;
+PFNGLGETINTEGERVPROC g_get_integer = nullptr;
+GLuint g_two_samples = 0;
+
+void GLAD_API_PTR two_sample_get_level_parameter(GLenum target, GLint level, GLenum pname, GLint* params) {
+    g_get_level_parameter(target, level, pname, params);
+    GLint bound = 0;
+    g_get_integer(GL_TEXTURE_BINDING_2D_MULTISAMPLE, &bound);
+    if (target == GL_TEXTURE_2D_MULTISAMPLE && pname == GL_TEXTURE_SAMPLES && GLuint(bound) == g_two_samples)
+        *params = 2;
+}
+
+ssao_gl_proc SSAO_CALL two_sample_get_proc(void* user, const char* name) {
+    if (std::string(name) == "glGetTexLevelParameteriv")
+        return reinterpret_cast<ssao_gl_proc>(&two_sample_get_level_parameter);
+    return eglctx::Context::get_proc(user, name);
+}
+
+}  // namespace
+
+TEST_CASE("MSAA inputs of different sample counts are refused, naming both counts") {
+    testgl::Fixture fx;
+    auto& gl = fx.gl();
+    g_get_level_parameter = gl.GetTexLevelParameteriv;
+    g_get_integer = gl.GetIntegerv;
+    const auto proj = projection();
+    const GBuffer g = analytic::render(crease_scene(), proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, kW, kH);
+    const msaa::Textures single = fx.upload(g);
+    const msaa::Textures ms = msaa::make(gl, {single}, kW, kH, 4, GL_DEPTH_COMPONENT32F, GL_RGBA16F);
+    const msaa::Textures other = msaa::make(gl, {single}, kW, kH, 4, GL_DEPTH_COMPONENT32F, GL_RGBA16F);
+    g_two_samples = other.normal;
+    ssao_context_desc desc{};
+    desc.size = sizeof desc;
+    desc.get_proc_address = &two_sample_get_proc;
+    ssao_context* ctx = nullptr;
+    REQUIRE(fx.api().create_context(&desc, &ctx) == SSAO_OK);
+    ssao_inputs in = fx.inputs(ms.depth, ms.normal, proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE);
+    CHECK(fx.api().execute(ctx, &in, nullptr) == SSAO_OK);  // the same count: taken
+    in.normal_texture = other.normal;
+    CHECK(fx.api().execute(ctx, &in, nullptr) == SSAO_ERROR_INVALID_TEXTURE);
+    const std::string why = fx.api().last_error(ctx);
+    CHECK(why.find("inputs.normal_texture has 2 samples but the depth texture has 4") != std::string::npos);
+    fx.api().destroy_context(ctx);
+    CHECK(fx.gl_errors().empty());
+}
