@@ -118,6 +118,7 @@ void check_same_ao(const std::vector<float>& ref, const std::vector<float>& ao, 
     const Diff d = diff(ref, ao, {}, 1.0 / sample_count);
     MESSAGE(what << ": mean |diff| " << d.mean_abs << ", worst " << d.worst << ", " << d.over_1e3 << " px > 1e-3, "
                  << d.over_one_sample << " px > one sample, of " << d.compared);
+    CHECK(d.compared > 0);
     CHECK(d.mean_abs < 0.004);
     CHECK(d.over_one_sample <= d.compared / 100);
     CHECK(d.worst <= 2.0 / sample_count + 2e-3);

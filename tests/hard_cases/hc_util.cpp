@@ -286,6 +286,9 @@ analytic::Scene to_view(const analytic::Scene& world, const glm::dmat4& view) {
 
 Diff diff(const std::vector<float>& a, const std::vector<float>& b, const std::function<bool(size_t)>& mask,
           double one_sample) {
+    // Two images of one size: an empty or short one (a failed run) must not pass as "no difference".
+    CHECK(a.size() == b.size());
+    CHECK(!a.empty());
     Diff d;
     double sum = 0;
     for (size_t i = 0; i < a.size() && i < b.size(); ++i) {

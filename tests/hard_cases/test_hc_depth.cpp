@@ -79,7 +79,11 @@ TEST_CASE("depth conventions: the same scene gives the same AO in every clip ran
             REQUIRE(r.status == SSAO_OK);
             hc::check_unit_finite(r.ao, c.name);
             check_frame_info(fx, c);
-            if (ref.empty()) { ref = r.ao; continue; }
+            if (ref.empty()) {
+                ref = r.ao;
+                CHECK(*std::min_element(ref.begin(), ref.end()) < 0.8f);  // the crease darkens: not a blank AO
+                continue;
+            }
             hc::check_same_ao(ref, r.ao, s.sample_count,
                               "kernel " + std::to_string(shape) + ", " + cname + " vs GL D32F");
         }

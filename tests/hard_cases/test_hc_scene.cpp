@@ -85,6 +85,7 @@ TEST_CASE("scale: the scene modelled 1000 times larger with a 1000 times larger 
             hc::check_unit_finite(r.ao, c.name);
             ao[i] = r.ao;
         }
+        CHECK(*std::min_element(ao[0].begin(), ao[0].end()) < 0.8f);  // the crease darkens: not a blank AO on both
         const auto d = hc::diff(ao[0], ao[1], {}, 1.0 / 16);
         MESSAGE(cname << ": mean |diff| " << d.mean_abs << ", worst " << d.worst << ", " << d.over_1e3 << " of " << d.compared << " px > 1e-3");
         CHECK(d.mean_abs < 0.002);
@@ -425,7 +426,19 @@ TEST_CASE("sky: far-plane pixels output exactly 1 in every convention and do not
                 CHECK(darkened == 0);
             }
         // Geometry next to the sky is not occluded by it: the facing quad's
-        // pixels (z = -6) away from the box and the ledge read as open.
+        // pixels (z = -6) away from the box and the ledge (more than the
+        // radius 0.8 from both) read as open, its borders with the sky too.
+        int open_checked = 0, occluded = 0;
+        for (int y = 0; y < H; ++y)
+            for (int x = 0; x < W; ++x) {
+                if (g.sky(x, y)) continue;
+                const glm::dvec3 p = g.position[static_cast<size_t>(hc::at(x, y, W))];
+                if (std::abs(p.z + 6.0) > 1e-6 || p.x > -0.35 || p.y > -0.35) continue;
+                ++open_checked;
+                occluded += raw.ao[hc::at(x, y, W)] < 0.98f;
+            }
+        CHECK(open_checked > 20);
+        CHECK(occluded == 0);
     }
     CHECK(fx.gl_errors().empty());
 }
@@ -742,6 +755,7 @@ TEST_CASE_FIXTURE(hc::CreaseReverseZ, "normals: a huge but finite normal (x 1e20
     hc::RunOptions o;
     o.normal_format = GL_RGBA32F;
     const auto clean = hc::run(fx, g, proj, SSAO_CLIP_ZERO_TO_ONE, o);
+    REQUIRE(clean.status == SSAO_OK);
     for (float scale : {1e16f, 1e20f, 1e30f}) {
         CAPTURE(scale);
         std::vector<glm::vec3> normals = g.normal;

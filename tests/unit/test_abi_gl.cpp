@@ -3,12 +3,15 @@
 // function, every execute validation error, settings that must not apply,
 // which passes run, and the plugin-owned output across resizes.
 #include "abi_common.h"
+#include "analytic_scene.h"
 #include "child_process.h"
+#include "test_scenes.h"
 
 #include <glm/glm.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -187,18 +190,44 @@ TEST_CASE("abi: every context function rejects wrong struct sizes and writes not
 TEST_CASE("abi: a 1.1-sized ssao_inputs is accepted and its missing 1.2 fields read as today's behaviour") {
     // A host compiled against interface 1.1 hands 172 bytes: what follows in
     // its memory must not be read, and the AO equals the full struct's with
-    // the 1.2 fields zero.
+    // the 1.2 fields zero. The crease scene, so that a frame index read from
+    // past the struct would show in the noise.
     GlFixture f;
     const ssao_api& a = api();
-    Scene scene(f.gl(), kW, kH);
+    GladGLContext& gl = f.gl();
+    const auto proj = analytic::perspective(testscenes::kFov, 1.0, 0.1, 100.0);
+    const analytic::GBuffer g =
+        analytic::render(testscenes::crease_scene(), proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, kW, kH);
+    GLuint tex[2] = {};
+    gl.GenTextures(2, tex);
+    gl.BindTexture(GL_TEXTURE_2D, tex[0]);
+    gl.TexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT32F, kW, kH, 0, GL_DEPTH_COMPONENT, GL_FLOAT, g.depth.data());
+    gl.BindTexture(GL_TEXTURE_2D, tex[1]);
+    gl.TexImage2D(GL_TEXTURE_2D, 0, GL_RGB32F, kW, kH, 0, GL_RGB, GL_FLOAT, g.normal.data());
+    gl.BindTexture(GL_TEXTURE_2D, 0);
+    ssao_inputs inputs = make_inputs(tex[0], tex[1]);
+    const glm::mat4 projf(proj);
+    std::memcpy(inputs.projection, glm::value_ptr(projf), sizeof inputs.projection);
     ssao_output out = sized<ssao_output>();
-    REQUIRE(a.execute(f.ctx, &scene.inputs, &out) == SSAO_OK);
-    const std::vector<float> full = read_red(f.gl(), out.texture, kW, kH);
-    ssao_inputs old = scene.inputs;
+    REQUIRE(a.execute(f.ctx, &inputs, &out) == SSAO_OK);
+    const std::vector<float> full = read_red(gl, out.texture, kW, kH);
+    REQUIRE(*std::min_element(full.begin(), full.end()) < 0.9f);  // occlusion, so noise would show
+    ssao_inputs old = inputs;
     std::memset(reinterpret_cast<unsigned char*>(&old) + SSAO_INPUTS_SIZE_1_1, 0xab, sizeof old - SSAO_INPUTS_SIZE_1_1);
     old.size = SSAO_INPUTS_SIZE_1_1;
     REQUIRE(a.execute(f.ctx, &old, &out) == SSAO_OK);
-    CHECK(read_red(f.gl(), out.texture, kW, kH) == full);
+    CHECK(read_red(gl, out.texture, kW, kH) == full);
+    // Past the struct a valid output mode and a frame index: still ignored.
+    old.output_mode = SSAO_OUTPUT_MODE_OVERWRITE;
+    old.frame_index = 7;
+    REQUIRE(a.execute(f.ctx, &old, &out) == SSAO_OK);
+    CHECK(read_red(gl, out.texture, kW, kH) == full);
+    // The frame index read as a 1.2 struct does change the AO: the check above can fail.
+    old.size = sizeof old;
+    old.sample_index = 0;
+    REQUIRE(a.execute(f.ctx, &old, &out) == SSAO_OK);
+    CHECK(read_red(gl, out.texture, kW, kH) != full);
+    std::memset(reinterpret_cast<unsigned char*>(&old) + SSAO_INPUTS_SIZE_1_1, 0xab, sizeof old - SSAO_INPUTS_SIZE_1_1);
     // The same garbage read as a 1.2 struct is refused: the tail is not ignored there.
     old.size = sizeof old;
     CHECK(a.execute(f.ctx, &old, &out) == SSAO_ERROR_INVALID_ENUM);
