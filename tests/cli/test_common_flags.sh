@@ -93,8 +93,11 @@ check "ssao-reference --samples=8 and --samples 8 write identical reference_ao.e
   "$1" --width=24 --height=16 --samples=8 --quiet --out="$2/r1" >/dev/null &&
   "$1" --width 24 --height 16 --samples 8 --quiet --out "$2/r2" >/dev/null &&
   cmp -s "$2/r1/reference_ao.exr" "$2/r2/reference_ao.exr"' _ "$reference" "$work"
-check "ssao-error --band=2 and --band 2 print the same table" bash -c '
-  cmp -s <("$1" "$2/r1/reference_ao.exr" "$2/r1" --band=2 --label=x) <("$1" "$2/r1/reference_ao.exr" "$2/r1" --band 2 --label x)' \
+check "ssao-error --band=2 and --band 2 print the same table, and --label=x and --label x the same CSV row" bash -c '
+  "$1" "$2/r1/reference_ao.exr" "$2/r1" --band=2 --label=x --csv "$2/eq.csv" >"$2/eq.txt" &&
+  "$1" "$2/r1/reference_ao.exr" "$2/r1" --band 2 --label x --csv "$2/sp.csv" >"$2/sp.txt" &&
+  grep -q "^all" "$2/eq.txt" && cmp -s "$2/eq.txt" "$2/sp.txt" &&
+  grep -q "^x,all," "$2/eq.csv" && cmp -s "$2/eq.csv" "$2/sp.csv"' \
   _ "$error" "$work"
 
 finish "common flags"

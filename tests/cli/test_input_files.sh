@@ -77,10 +77,12 @@ for tool in "$host" "$reference" "$bench"; do
     "$tool" "$work/scene/big.gltf" --out "$out"
   check "$name a buffer that is a FIFO: one line, no hang" expect_error 1 "not a regular file but a FIFO" "$tool" "$work/scene/pipe.gltf" --out "$out"
 done
-check "ssao-host --allow-outside-files reads ../tri.bin" \
-  "$host" "$work/scene/outside.gltf" --allow-outside-files --width 16 --height 16 --frames 1 --only ao --out "$work/h" >/dev/null
-check "ssao-reference --allow-outside-files reads ../tri.bin" \
-  "$reference" "$work/scene/outside.gltf" --allow-outside-files --width 4 --height 4 --samples 1 --quiet --out "$work/r" >/dev/null
+check "ssao-host --allow-outside-files reads ../tri.bin (and writes its AO)" bash -c \
+  '"$1" "$2/scene/outside.gltf" --allow-outside-files --width 16 --height 16 --frames 1 --only ao --out "$2/h" >/dev/null &&
+   [ -s "$2/h/ao.exr" ]' _ "$host" "$work"
+check "ssao-reference --allow-outside-files reads ../tri.bin (and writes its truth)" bash -c \
+  '"$1" "$2/scene/outside.gltf" --allow-outside-files --width 4 --height 4 --samples 1 --quiet --out "$2/r" >/dev/null &&
+   [ -s "$2/r/reference_ao.exr" ]' _ "$reference" "$work"
 check "ssao-host --allow-outside-files with /etc/passwd: refused by its size, not read" \
   expect_error 1 "names a file whose size is not the 36 bytes" "$host" "$work/scene/passwd.gltf" --allow-outside-files --out "$out"
 for tool in "$host" "$reference" "$bench"; do

@@ -848,4 +848,11 @@ TEST_CASE("a genuine GL 3.3 core context works (--gl33)") {
     REQUIRE(r.exit_code == 0);
     CHECK(r.out.find("GL 3.3 core") != std::string::npos);
     CHECK(fs::exists(dir + "/lit_ao.png"));
+    // The AO is the 4.5 context's, bit for bit.
+    const std::string dir45 = fresh_dir("gl45");
+    REQUIRE(run_host({"--out", dir45, "--width", "64", "--height", "48", "--no-sheet", "--only", "ao"}).exit_code == 0);
+    const Image ao33 = load_exr(dir + "/ao.exr"), ao45 = load_exr(dir45 + "/ao.exr");
+    REQUIRE(!ao45.v.empty());
+    CHECK(*std::min_element(ao45.v.begin(), ao45.v.end()) < 0.8f);  // the cow's contact shadow: not a blank AO
+    CHECK(ao33.v == ao45.v);
 }
