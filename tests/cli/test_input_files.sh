@@ -104,6 +104,8 @@ mkdir -p "$work/readonly"; chmod 0555 "$work/readonly"
 if ! touch "$work/readonly/probe" 2>/dev/null; then
   check "ssao-host --out READ-ONLY: 'is not writable', exit 1" \
     expect_error 1 "the output directory '$work/readonly' is not writable" "$host" --out "$work/readonly"
+else
+  echo "skip    ssao-host --out READ-ONLY: this user writes through permission bits (root); /sys stands in above"
 fi
 chmod 0755 "$work/readonly"
 
