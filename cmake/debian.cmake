@@ -49,6 +49,47 @@ bundled scenes and the viewer's demo script in /usr/share/ssao.")
 set(CPACK_DEBIAN_PYTHON_DESCRIPTION "Drop-in screen-space ambient occlusion for OpenGL 3.3+ (Python)
 import ssao: the library from Python through ctypes.")
 
+# Debian wants /usr/share/doc/<package>/copyright in every package
+# (machine-readable format). Only the packages get it: these install rules are
+# left out of a plain cmake --install, which has share/doc/ssao/LICENSE.
+file(READ ${PROJECT_SOURCE_DIR}/LICENSE SSAO_LICENSE_TEXT)
+string(STRIP "${SSAO_LICENSE_TEXT}" SSAO_LICENSE_TEXT)
+string(REGEX REPLACE "\n\n" "\n.\n" SSAO_LICENSE_BODY "${SSAO_LICENSE_TEXT}")
+string(REGEX REPLACE "\n" "\n " SSAO_LICENSE_BODY "${SSAO_LICENSE_BODY}")
+set(SSAO_DEB_COPYRIGHT ${PROJECT_BINARY_DIR}/package/copyright)
+file(WRITE ${SSAO_DEB_COPYRIGHT}
+"Format: https://www.debian.org/doc/packaging-manuals/copyright-format/1.0/
+Upstream-Name: ssao
+
+Files: *
+Copyright: 2026 the ssao authors
+License: MIT
+
+Files: assets/models/spot-on-ground.glb
+Copyright: Keenan Crane (\"Spot\", Keenan's 3D Model Repository)
+License: CC0-1.0
+
+Files: assets/models/teapot-on-ground.glb
+Copyright: none (the Utah teapot, Martin Newell, 1975)
+License: public-domain
+
+License: MIT
+ ${SSAO_LICENSE_BODY}
+
+License: CC0-1.0
+ On Debian systems the full text is in /usr/share/common-licenses/CC0-1.0.
+
+License: public-domain
+ The Utah teapot's geometry is in the public domain.
+")
+foreach(pair runtime:libssao1 dev:libssao-dev tools:ssao-tools python:python3-ssao)
+  string(REPLACE ":" ";" pair ${pair})
+  list(GET pair 0 component)
+  list(GET pair 1 package)
+  install(FILES ${SSAO_DEB_COPYRIGHT} DESTINATION ${CMAKE_INSTALL_DATADIR}/doc/${package}
+          COMPONENT ${component} EXCLUDE_FROM_ALL)
+endforeach()
+
 set(CPACK_COMPONENTS_ALL runtime dev python)
 if(SSAO_BUILD_TOOLS)
   list(APPEND CPACK_COMPONENTS_ALL tools)

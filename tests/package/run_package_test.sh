@@ -27,6 +27,8 @@ for f in "lib/libssao.so.$ssao_version" include/ssao/ssao.h lib/cmake/ssao/ssaoC
          share/doc/ssao/README.md share/doc/ssao/LICENSE lib/python3/dist-packages/ssao/__init__.py; do
   [ -f "$p/$f" ] || fail "missing $f"
 done
+# The Debian packages' per-package copyright files are theirs alone.
+[ ! -e "$p/share/doc/libssao1" ] || fail "a plain install holds the Debian package's share/doc/libssao1"
 [ "$(readlink "$p/lib/libssao.so.1")" = "libssao.so.$ssao_version" ] || fail "lib/libssao.so.1 is not a link to libssao.so.$ssao_version"
 [ "$(readlink "$p/lib/libssao.so")" = libssao.so.1 ] || fail "lib/libssao.so is not a link to libssao.so.1"
 soname=$(objdump -p "$p/lib/libssao.so.$ssao_version" | awk '$1 == "SONAME" {print $2}')
