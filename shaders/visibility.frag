@@ -103,13 +103,16 @@ bool step_to_texel(StepSetup st, vec4 c, out ivec2 texel, out vec2 spf) {
 // position: the plane's depth under the step's own position spf (the eye
 // ray through s) is z / (1 + g.(spf - u0)) in perspective, z + g.(spf - u0)
 // orthographic. The ray is grazing where the cosine between it and the plane
-// (the texel's, scaled to the step's ray) is 1e-3 or less; alpha 0 marks a
-// texel whose normal is unusable. The snap in its place (StepSetup): the
+// (the texel's, scaled to the step's ray) is 1e-3 or less, and meets the plane
+// only behind the eye where that is negative (spf past the plane's vanishing
+// line: a step above a horizon that a ground texel's block straddles); alpha 0
+// marks a texel whose normal is unusable. The snap in its place (StepSetup): the
 // step's plane s.n = sn met by the texel's ray, perspective at view z
 // z sn / n.Q, orthographic (sn - n.xy Q.xy) / n.z. False for the sky.
 // prev_in_front: the same plane's view z under the previous point (viewport
 // position prev_spf, view z prev_z) minus prev_z, for the crossing test; a
-// huge value where the plane is grazing or unusable there (no crossing).
+// huge value where the plane is grazing, behind the eye or unusable there (no
+// crossing).
 bool step_surface(vec3 s, float sn, vec2 spf, ivec2 spx, Surface sf, StepSetup st, vec2 prev_spf, float prev_z,
                   out float in_front, out float prev_in_front) {
     vec4 plane = owned_texel(u_depth_tex, spx, st.inv_plane_size);
@@ -120,13 +123,13 @@ bool step_surface(vec3 s, float sn, vec2 spf, ivec2 spx, Surface sf, StepSetup s
     in_front = (sf.ortho ? z + g_du : z / r) - s.z;  // the tangent plane's view z under s
     float g_prev = dot(plane.yz, prev_spf - u0);
     float r_prev = sf.ortho ? 1.0 : 1.0 + g_prev;
-    prev_in_front = plane.w * abs(r_prev) > 1e-3 ? (sf.ortho ? z + g_prev : z / r_prev) - prev_z : 1e30;
+    prev_in_front = plane.w * r_prev > 1e-3 ? (sf.ortho ? z + g_prev : z / r_prev) - prev_z : 1e30;
     // Grazing or unusable: the snap. Rare, so a branch; it still costs 4-8%
     // of DEFAULT's time on llvmpipe (which runs it masked for every batch)
     // and 7% on an H200. Reading these texels as a point instead takes the
     // converged estimator further from the limit on spot, past the bound of
     // reference.limit_convergence (docs/benchmark.md, "What the snap buys").
-    if (!(plane.w * abs(r) > 1e-3)) {
+    if (!(plane.w * r > 1e-3)) {
         float l = dot(st.a, u0) + st.k;
         float qn = sf.ortho ? l : z * l + st.e;  // perspective: n.Q; orthographic: n.xy . Q.xy
         bool snap = sf.ortho ? st.ortho_snap : abs(qn) > st.grazing * abs(z);

@@ -118,6 +118,50 @@ TEST_CASE("depth conventions: orthographic in [-1,1], [0,1] and reversed give th
     CHECK(fx.gl_errors().empty());
 }
 
+TEST_CASE("depth conventions: open ground to the horizon under an infinite reverse-Z projection stays unoccluded") {
+    // With a radius beyond the camera's height, steps rise above eye level and
+    // land above the horizon; where a grid block or a pixel straddles it, they
+    // read a ground texel past its plane's vanishing line, whose eye ray meets
+    // the plane only behind the eye. Taken as a plane in front of the step,
+    // that would block open ground far below the horizon. The camera level,
+    // 1 above the ground; the image shifted so that the horizon runs through a
+    // grid block (1 pixel) or through a pixel (0.5).
+    const int W = 96, H = 72;
+    Scene scene;
+    scene.add_quad({-1e5, -1.0, 1e5}, {2e5, 0.0, 0.0}, {0.0, 0.0, -2e5});
+    testgl::Fixture fx;
+    for (double shift : {1.0, 0.5})
+    for (ssao_resolution resolution : {SSAO_RESOLUTION_DEFAULT, SSAO_RESOLUTION_FULL, SSAO_RESOLUTION_QUARTER}) {
+        CAPTURE(shift);
+        CAPTURE(resolution);
+        const auto proj = hc::pixel_shift(analytic::reverse_z_infinite(hc::kFov, double(W) / H, 0.1), 0.0, shift, W, H);
+        const GBuffer g = analytic::render(scene, proj, SSAO_CLIP_ZERO_TO_ONE, W, H);
+        ssao_settings s{};
+        s.radius = 1.5f;  // beyond the camera's height
+        s.resolution = resolution;
+        s.output_format = SSAO_OUTPUT_R16F;
+        fx.settings(s);
+        const auto r = hc::run(fx, g, proj, SSAO_CLIP_ZERO_TO_ONE);
+        REQUIRE(r.status == SSAO_OK);
+        int ground = 0, occluded = 0;
+        float darkest = 1.0f;
+        for (int y = 0; y < H; ++y)
+            for (int x = 0; x < W; ++x) {
+                if (g.sky(x, y)) continue;
+                // Rows right at the horizon meet the ground at grazing distances no step can resolve.
+                if (glm::length(g.position[static_cast<size_t>(hc::at(x, y, W))]) > 200.0) continue;
+                ++ground;
+                const float ao = r.ao[hc::at(x, y, W)];
+                occluded += ao < 0.99f;
+                darkest = std::min(darkest, ao);
+            }
+        MESSAGE("shift " << shift << ", resolution " << resolution << ": " << occluded << " of " << ground << " ground pixels below 0.99, darkest " << darkest);
+        CHECK(ground > W * H / 4);
+        CHECK(occluded == 0);
+    }
+    CHECK(fx.gl_errors().empty());
+}
+
 TEST_CASE("depth conventions: a projection scaled by any factor from 1e-19 to 1e19 gives the unscaled one's AO") {
     // k P maps every view point to the same NDC. Unless the library takes the
     // scale out, k = 1e19 or 1e-19 overflows the shaders' squares of clip w
