@@ -44,8 +44,11 @@ ssao_status resolve_amounts(ssao_settings& r, const PresetRow& defaults, std::st
                     "depth_step_bias must be finite and in [0, " + bound(SSAO_MAX_DEPTH_STEP_BIAS) + "]");
     if (r.depth_step_bias == 0.0f) r.depth_step_bias = kDefaultDepthStepBias;
 
-    if (!finite(r.power) || r.power < 0.0f || r.power > SSAO_MAX_POWER)
-        return fail(why, SSAO_ERROR_INVALID_VALUE, "power must be finite and in (0, " + bound(SSAO_MAX_POWER) + "]");
+    // A denormal power would reach a GPU's shader as 0, and pow(0, 0) is NaN there.
+    if (!finite(r.power) || r.power < 0.0f || r.power > SSAO_MAX_POWER ||
+        (r.power != 0.0f && r.power < std::numeric_limits<float>::min()))
+        return fail(why, SSAO_ERROR_INVALID_VALUE,
+                    "power must be finite and in [1.2e-38, " + bound(SSAO_MAX_POWER) + "] (a normal float)");
     if (r.power == 0.0f) r.power = kDefaultPower;
 
     if (!finite(r.strength) || (r.strength != SSAO_STRENGTH_OFF && (r.strength < 0.0f || r.strength > SSAO_MAX_STRENGTH)))

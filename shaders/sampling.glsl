@@ -250,7 +250,8 @@ bool load_surface(out Surface sf) {
 // (texel 0) when spf lies off the viewport.
 bool pixel_to_texel(GridMap g, vec2 spf, out ivec2 texel) {
     texel = ivec2(0);
-    if (any(lessThan(spf, vec2(0.0))) || any(greaterThanEqual(spf, g.size))) return false;
+    // Tested for being inside, so that a NaN position (an overflowed step) is outside.
+    if (!(all(greaterThanEqual(spf, vec2(0.0))) && all(lessThan(spf, g.size)))) return false;
     // spf / scale for a power-of-two scale is exact in float, so this is
     // ivec2(spf) / u_scale without an integer division per step.
     texel = ivec2(spf * g.inv_scale);

@@ -355,7 +355,7 @@ typedef struct ssao_settings {
     float depth_step_bias;       /**< multiple of the depth format's step at the pixel's depth
                                     (visibility: plus as many where that step is largest
                                     among the surfaces a step can meet), (0, 1e6]; default 2 */
-    float power;                 /**< exponent applied to the result, (0, 16]; default 1 */
+    float power;                 /**< exponent applied to the result, [FLT_MIN, 16]; default 1 */
     float strength;              /**< occlusion multiplier, [0, 8]; default 1.
                                     ao = pow(1 - strength * occlusion, power), clamped to [0,1].
                                     SSAO_STRENGTH_OFF: strength 0, output is 1 and no pass samples. */

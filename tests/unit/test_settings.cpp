@@ -326,6 +326,7 @@ TEST_CASE("settings: every invalid field gives its documented status and leaves 
         {"power 16.5", [](ssao_settings& s) { s.power = 16.5f; }, SSAO_ERROR_INVALID_VALUE},
         {"power NaN", [](ssao_settings& s) { s.power = kNaN; }, SSAO_ERROR_INVALID_VALUE},
         {"power inf", [](ssao_settings& s) { s.power = kInf; }, SSAO_ERROR_INVALID_VALUE},
+        {"power denormal", [](ssao_settings& s) { s.power = 1e-40f; }, SSAO_ERROR_INVALID_VALUE},
         {"strength -0.5", [](ssao_settings& s) { s.strength = -0.5f; }, SSAO_ERROR_INVALID_VALUE},
         {"strength -2", [](ssao_settings& s) { s.strength = -2.0f; }, SSAO_ERROR_INVALID_VALUE},
         {"strength 8.5", [](ssao_settings& s) { s.strength = 8.5f; }, SSAO_ERROR_INVALID_VALUE},
