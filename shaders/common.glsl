@@ -122,6 +122,16 @@ const float SKY_Z = SSAO_SKY_Z;
 
 bool finite3(vec3 v) { return all(lessThan(abs(v), vec3(3.0e38))) && !any(isnan(v)); }
 
+// A power of two that brings a vector whose largest component is m (> 0) up
+// to about unit length when m is below 2^-20, else exactly 1: a scene at tiny
+// view depths (1e-7, 1e-20) would underflow the squares that cross, dot and
+// normalize take. Exact, so every other scene's vectors are untouched.
+float tiny_scale(float m) {
+    int biased = (floatBitsToInt(m) >> 23) & 0xff;  // m's exponent + 127; 0 for 0 and denormals
+    return biased > 0 && biased < 107 ? intBitsToFloat((254 - biased) << 23) : 1.0;
+}
+vec3 away_from_tiny(vec3 v) { return v * tiny_scale(max(max(abs(v.x), abs(v.y)), abs(v.z))); }
+
 // The far plane (cleared depth) in either convention: exact comparison, since
 // a cleared buffer holds exactly the clear value.
 bool is_sky(float d) { return d == consts.sky_depth; }

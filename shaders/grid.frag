@@ -71,9 +71,10 @@ vec3 normal_from_depth(ivec2 p, float d0, vec3 P0, vec3 to_eye) {
     bool hy = side_tangent(p, d0, P0, ivec2(0, 1), ty);
     vec3 n = to_eye;
     if (hx && hy) {
-        n = cross(tx, ty);
+        float k = tiny_scale(max(max(max(abs(tx.x), abs(tx.y)), abs(tx.z)), max(max(abs(ty.x), abs(ty.y)), abs(ty.z))));
+        n = cross(tx * k, ty * k);
     } else if (hx || hy) {
-        vec3 t = hx ? tx : ty;
+        vec3 t = away_from_tiny(hx ? tx : ty);
         float tt = dot(t, t);
         if (tt > 0.0) n = to_eye - t * (dot(to_eye, t) / tt);
     }
@@ -127,7 +128,7 @@ void main() {
 #ifdef SSAO_NORMALS_FROM_DEPTH
         // Rebuilt from the full-resolution neighbours of the picked pixel,
         // already unit length and facing the camera.
-        n = normal_from_depth(p, d, P, consts.orthographic != 0 ? vec3(0.0, 0.0, 1.0) : normalize(-P));
+        n = normal_from_depth(p, d, P, consts.orthographic != 0 ? vec3(0.0, 0.0, 1.0) : normalize(away_from_tiny(-P)));
 #else
         // Unit length but not yet turned towards the camera (raw_normal,
         // sampling.glsl): the visibility pass must see which normals face

@@ -227,7 +227,7 @@ bool load_surface(out Surface sf) {
     ivec2 px = sf.vpx;
     sf.ortho = consts.orthographic != 0;
     if (!texel_surface(px, sf.P, sf.step) || !finite3(sf.P)) return false;
-    vec3 to_eye = sf.ortho ? vec3(0.0, 0.0, 1.0) : normalize(-sf.P);
+    vec3 to_eye = sf.ortho ? vec3(0.0, 0.0, 1.0) : normalize(away_from_tiny(-sf.P));
     sf.n = load_normal(px, to_eye);
     vec3 b1, b2;
     basis(sf.n, b1, b2);

@@ -8,6 +8,7 @@
 // cases with normal_texture = 0 for both estimators.
 #include <doctest/doctest.h>
 
+#include "conventions.h"
 #include "hc_util.h"
 #include "normals_view_util.h"
 
@@ -341,6 +342,34 @@ TEST_CASE("normals from depth, hard cases: sky stays exactly 1, odd sizes and a 
                 CHECK(sky_not_one == 0);
             }
         }
+    }
+    CHECK(fx.gl_errors().empty());
+}
+
+TEST_CASE("normals from depth: a scene at tiny view depths (1e-7 and 1e-20 times the unit scene) gives the unit scene's AO") {
+    // Pixel-sized tangents there would underflow their cross product (a
+    // camera-facing normal instead: open floor read 0.973), and at 1e-20 the
+    // direction to the eye itself (every pixel 1).
+    HC_EACH_METHOD(method);
+    testgl::Fixture fx;
+    std::vector<float> unit;
+    for (double k : {1.0, 1e-7, 1e-20}) {
+        CAPTURE(k);
+        const auto proj = analytic::perspective(hc::kFov, double(kW) / kH, 0.1 * k, 100.0 * k);
+        const GBuffer g = analytic::render(hc::crease_scene(k), proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, kW, kH);
+        const ssao_settings s =
+            fx.settings(hc::make(16, SSAO_BLUR_NONE, SSAO_ROTATION_HASH, static_cast<float>(1.0 * k), method));
+        hc::RunOptions o;
+        o.depth_only = true;
+        const auto r = hc::run(fx, g, proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, o);
+        REQUIRE(r.status == SSAO_OK);
+        hc::check_unit_finite(r.ao, "tiny");
+        if (unit.empty()) {
+            unit = r.ao;
+            CHECK(*std::min_element(unit.begin(), unit.end()) < 0.8f);  // the crease darkens
+            continue;
+        }
+        hc::check_same_ao(unit, r.ao, s.sample_count, "depth-only normals at a tiny scale");
     }
     CHECK(fx.gl_errors().empty());
 }
