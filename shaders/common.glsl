@@ -130,7 +130,8 @@ float tiny_scale(float m) {
     int biased = (floatBitsToInt(m) >> 23) & 0xff;  // m's exponent + 127; 0 for 0 and denormals
     return biased > 0 && biased < 107 ? intBitsToFloat((254 - biased) << 23) : 1.0;
 }
-vec3 away_from_tiny(vec3 v) { return v * tiny_scale(max(max(abs(v.x), abs(v.y)), abs(v.z))); }
+float largest_abs(vec3 v) { return max(max(abs(v.x), abs(v.y)), abs(v.z)); }
+vec3 away_from_tiny(vec3 v) { return v * tiny_scale(largest_abs(v)); }
 
 // The far plane (cleared depth) in either convention: exact comparison, since
 // a cleared buffer holds exactly the clear value.

@@ -71,7 +71,7 @@ vec3 normal_from_depth(ivec2 p, float d0, vec3 P0, vec3 to_eye) {
     bool hy = side_tangent(p, d0, P0, ivec2(0, 1), ty);
     vec3 n = to_eye;
     if (hx && hy) {
-        float k = tiny_scale(max(max(max(abs(tx.x), abs(tx.y)), abs(tx.z)), max(max(abs(ty.x), abs(ty.y)), abs(ty.z))));
+        float k = tiny_scale(max(largest_abs(tx), largest_abs(ty)));
         n = cross(tx * k, ty * k);
     } else if (hx || hy) {
         vec3 t = away_from_tiny(hx ? tx : ty);
