@@ -22,7 +22,7 @@ bool decode_raw_normal(vec3 stored, out vec3 n) {
     if (consts.normal_space == SSAO_SHADER_NORMAL_WORLD) n = mat3(consts.normal_to_view) * n;
     // Scale by the largest component first: a huge but finite normal (1e20)
     // would overflow dot(n, n) and a tiny one underflow it.
-    float m = max(abs(n.x), max(abs(n.y), abs(n.z)));
+    float m = largest_abs(n);
     // max() need not propagate NaN (llvmpipe's does not), the sum does: a NaN
     // in any component fails the comparison.
     float sum = abs(n.x) + abs(n.y) + abs(n.z);
