@@ -885,7 +885,7 @@ TEST_CASE("settings extremes: 1 or 64 samples, strength off..8, power 0.01..16, 
             const std::vector<float>& plain = raw.at({1.0f, 1.0f});
             REQUIRE(*std::min_element(plain.begin(), plain.end()) < 0.8f);  // there is occlusion to scale
             for (const auto& [key, ao] : raw) {
-                const auto [power, strength] = key;
+                const float power = key.first, strength = key.second;
                 if (strength == SSAO_STRENGTH_OFF) continue;
                 CAPTURE(power);
                 CAPTURE(strength);
