@@ -57,8 +57,8 @@ ssao_settings build_settings(const ssao_api& api, const cli::Options& o, const s
         s.bias = std::max(static_cast<float>(*h.bias), FLT_MIN);
     }
     if (h.power) {
-        if (!(*h.power > 0.0 && *h.power <= SSAO_MAX_POWER))
-            throw Error("the scene's hint ssao.power = " + fmt(*h.power) + " is out of range (0, " +
+        if (!(*h.power >= FLT_MIN && *h.power <= SSAO_MAX_POWER))  // below: 0 (the default) or a denormal
+            throw Error("the scene's hint ssao.power = " + fmt(*h.power) + " is out of range [" + fmt(FLT_MIN) + ", " +
                         fmt(SSAO_MAX_POWER) + "]");
         s.power = static_cast<float>(*h.power);
     }

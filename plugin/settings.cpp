@@ -48,7 +48,8 @@ ssao_status resolve_amounts(ssao_settings& r, const PresetRow& defaults, std::st
     if (!finite(r.power) || r.power < 0.0f || r.power > SSAO_MAX_POWER ||
         (r.power != 0.0f && r.power < std::numeric_limits<float>::min()))
         return fail(why, SSAO_ERROR_INVALID_VALUE,
-                    "power must be finite and in [1.2e-38, " + bound(SSAO_MAX_POWER) + "] (a normal float)");
+                    "power must be finite and in [" + bound(std::numeric_limits<float>::min()) + ", " +
+                        bound(SSAO_MAX_POWER) + "] (a normal float)");
     if (r.power == 0.0f) r.power = kDefaultPower;
 
     if (!finite(r.strength) || (r.strength != SSAO_STRENGTH_OFF && (r.strength < 0.0f || r.strength > SSAO_MAX_STRENGTH)))

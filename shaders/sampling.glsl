@@ -176,8 +176,9 @@ vec3 snap_to_texel_ray(vec3 s, vec3 n, vec3 Q, bool ortho) {
         if (abs(n.z) > 1e-3) return vec3(Q.xy, (plane - n.x * Q.x - n.y * Q.y) / n.z);
         return s;
     }
-    float qn = dot(Q, n);
-    return abs(qn) > 1e-3 * length(Q) ? Q * (plane / qn) : s;
+    vec3 Qs = away_from_tiny(Q);  // at tiny view depths length(Q) would underflow and pass every ray
+    float qn = dot(Qs, n);
+    return abs(qn) > 1e-3 * length(Qs) ? Qs * (plane / qn) : s;
 }
 
 // What both sampling passes know about the pixel they shade.

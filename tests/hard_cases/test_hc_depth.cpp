@@ -124,13 +124,15 @@ TEST_CASE("depth conventions: open ground to the horizon under an infinite rever
     // read a ground texel past its plane's vanishing line, whose eye ray meets
     // the plane only behind the eye. Taken as a plane in front of the step,
     // that would block open ground far below the horizon. The camera level,
-    // 1 above the ground; the image shifted so that the horizon runs through a
-    // grid block (1 pixel) or through a pixel (0.5).
+    // 1 above the ground; the image shifted so that the horizon crosses a
+    // pixel (0.75) and a half-resolution block (both shifts) and a
+    // quarter-resolution block (3) whose picked pixel is on the ground's side:
+    // each resolution fails one of them without the guard.
     const int W = 96, H = 72;
     Scene scene;
     scene.add_quad({-1e5, -1.0, 1e5}, {2e5, 0.0, 0.0}, {0.0, 0.0, -2e5});
     testgl::Fixture fx;
-    for (double shift : {1.0, 0.5})
+    for (double shift : {0.75, 3.0})
     for (ssao_resolution resolution : {SSAO_RESOLUTION_DEFAULT, SSAO_RESOLUTION_FULL, SSAO_RESOLUTION_QUARTER}) {
         CAPTURE(shift);
         CAPTURE(resolution);
