@@ -122,16 +122,18 @@ const float SKY_Z = SSAO_SKY_Z;
 
 bool finite3(vec3 v) { return all(lessThan(abs(v), vec3(3.0e38))) && !any(isnan(v)); }
 
-// A power of two that brings a vector whose largest component is m (> 0) up
-// to about unit length when m is below 2^-20, else exactly 1: a scene at tiny
-// view depths (1e-7, 1e-20) would underflow the squares that cross, dot and
-// normalize take. Exact, so every other scene's vectors are untouched.
-float tiny_scale(float m) {
-    int biased = (floatBitsToInt(m) >> 23) & 0xff;  // m's exponent + 127; 0 for 0 and denormals
-    return biased > 0 && biased < 107 ? intBitsToFloat((254 - biased) << 23) : 1.0;
+// A power of two that brings a vector whose largest component is m (> 0)
+// to about unit length when m is below 2^-20 or above 2^20, else exactly 1:
+// a scene at tiny (1e-11) or huge (1e20) view depths would underflow or
+// overflow the squares that cross, dot, length and normalize take. Exact, so
+// every other scene's vectors are untouched.
+float unit_scale(float m) {
+    int biased = (floatBitsToInt(m) >> 23) & 0xff;  // m's exponent + 127; 0 for 0 and denormals, 255 for inf
+    if (biased == 0 || biased == 255 || (biased >= 107 && biased <= 147)) return 1.0;
+    return intBitsToFloat((254 - min(biased, 253)) << 23);  // 2^(127 - biased), kept a normal float
 }
 float largest_abs(vec3 v) { return max(max(abs(v.x), abs(v.y)), abs(v.z)); }
-vec3 away_from_tiny(vec3 v) { return v * tiny_scale(largest_abs(v)); }
+vec3 near_unit(vec3 v) { return v * unit_scale(largest_abs(v)); }
 
 // The far plane (cleared depth) in either convention: exact comparison, since
 // a cleared buffer holds exactly the clear value.
@@ -190,13 +192,18 @@ DepthSteps depth_steps() {
 
 float depth_step_z(DepthSteps k, float z) {
     float w = k.clip.x * z + k.clip.y;
+    // Past 1e18 (view depths of 1e18 and more) w w would overflow: the small
+    // factor goes first there.
+    float aw = abs(w);
+    bool huge = aw > 1e18;
 #ifdef SSAO_UNORM_DEPTH
-    return w * w * k.unorm_k;
+    return huge ? aw * (aw * k.unorm_k) : w * w * k.unorm_k;
 #else
     float cz = k.clip.z * z + k.clip.w;
     // |d| w and, for the [-1,1] range, |ndc| w / 2: the larger ulp wins.
     float dw = k.half_range ? max(abs(cz + w), abs(cz)) * 0.5 : abs(cz);
-    return max(dw * abs(w) * k.float_k, w * w * k.normal_k);
+    return huge ? max(dw * (aw * k.float_k), aw * (aw * k.normal_k))
+                : max(dw * abs(w) * k.float_k, w * w * k.normal_k);
 #endif
 }
 float depth_step_z(float z) { return depth_step_z(depth_steps(), z); }

@@ -71,10 +71,10 @@ vec3 normal_from_depth(ivec2 p, float d0, vec3 P0, vec3 to_eye) {
     bool hy = side_tangent(p, d0, P0, ivec2(0, 1), ty);
     vec3 n = to_eye;
     if (hx && hy) {
-        float k = tiny_scale(max(largest_abs(tx), largest_abs(ty)));
+        float k = unit_scale(max(largest_abs(tx), largest_abs(ty)));
         n = cross(tx * k, ty * k);
     } else if (hx || hy) {
-        vec3 t = away_from_tiny(hx ? tx : ty);
+        vec3 t = near_unit(hx ? tx : ty);
         float tt = dot(t, t);
         if (tt > 0.0) n = to_eye - t * (dot(to_eye, t) / tt);
     }
@@ -128,7 +128,7 @@ void main() {
 #ifdef SSAO_NORMALS_FROM_DEPTH
         // Rebuilt from the full-resolution neighbours of the picked pixel,
         // already unit length and facing the camera.
-        n = normal_from_depth(p, d, P, consts.orthographic != 0 ? vec3(0.0, 0.0, 1.0) : normalize(away_from_tiny(-P)));
+        n = normal_from_depth(p, d, P, consts.orthographic != 0 ? vec3(0.0, 0.0, 1.0) : normalize(near_unit(-P)));
 #else
         // Unit length but not yet turned towards the camera (raw_normal,
         // sampling.glsl): the visibility pass must see which normals face

@@ -10,6 +10,6 @@ void main() {
     float step;
     vec3 n = vec3(0.0);
     if (texel_surface(t, P, step) && finite3(P))
-        n = load_normal(t, consts.orthographic != 0 ? vec3(0.0, 0.0, 1.0) : normalize(away_from_tiny(-P)));
+        n = load_normal(t, consts.orthographic != 0 ? vec3(0.0, 0.0, 1.0) : normalize(near_unit(-P)));
     o_ao = vec4(n * 0.5 + 0.5, 1.0);
 }

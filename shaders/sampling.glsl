@@ -176,7 +176,7 @@ vec3 snap_to_texel_ray(vec3 s, vec3 n, vec3 Q, bool ortho) {
         if (abs(n.z) > 1e-3) return vec3(Q.xy, (plane - n.x * Q.x - n.y * Q.y) / n.z);
         return s;
     }
-    vec3 Qs = away_from_tiny(Q);  // at tiny view depths length(Q) would underflow and pass every ray
+    vec3 Qs = near_unit(Q);  // at tiny or huge view depths length(Q) would underflow or overflow
     float qn = dot(Qs, n);
     return abs(qn) > 1e-3 * length(Qs) ? Qs * (plane / qn) : s;
 }
@@ -228,7 +228,7 @@ bool load_surface(out Surface sf) {
     ivec2 px = sf.vpx;
     sf.ortho = consts.orthographic != 0;
     if (!texel_surface(px, sf.P, sf.step) || !finite3(sf.P)) return false;
-    vec3 to_eye = sf.ortho ? vec3(0.0, 0.0, 1.0) : normalize(away_from_tiny(-sf.P));
+    vec3 to_eye = sf.ortho ? vec3(0.0, 0.0, 1.0) : normalize(near_unit(-sf.P));
     sf.n = load_normal(px, to_eye);
     vec3 b1, b2;
     basis(sf.n, b1, b2);

@@ -66,6 +66,9 @@ TEST_CASE("scale: the scene modelled 1000 times larger with a 1000 times larger 
     const Case cases[] = {
         {"GL D24, near and far scaled too", 1000.0, true, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, GL_DEPTH_COMPONENT24, false},
         {"reverse-Z D32F, same near", 1000.0, false, SSAO_CLIP_ZERO_TO_ONE, GL_DEPTH_COMPONENT32F, true},
+        // View depths past 1e19, where clip w squared overflows a float.
+        {"GL D32F, 1e20 times larger", 1e20, true, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, GL_DEPTH_COMPONENT32F, false},
+        {"reverse-Z D32F, 1e20 times larger", 1e20, true, SSAO_CLIP_ZERO_TO_ONE, GL_DEPTH_COMPONENT32F, true},
     };
     for (const Case& c : cases) {
         const std::string cname = c.name;
