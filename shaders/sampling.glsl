@@ -202,7 +202,9 @@ struct Surface {
 // orthographic (constant size) and off-centre frusta come out right.
 float pixel_size_at(float z) {
     mat2 d = mat2(consts.view_mul_z.xy, consts.view_mul_z.zw) * z + mat2(consts.view_mul_1.xy, consts.view_mul_1.zw);
-    return sqrt(length(d[0]) * length(d[1]));
+    // Scaled near unit length first (exactly): at tiny or huge view depths the lengths' squares would not fit.
+    float k = unit_scale(max(largest_abs(vec3(d[0], 0.0)), largest_abs(vec3(d[1], 0.0))));
+    return sqrt(length(d[0] * k) * length(d[1] * k)) / k;
 }
 #endif
 

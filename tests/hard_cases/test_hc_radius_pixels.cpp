@@ -244,3 +244,30 @@ TEST_CASE("radius in pixels: hard cases with it on - every depth convention alik
     CHECK(hc::mean(tiny.ao) > 0.999);
     CHECK(fx.gl_errors().empty());
 }
+
+TEST_CASE("radius in pixels: a scene 1e-20 and 1e20 times the unit scene gives the unit scene's AO") {
+    // A pixel's size at such view depths is a length whose square under- or
+    // overflows a float: the radius in pixels would turn into 0 or inf.
+    HC_EACH_METHOD(method);
+    testgl::Fixture fx;
+    const int W = 64, H = 48;
+    std::vector<float> unit;
+    for (double k : {1.0, 1e-20, 1e20}) {
+        CAPTURE(k);
+        const auto proj = analytic::perspective(hc::kFov, double(W) / H, 0.1 * k, 100.0 * k);
+        const GBuffer g = analytic::render(hc::crease_scene(k), proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, W, H);
+        ssao_settings s = hc::make(16, SSAO_BLUR_NONE, SSAO_ROTATION_HASH, static_cast<float>(2.0 * k), method);
+        s.radius_pixels = 10.0f;  // the pixel radius, below `radius` here, decides
+        const ssao_settings resolved = fx.settings(s);
+        const auto r = hc::run(fx, g, proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE);
+        REQUIRE(r.status == SSAO_OK);
+        hc::check_unit_finite(r.ao, "radius in pixels at a scale");
+        if (unit.empty()) {
+            unit = r.ao;
+            CHECK(hc::mean(unit) < 0.98);
+            continue;
+        }
+        hc::check_same_ao(unit, r.ao, resolved.sample_count, "radius in pixels at a scale");
+    }
+    CHECK(fx.gl_errors().empty());
+}
