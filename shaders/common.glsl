@@ -123,7 +123,7 @@ const float SKY_Z = SSAO_SKY_Z;
 bool finite3(vec3 v) { return all(lessThan(abs(v), vec3(3.0e38))) && !any(isnan(v)); }
 
 // A power of two that brings a vector whose largest component is m (> 0)
-// to about unit length when m is below 2^-20 or above 2^20, else exactly 1:
+// to about unit length when m is below 2^-20 or at least 2^21, else exactly 1:
 // a scene at tiny (1e-11) or huge (1e20) view depths would underflow or
 // overflow the squares that cross, dot, length and normalize take. Exact, so
 // every other scene's vectors are untouched.

@@ -245,14 +245,14 @@ TEST_CASE("radius in pixels: hard cases with it on - every depth convention alik
     CHECK(fx.gl_errors().empty());
 }
 
-TEST_CASE("radius in pixels: a scene 1e-20 and 1e20 times the unit scene gives the unit scene's AO") {
+TEST_CASE("radius in pixels: a scene 1e-20 and 1e21 times the unit scene gives the unit scene's AO") {
     // A pixel's size at such view depths is a length whose square under- or
     // overflows a float: the radius in pixels would turn into 0 or inf.
     HC_EACH_METHOD(method);
     testgl::Fixture fx;
     const int W = 64, H = 48;
     std::vector<float> unit;
-    for (double k : {1.0, 1e-20, 1e20}) {
+    for (double k : {1.0, 1e-20, 1e21}) {
         CAPTURE(k);
         const auto proj = analytic::perspective(hc::kFov, double(W) / H, 0.1 * k, 100.0 * k);
         const GBuffer g = analytic::render(hc::crease_scene(k), proj, SSAO_CLIP_NEGATIVE_ONE_TO_ONE, W, H);
