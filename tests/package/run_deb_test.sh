@@ -71,8 +71,10 @@ lacks ssao-tools "lib/libssao"
 holds python3-ssao "lib/python3/dist-packages/ssao/__init__.py"
 for name in libssao1 libssao-dev ssao-tools python3-ssao; do
   holds $name "share/doc/$name/copyright"
-  dpkg-deb --fsys-tarfile "${deb[$name]}" | tar -xO "./usr/share/doc/$name/copyright" |
-    grep -q "^Format: https://www.debian.org/doc/packaging-manuals/copyright-format/1.0/" ||
+  # Extracted whole: a pipe into tar or grep that stops reading early ends its writer with SIGPIPE (pipefail).
+  dpkg-deb -x "${deb[$name]}" "$work/copyright-$name"
+  grep -q "^Format: https://www.debian.org/doc/packaging-manuals/copyright-format/1.0/" \
+    "$work/copyright-$name/usr/share/doc/$name/copyright" ||
     fail "$name's copyright is not in Debian's machine-readable format"
 done
 lacks python3-ssao "_build_paths"
