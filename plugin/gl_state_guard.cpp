@@ -114,21 +114,16 @@ void GlStateGuard::save_blend_function() {
     if (blend_function_saved_) return;
     blend_function_saved_ = true;
     const GladGLContext& gl = gl_;
-    if (caps_.indexed_blend) {
-        gl.GetIntegeri_v(GL_BLEND_SRC_RGB, 0, &blend_src_rgb_);
-        gl.GetIntegeri_v(GL_BLEND_DST_RGB, 0, &blend_dst_rgb_);
-        gl.GetIntegeri_v(GL_BLEND_SRC_ALPHA, 0, &blend_src_alpha_);
-        gl.GetIntegeri_v(GL_BLEND_DST_ALPHA, 0, &blend_dst_alpha_);
-        gl.GetIntegeri_v(GL_BLEND_EQUATION_RGB, 0, &blend_equation_rgb_);
-        gl.GetIntegeri_v(GL_BLEND_EQUATION_ALPHA, 0, &blend_equation_alpha_);
-    } else {
-        gl.GetIntegerv(GL_BLEND_SRC_RGB, &blend_src_rgb_);
-        gl.GetIntegerv(GL_BLEND_DST_RGB, &blend_dst_rgb_);
-        gl.GetIntegerv(GL_BLEND_SRC_ALPHA, &blend_src_alpha_);
-        gl.GetIntegerv(GL_BLEND_DST_ALPHA, &blend_dst_alpha_);
-        gl.GetIntegerv(GL_BLEND_EQUATION_RGB, &blend_equation_rgb_);
-        gl.GetIntegerv(GL_BLEND_EQUATION_ALPHA, &blend_equation_alpha_);
-    }
+    // Draw buffer 0's where blend state is per buffer, else the one global state.
+    const auto get = [&](GLenum pname, GLint* value) {
+        if (caps_.indexed_blend) gl.GetIntegeri_v(pname, 0, value); else gl.GetIntegerv(pname, value);
+    };
+    get(GL_BLEND_SRC_RGB, &blend_src_rgb_);
+    get(GL_BLEND_DST_RGB, &blend_dst_rgb_);
+    get(GL_BLEND_SRC_ALPHA, &blend_src_alpha_);
+    get(GL_BLEND_DST_ALPHA, &blend_dst_alpha_);
+    get(GL_BLEND_EQUATION_RGB, &blend_equation_rgb_);
+    get(GL_BLEND_EQUATION_ALPHA, &blend_equation_alpha_);
 }
 
 void GlStateGuard::save_depth_stencil_mode(GLuint texture, GLuint unit, GLenum target) {
@@ -207,12 +202,14 @@ GlStateGuard::~GlStateGuard() {
         gl.ColorMaski(b, color_mask_[i][0], color_mask_[i][1], color_mask_[i][2], color_mask_[i][3]);
     }
     const auto e = [](GLint v) { return static_cast<GLenum>(v); };
-    if (blend_function_saved_ && caps_.indexed_blend) {
-        gl.BlendFuncSeparatei(0, e(blend_src_rgb_), e(blend_dst_rgb_), e(blend_src_alpha_), e(blend_dst_alpha_));
-        gl.BlendEquationSeparatei(0, e(blend_equation_rgb_), e(blend_equation_alpha_));
-    } else if (blend_function_saved_) {
-        gl.BlendFuncSeparate(e(blend_src_rgb_), e(blend_dst_rgb_), e(blend_src_alpha_), e(blend_dst_alpha_));
-        gl.BlendEquationSeparate(e(blend_equation_rgb_), e(blend_equation_alpha_));
+    if (blend_function_saved_) {
+        if (caps_.indexed_blend) {
+            gl.BlendFuncSeparatei(0, e(blend_src_rgb_), e(blend_dst_rgb_), e(blend_src_alpha_), e(blend_dst_alpha_));
+            gl.BlendEquationSeparatei(0, e(blend_equation_rgb_), e(blend_equation_alpha_));
+        } else {
+            gl.BlendFuncSeparate(e(blend_src_rgb_), e(blend_dst_rgb_), e(blend_src_alpha_), e(blend_dst_alpha_));
+            gl.BlendEquationSeparate(e(blend_equation_rgb_), e(blend_equation_alpha_));
+        }
     }
     for (int i = 0; i < std::min(caps_.max_clip_distances, 8); ++i)
         set_enabled(gl, GL_CLIP_DISTANCE0 + static_cast<GLenum>(i), clip_distance_[i]);
